@@ -8,12 +8,22 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <mutex>
 #include <stdexcept>
 #include <vector>
 
 namespace granrepro {
 
+namespace {
 using Model = CollisionRateFit::Model;
+
+// gsl_set_error_handler is process-global; fits from several threads must not interleave their
+// save/restore of it.
+std::mutex& gsl_handler_mutex() {
+    static std::mutex m;
+    return m;
+}
+} // namespace
 
 double CollisionRateFit::density(Model m, double p, double x, double dt) {
     switch (m) {
@@ -142,7 +152,7 @@ CollisionRateFit CollisionRateFit::fit(const RateHistogram& h, Model model, doub
     fdf.p = 1;
     fdf.params = &pr;
     double lp = best;
-    if (pr.bins.size() >= 1) {
+    {
         gsl_multifit_nlinear_parameters params = gsl_multifit_nlinear_default_parameters();
         gsl_multifit_nlinear_workspace* w =
             gsl_multifit_nlinear_alloc(gsl_multifit_nlinear_trust, &params, pr.bins.size(), 1);
@@ -150,10 +160,14 @@ CollisionRateFit CollisionRateFit::fit(const RateHistogram& h, Model model, doub
         gsl_vector_set(x0, 0, best);
         gsl_multifit_nlinear_init(x0, &fdf, w);
         int info = 0;
-        // GSL's error handler aborts by default; a failed fit should be reported, not abort.
-        gsl_error_handler_t* old = gsl_set_error_handler_off();
-        const int status = gsl_multifit_nlinear_driver(200, 1e-10, 1e-10, 0.0, nullptr, nullptr, &info, w);
-        gsl_set_error_handler(old);
+        int status = GSL_SUCCESS;
+        {
+            // GSL's default error handler aborts; a failed fit should be reported, not abort.
+            std::lock_guard<std::mutex> lock(gsl_handler_mutex());
+            gsl_error_handler_t* old = gsl_set_error_handler_off();
+            status = gsl_multifit_nlinear_driver(200, 1e-10, 1e-10, 0.0, nullptr, nullptr, &info, w);
+            gsl_set_error_handler(old);
+        }
         lp = gsl_vector_get(gsl_multifit_nlinear_position(w), 0);
         out.converged = status == GSL_SUCCESS && std::isfinite(lp);
         gsl_vector_free(x0);

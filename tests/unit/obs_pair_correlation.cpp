@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
 #include <vector>
 
 using namespace granrepro;
@@ -75,7 +76,10 @@ TEST_P(PairCorrelationBoth, TriangularLatticePeaksAtOneSqrt3Two) {
     EXPECT_GT(pc.g()[bin_of(1.0)], 1.0);
 }
 
-INSTANTIATE_TEST_SUITE_P(Obs, PairCorrelationBoth, ::testing::Values(Method::CellList, Method::BruteForce));
+INSTANTIATE_TEST_SUITE_P(Obs, PairCorrelationBoth, ::testing::Values(Method::CellList, Method::BruteForce),
+                         [](const auto& info) {
+                             return std::string(info.param == Method::CellList ? "CellList" : "BruteForce");
+                         });
 
 TEST(ObsPairCorrelation, CellListEqualsBruteForceExactly) {
     RngStream rng(99, 1);
