@@ -1,0 +1,155 @@
+// emergency-brake: Schäfer & Wolf (1995) Figs. 4 and 5. A free grain is shot onto a row of
+// touching wall grains with v_x^i towards the wall and v_y^i along it; each point is the mean
+// over start positions spaced equally over one wall wavelength. Far in the brake-failure regime
+// the grain ploughs through several wall grains and Δv_y rises again (the "emergency brake").
+#include <cmath>
+#include <string>
+
+#include "analysis/curve_analysis.hpp"
+#include "experiments/impact_shot.hpp"
+#include "harness/experiment.hpp"
+#include "harness/parallel_sweep.hpp"
+#include "models/linear_spring_dashpot.hpp"
+
+namespace granrepro::experiments {
+
+namespace {
+
+void validate(const ParameterSet& p) {
+    const double m = p.real("m_free"), k = p.real("k_N"), g = p.real("gamma_N");
+    if (g * g / 4 >= k / m)
+        p.reject("gamma_N", "over-damped free-wall contact; must be below 2 sqrt(k_N/m_free) = " +
+                                std::to_string(2 * std::sqrt(k / m)) + " 1/s so that e_N is in (0, 1]");
+    const double reach = 0.5 * (p.real("d_free") + p.real("d_wall"));
+    if (p.real("x_start") < reach)
+        p.reject("x_start", "the free grain would start overlapping the wall grains; must be at least (d_free + d_wall)/2 = " +
+                                std::to_string(reach) + " m");
+    if (p.real("vy_min") >= p.real("vy_max")) p.reject("vy_min", "must be below vy_max");
+}
+
+struct Point {
+    double dvy = 0, dvy_sem = 0, contacts = 0, multi_fraction = 0;
+    int incomplete = 0;
+};
+
+std::string label(const char* prefix, double x) {
+    char buf[48];
+    std::snprintf(buf, sizeof buf, "%s%g", prefix, x);
+    return buf;
+}
+
+Result run(const RunContext& ctx) {
+    const ParameterSet& p = ctx.params;
+    const double m = p.real("m_free");
+    const LinearSpringDashpot law{p.real("k_N"), p.real("gamma_N")};
+    const double e_N = law.restitution(m);
+    const auto vy = log_space(p.real("vy_min"), p.real("vy_max"), int(p.integer("n_vy")));
+    const auto& vxs = p.reals("vx_list");
+    const auto& kscan = p.reals("kN_scan");
+    const long npos = p.integer("n_positions");
+    const std::size_t n = vy.size();
+
+    // Series: one per v_x^i at the experiment's k_N, then one per extra k_N at vx_list[0].
+    struct Series { double vx; LinearSpringDashpot law; };
+    std::vector<Series> series;
+    for (double vx : vxs) series.push_back({vx, law});
+    for (double k : kscan) series.push_back({vxs.front(), LinearSpringDashpot::from_restitution(k, e_N, m)});
+
+    std::vector<std::vector<Point>> pts(series.size(), std::vector<Point>(n));
+    Progress progress("emergency-brake", long(series.size() * n), ctx.quiet);
+    parallel_sweep(long(series.size() * n), ctx.threads, &progress, [&](long task) {
+        const Series& s = series[std::size_t(task) / n];
+        const std::size_t i = std::size_t(task) % n;
+        ImpactSetup setup;
+        setup.d_free = p.real("d_free");
+        setup.m_free = m;
+        setup.d_wall = p.real("d_wall");
+        setup.wall_spacing = p.real("wall_spacing");
+        setup.x0 = p.real("x_start");
+        setup.vx_toward = s.vx;
+        setup.vy = vy[i];
+        setup.dt = s.law.collision_time(m) / p.real("steps_per_contact");
+        double sum = 0, sum2 = 0, contacts = 0, multi = 0;
+        Point& out = pts[std::size_t(task) / n][i];
+        for (long k = 0; k < npos; ++k) {
+            setup.y0 = setup.wall_spacing * double(k) / double(npos);
+            const ImpactOutcome o = shoot(s.law, CoulombShear{p.real("mu")}, setup);
+            sum += o.dvy;
+            sum2 += o.dvy * o.dvy;
+            contacts += o.wall_grains;
+            multi += o.wall_grains >= 2;
+            out.incomplete += !o.completed;
+        }
+        const double mean = sum / double(npos);
+        out.dvy = mean;
+        out.dvy_sem = npos > 1 ? std::sqrt(std::max(0.0, sum2 / double(npos) - mean * mean) / double(npos - 1)) : 0.0;
+        out.contacts = contacts / double(npos);
+        out.multi_fraction = multi / double(npos);
+    });
+
+    Result r;
+    int incomplete = 0;
+    for (const auto& s : pts)
+        for (const auto& q : s) incomplete += q.incomplete;
+    r.scalar("incomplete_impacts", incomplete, "1", "impacts that had not ended within max_steps");
+    r.scalar("e_N", e_N, "1", "free-wall restitution of the linear law, Eq. (4)");
+    r.scalar("t_col", law.collision_time(m), "s", "free-wall contact duration, Eq. (4)");
+
+    for (std::size_t si = 0; si < series.size(); ++si) {
+        const bool main = si < vxs.size();
+        const std::string tag = main ? label("vx", series[si].vx) : label("kN", series[si].law.k_N);
+        Table& t = r.table("impacts_" + tag, main ? "mean over start positions at v_x^i = " + label("", series[si].vx) + " m/s"
+                                                   : "k_N scan at the first v_x^i, e_N held fixed");
+        std::vector<double> dvy(n), sem(n), cont(n), multi(n);
+        for (std::size_t i = 0; i < n; ++i) {
+            dvy[i] = pts[si][i].dvy;
+            sem[i] = pts[si][i].dvy_sem;
+            cont[i] = pts[si][i].contacts;
+            multi[i] = pts[si][i].multi_fraction;
+        }
+        t.add("vy_i", "m/s").values = vy;
+        t.add("dvy", "m/s").values = dvy;
+        t.add("dvy_sem", "m/s").values = sem;
+        t.add("contacts", "1").values = cont;
+        t.add("multi_fraction", "1").values = multi;
+
+        // The first maximum (brake failure sets in), the minimum after it, and the rise to v_max.
+        const Peak pk = first_maximum(vy, dvy);
+        std::size_t imin = std::size_t(std::max(pk.index, 0));
+        for (std::size_t i = imin; i < n; ++i)
+            if (dvy[i] < dvy[imin]) imin = i;
+        r.scalar("v_crit_" + tag, pk.x, "m/s", "v_y^i at the first maximum of mean Δv_y");
+        r.scalar("dvy_peak_" + tag, pk.y, "m/s", "height of the first maximum");
+        if (!main) continue;
+        r.scalar("v_min_" + tag, vy[imin], "m/s", "v_y^i where Δv_y is smallest after the first maximum (rise begins)");
+        r.scalar("rise_ratio_" + tag, dvy.back() / dvy[imin], "1", "Δv_y at vy_max over its minimum after the peak");
+        // Fig. 5 plots the mean number of contacts; the multiple-contact regime starts where it reaches 2.
+        const double onset = first_upward_crossing(vy, cont, 2.0);
+        r.scalar("v_multi_onset_" + tag, onset, "m/s", "v_y^i at which the mean number of wall grains touched reaches 2");
+        r.scalar("onset_over_vmin_" + tag, onset / vy[imin], "1", "multi-contact onset over the start of the Δv_y rise");
+        r.scalar("contacts_at_vmax_" + tag, cont.back(), "1", "mean wall grains touched at vy_max");
+    }
+    if (!kscan.empty()) {
+        // v_crit and the peak height must grow with k_N (text below Fig. 5).
+        std::vector<std::pair<double, std::string>> ks;
+        ks.push_back({law.k_N, label("vx", vxs.front())});
+        for (double k : kscan) ks.push_back({k, label("kN", k)});
+        std::sort(ks.begin(), ks.end());
+        double monotone = 1;
+        for (std::size_t a = 1; a < ks.size(); ++a) {
+            const double v0 = r.find_scalar("v_crit_" + ks[a - 1].second)->value;
+            const double v1 = r.find_scalar("v_crit_" + ks[a].second)->value;
+            const double h0 = r.find_scalar("dvy_peak_" + ks[a - 1].second)->value;
+            const double h1 = r.find_scalar("dvy_peak_" + ks[a].second)->value;
+            monotone = monotone && v1 > v0 && h1 > h0;
+        }
+        r.scalar("v_crit_and_peak_grow_with_kN", monotone, "1", "1 if v_crit and the peak height increase with k_N");
+    }
+    return r;
+}
+
+} // namespace
+
+Experiment emergency_brake() { return {"emergency-brake", &validate, &run}; }
+
+} // namespace granrepro::experiments

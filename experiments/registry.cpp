@@ -1,0 +1,21 @@
+// The explicit table of experiments. To add one: write experiments/<name>.toml (parameters),
+// experiments/<name>.cpp (defining a function returning its Experiment), expected/<name>.toml
+// (claims), plots/<figure-id>.gp, and add one line below.
+#include "harness/experiment.hpp"
+
+namespace granrepro {
+
+namespace experiments {
+Experiment brake_failure();
+Experiment emergency_brake();
+} // namespace experiments
+
+const std::vector<Experiment>& experiment_registry() {
+    static const std::vector<Experiment> table = {
+        experiments::brake_failure(),
+        experiments::emergency_brake(),
+    };
+    return table;
+}
+
+} // namespace granrepro

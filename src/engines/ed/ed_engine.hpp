@@ -1,0 +1,802 @@
+// Event-driven (ED) hard-disk engine, Luding 1998 Sec. 2.1-2.2: rigid rough disks with the
+// Walton-Braun operator (Eqs. (1)-(6)), flat walls (m_2 = infinity), uniform gravity and the TC
+// model (Eq. (7)).
+//
+// Algorithm (Lubachevsky 1991, the paper's Ref. [24]): every particle carries its own clock
+// local_time and is advanced lazily; each particle has exactly ONE pending event in the queue,
+// the earliest of (best predicted pair collision, wall contact, exit from its linked-list cell).
+// A predicted pair collision stores the partner's collision counter; if the partner collided in
+// between, the event is stale and the particle is re-predicted when it is popped. When a
+// particle enters a new cell only the newly adjacent row/column of cells is scanned: its stored
+// best pair collision (if still valid) is the minimum over the old neighbourhood already.
+// Why this finds every collision: a collision i-j is always the stored best of i or of j at the
+// moment it becomes the earlier of their pending events, because whoever changed trajectory or
+// cell last scanned the other.
+//
+// Geometry: the box [0,lx) x [0,ly) is tiled by cells at least one largest diameter wide.
+// Periodic axes wrap (>= 3 cells needed for the minimum image); walled axes have edge cells
+// that extend to +-infinity, so disks may leave the box (a pipe whose bottom was removed).
+//
+// Round-off: pairs (and walls) found at or inside contact while approaching collide at once, so
+// overlaps cannot accumulate; two disks whose latest collisions were with each other are never
+// re-predicted against each other (their relative motion is a straight line away from contact,
+// gravity cancelling), which removes grazing re-collision loops. max_overlap() reports the
+// largest overlap seen at any executed contact [m].
+//
+// The event loop is a template on the collision operator's frictional/smooth form and on the
+// observer, so an unset observer costs nothing and smooth runs skip the tangential algebra.
+#pragma once
+#include "core/collision_record.hpp"
+#include "core/input_error.hpp"
+#include "core/vec2.hpp"
+#include "engines/ed/binary_heap_queue.hpp"
+#include "engines/ed/calendar_queue.hpp"
+#include "engines/ed/ed_config.hpp"
+#include "engines/ed/ed_kinetic_energy.hpp"
+#include "engines/ed/ed_state.hpp"
+#include "engines/ed/flight_roots.hpp"
+#include "models/rough_disk_collision.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <functional>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <type_traits>
+#include <vector>
+
+namespace granrepro {
+
+template <class Queue>
+class BasicEdEngine {
+public:
+    using Observer = std::function<void(const CollisionRecord&)>;
+
+    // The earliest pair collision from a given state (used to test the cell search).
+    struct PairEvent {
+        double t = std::numeric_limits<double>::infinity(); // absolute time [s]
+        int i = -1;
+        int j = -1;
+    };
+
+    // pos [m], vel [m/s], radius [m], mass [kg], spin [1/s] (empty = 0), t0 [s].
+    BasicEdEngine(const EdConfig& cfg, const std::vector<Vec2>& pos, const std::vector<Vec2>& vel,
+                  const std::vector<double>& radius, const std::vector<double>& mass,
+                  const std::vector<double>& spin = {}, double t0 = 0.0) {
+        const std::size_t n = pos.size();
+        if (n == 0) throw InputError("ED: no particles");
+        if (vel.size() != n || radius.size() != n || mass.size() != n || (!spin.empty() && spin.size() != n))
+            throw InputError("ED: position, velocity, radius, mass and spin arrays differ in size");
+        cfg_ = cfg;
+        t_now_ = t0;
+        x_.resize(n); y_.resize(n); vx_.resize(n); vy_.resize(n); w_.resize(n);
+        tau_.assign(n, t0);
+        rad_ = radius;
+        m_ = mass;
+        last_t_.assign(n, -kInf);
+        burst_t0_.assign(n, -kInf);
+        ev_t_.assign(n, kInf);
+        col_t_.assign(n, kInf);
+        count_.assign(n, 0);
+        pcount_.assign(n, 0);
+        last_partner_.assign(n, kNoPartner);
+        partner_.assign(n, -1);
+        kind_.assign(n, kNone);
+        arg_.assign(n, 0);
+        burst_n_.assign(n, 0);
+        for (std::size_t i = 0; i < n; ++i) {
+            if (!(radius[i] > 0.0) || !(mass[i] > 0.0)) throw InputError("ED: radius and mass must be > 0");
+            x_[i] = pos[i].x; y_[i] = pos[i].y;
+            vx_[i] = vel[i].x; vy_[i] = vel[i].y;
+            w_[i] = spin.empty() ? 0.0 : spin[i];
+        }
+        setup_geometry();
+        for (std::size_t i = 0; i < n; ++i) {
+            if (cfg_.periodic_x) x_[i] = wrap(x_[i], cfg_.lx);
+            if (cfg_.periodic_y) y_[i] = wrap(y_[i], cfg_.ly);
+        }
+        build_cells();
+        if (current_max_overlap() > 1e-9 * 2.0 * max_rad_)
+            throw InputError("ED: initial configuration has overlapping disks");
+        queue_.reset(n);
+        predict_all();
+    }
+    explicit BasicEdEngine(const EdState& s) { restore_state(s); }
+
+    // ---- running ----------------------------------------------------------------------------
+    // Process every event with time <= t_end [s]; afterwards time() == t_end.
+    void run_until(double t_end) { dispatch_stored(t_end, kMaxCount); }
+    // Process events until n more particle-particle collisions happened (or no event is left).
+    void run_collisions(std::uint64_t n) { dispatch_stored(kInf, n); }
+    // Same, reporting each collision to obs (any callable taking const CollisionRecord&).
+    template <class Obs>
+    void run_until(double t_end, Obs&& obs) { run_impl(t_end, kMaxCount, obs); }
+    template <class Obs>
+    void run_collisions(std::uint64_t n, Obs&& obs) { run_impl(kInf, n, obs); }
+    // Observer used by the overloads without an explicit one; empty = none (zero cost).
+    void set_observer(Observer f) { observer_ = std::move(f); }
+
+    // ---- run-time changes ---------------------------------------------------------------------
+    void set_law(const RoughDiskCollision& law) { cfg_.law = law; setup_laws(); }
+    void set_tc(double t_c) { cfg_.t_c = t_c; setup_laws(); }
+    void set_wall_law(std::size_t w, double r, double mu, double beta0) {
+        auto& wl = cfg_.walls.at(w);
+        wl.r = r; wl.mu = mu; wl.beta0 = beta0;
+        setup_laws();
+    }
+    // Adding/removing a wall changes predictions: all particles are synchronised and re-predicted.
+    void set_wall_enabled(std::size_t w, bool on) {
+        cfg_.walls.at(w).enabled = on;
+        reset_predictions();
+    }
+    void set_gravity(Vec2 g) { cfg_.gravity = g; setup_geometry(); reset_predictions(); }
+    // Replace all velocities [m/s] (and spins [1/s] if non-empty) at time().
+    void set_velocities(const std::vector<Vec2>& vel, const std::vector<double>& spin = {}) {
+        if (vel.size() != size() || (!spin.empty() && spin.size() != size()))
+            throw InputError("ED: set_velocities size mismatch");
+        synchronize();
+        for (std::size_t i = 0; i < size(); ++i) {
+            vx_[i] = vel[i].x; vy_[i] = vel[i].y;
+            if (!spin.empty()) w_[i] = spin[i];
+        }
+        // The "last partners cannot re-collide" shortcut assumed unchanged velocities.
+        std::fill(last_partner_.begin(), last_partner_.end(), kNoPartner);
+        reset_predictions();
+    }
+    const EdConfig& config() const { return cfg_; }
+
+    // ---- state access -----------------------------------------------------------------------
+    // Advance every particle to time() (positions/velocities stored at a common time).
+    void synchronize() {
+        for (std::size_t i = 0; i < size(); ++i) advance(static_cast<int>(i), t_now_);
+    }
+    double time() const { return t_now_; }
+    std::size_t size() const { return x_.size(); }
+    // Values at time() without mutating the lazy state; positions wrapped into periodic boxes.
+    Vec2 position(std::size_t i) const {
+        const double dt = t_now_ - tau_[i];
+        double px = x_[i] + (vx_[i] + 0.5 * gx_ * dt) * dt;
+        double py = y_[i] + (vy_[i] + 0.5 * gy_ * dt) * dt;
+        if (cfg_.periodic_x) px = wrap(px, cfg_.lx);
+        if (cfg_.periodic_y) py = wrap(py, cfg_.ly);
+        return {px, py};
+    }
+    Vec2 velocity(std::size_t i) const {
+        const double dt = t_now_ - tau_[i];
+        return {vx_[i] + gx_ * dt, vy_[i] + gy_ * dt};
+    }
+    double spin(std::size_t i) const { return w_[i]; }
+    double radius(std::size_t i) const { return rad_[i]; }
+    double mass(std::size_t i) const { return m_[i]; }
+    double moment_of_inertia(std::size_t i) const { return cfg_.law.q * m_[i] * rad_[i] * rad_[i]; }
+    std::vector<Vec2> positions() const { return collect([this](std::size_t i) { return position(i); }); }
+    std::vector<Vec2> velocities() const { return collect([this](std::size_t i) { return velocity(i); }); }
+    const std::vector<double>& spins() const { return w_; }
+    const std::vector<double>& radii() const { return rad_; }
+    const std::vector<double>& masses() const { return m_; }
+    // Collisions (with particles and walls) each particle took part in.
+    const std::vector<std::uint64_t>& collision_counts() const { return count_; }
+    std::uint64_t collision_count(std::size_t i) const { return count_[i]; }
+    int last_partner(std::size_t i) const { return last_partner_[i]; }
+    double last_collision_time(std::size_t i) const { return last_t_[i]; }
+    std::uint64_t total_collisions() const { return pair_collisions_; } // particle-particle
+    std::uint64_t wall_collisions() const { return wall_collisions_; }
+    std::uint64_t elastic_collisions() const { return elastic_; }        // made elastic by TC
+    std::uint64_t events_processed() const { return events_; }
+    std::uint64_t cell_crossings() const { return crossings_; }
+    std::uint64_t stale_events() const { return stale_; }
+    double max_overlap() const { return max_overlap_; }
+
+    EdKineticEnergy kinetic_energy() const {
+        EdKineticEnergy k;
+        for (std::size_t i = 0; i < size(); ++i) {
+            const Vec2 v = velocity(i);
+            k.kx += 0.5 * m_[i] * v.x * v.x;
+            k.ky += 0.5 * m_[i] * v.y * v.y;
+            k.krot += 0.5 * moment_of_inertia(i) * w_[i] * w_[i];
+        }
+        return k;
+    }
+    Vec2 total_momentum() const {
+        Vec2 p;
+        for (std::size_t i = 0; i < size(); ++i) p += m_[i] * velocity(i);
+        return p;
+    }
+
+    // Largest overlap sigma - |r_ij| [m] among all pairs (cell search) and walls at time().
+    double current_max_overlap() const {
+        double worst = 0.0;
+        for (std::size_t i = 0; i < size(); ++i) {
+            const Vec2 pi = raw_position(static_cast<int>(i));
+            for_neighbour_cells(cell_[i], [&](int c) {
+                for (int j = head_[c]; j >= 0; j = next_[j]) {
+                    if (j <= static_cast<int>(i)) continue;
+                    const Vec2 d = min_image(pi - raw_position(j));
+                    worst = std::max(worst, rad_[i] + rad_[j] - norm(d));
+                }
+            });
+            for (const auto& wl : cfg_.walls) {
+                if (!wl.enabled) continue;
+                const double c = wl.axis == 0 ? pi.x : pi.y;
+                worst = std::max(worst, rad_[i] - wl.side * (c - wl.position));
+            }
+        }
+        return worst;
+    }
+
+    // Earliest pair collision after time() found with the linked cells (ignoring queue state).
+    PairEvent next_pair_collision_cells() const {
+        PairEvent best;
+        for (std::size_t i = 0; i < size(); ++i) {
+            const Probe p = probe(static_cast<int>(i), t_now_);
+            double bt = kInf;
+            int bj = -1;
+            for_neighbour_cells(cell_[i], [&](int c) { scan_cell(p, c, bt, bj); });
+            if (bt < best.t) best = {t_now_ + bt, static_cast<int>(i), bj};
+        }
+        if (best.i > best.j) std::swap(best.i, best.j);
+        return best;
+    }
+
+    std::size_t memory_bytes() const {
+        auto b = [](const auto& v) { return v.capacity() * sizeof(typename std::decay_t<decltype(v)>::value_type); };
+        return b(x_) + b(y_) + b(vx_) + b(vy_) + b(w_) + b(tau_) + b(rad_) + b(m_) + b(last_t_) +
+               b(burst_t0_) + b(ev_t_) + b(col_t_) + b(count_) + b(pcount_) + b(last_partner_) +
+               b(partner_) + b(kind_) + b(arg_) + b(burst_n_) + b(cell_) + b(next_) + b(prev_) +
+               b(head_) + queue_.memory_bytes();
+    }
+
+    // ---- checkpoint -------------------------------------------------------------------------
+    EdState save_state() const {
+        EdState s;
+        s.config = cfg_;
+        s.time = t_now_;
+        s.x = x_; s.y = y_; s.vx = vx_; s.vy = vy_; s.spin = w_; s.local_time = tau_;
+        s.radius = rad_; s.mass = m_; s.last_collision_time = last_t_; s.burst_start = burst_t0_;
+        s.predicted_time = ev_t_; s.collision_time = col_t_; s.collision_count = count_;
+        s.partner_count = pcount_; s.last_partner = last_partner_; s.partner = partner_;
+        s.event_kind = kind_; s.event_arg = arg_; s.burst_count = burst_n_;
+        s.cell = cell_; s.cell_next = next_; s.cell_prev = prev_; s.cell_head = head_;
+        s.pair_collisions = pair_collisions_; s.wall_collisions = wall_collisions_;
+        s.elastic_collisions = elastic_; s.events = events_; s.crossings = crossings_;
+        s.stale_events = stale_; s.max_overlap = max_overlap_;
+        return s;
+    }
+    void restore_state(const EdState& s) {
+        const std::size_t n = s.x.size();
+        auto check = [n](std::size_t k) {
+            if (k != n) throw InputError("ED: inconsistent EdState array sizes");
+        };
+        for (std::size_t k : {s.y.size(), s.vx.size(), s.vy.size(), s.spin.size(), s.local_time.size(),
+                              s.radius.size(), s.mass.size(), s.last_collision_time.size(),
+                              s.burst_start.size(), s.predicted_time.size(), s.collision_time.size(),
+                              s.collision_count.size(), s.partner_count.size(), s.last_partner.size(),
+                              s.partner.size(), s.event_kind.size(), s.event_arg.size(),
+                              s.burst_count.size(), s.cell.size(), s.cell_next.size(), s.cell_prev.size()})
+            check(k);
+        cfg_ = s.config;
+        t_now_ = s.time;
+        x_ = s.x; y_ = s.y; vx_ = s.vx; vy_ = s.vy; w_ = s.spin; tau_ = s.local_time;
+        rad_ = s.radius; m_ = s.mass; last_t_ = s.last_collision_time; burst_t0_ = s.burst_start;
+        ev_t_ = s.predicted_time; col_t_ = s.collision_time; count_ = s.collision_count;
+        pcount_ = s.partner_count; last_partner_ = s.last_partner; partner_ = s.partner;
+        kind_ = s.event_kind; arg_ = s.event_arg; burst_n_ = s.burst_count;
+        setup_geometry();
+        if (s.cell_head.size() != static_cast<std::size_t>(ncx_) * static_cast<std::size_t>(ncy_))
+            throw InputError("ED: EdState cell grid does not match its configuration");
+        cell_ = s.cell; next_ = s.cell_next; prev_ = s.cell_prev; head_ = s.cell_head;
+        pair_collisions_ = s.pair_collisions; wall_collisions_ = s.wall_collisions;
+        elastic_ = s.elastic_collisions; events_ = s.events; crossings_ = s.crossings;
+        stale_ = s.stale_events; max_overlap_ = s.max_overlap;
+        queue_.rebuild(ev_t_);
+    }
+
+    // Geometry of the cell grid (for tests and diagnostics).
+    int cells_x() const { return ncx_; }
+    int cells_y() const { return ncy_; }
+
+private:
+    static constexpr double kInf = std::numeric_limits<double>::infinity();
+    static constexpr std::uint64_t kMaxCount = std::numeric_limits<std::uint64_t>::max();
+    static constexpr std::int32_t kNoPartner = std::numeric_limits<std::int32_t>::min();
+    enum : std::uint8_t { kCollision = 0, kWall = 1, kCross = 2, kNone = 3 };
+    // Consecutive events without any advance of time before we call it a loop.
+    static constexpr std::uint64_t kZeroTimeLimit = 10'000'000;
+
+    struct NoObserver {};
+    struct Probe { // a particle's state at a time
+        int i;
+        double x, y, vx, vy, t;
+    };
+
+    static double wrap(double v, double l) {
+        v = std::fmod(v, l);
+        if (v < 0.0) v += l;
+        return v >= l ? 0.0 : v;
+    }
+    template <class F>
+    std::vector<Vec2> collect(F f) const {
+        std::vector<Vec2> out(size());
+        for (std::size_t i = 0; i < size(); ++i) out[i] = f(i);
+        return out;
+    }
+    Vec2 raw_position(int i) const {
+        const double dt = t_now_ - tau_[i];
+        return {x_[i] + (vx_[i] + 0.5 * gx_ * dt) * dt, y_[i] + (vy_[i] + 0.5 * gy_ * dt) * dt};
+    }
+    Vec2 min_image(Vec2 d) const {
+        if (cfg_.periodic_x) { if (d.x > hx_) d.x -= cfg_.lx; else if (d.x < -hx_) d.x += cfg_.lx; }
+        if (cfg_.periodic_y) { if (d.y > hy_) d.y -= cfg_.ly; else if (d.y < -hy_) d.y += cfg_.ly; }
+        return d;
+    }
+
+    void setup_geometry() {
+        if (!(cfg_.lx > 0.0) || !(cfg_.ly > 0.0)) throw InputError("ED: box sizes must be > 0");
+        if (!(cfg_.cell_size_factor >= 1.0)) throw InputError("ED: cell_size_factor must be >= 1");
+        if (!(cfg_.t_c >= 0.0)) throw InputError("ED: t_c must be >= 0");
+        max_rad_ = 0.0;
+        for (double a : rad_) max_rad_ = std::max(max_rad_, a);
+        // A margin above the largest diameter keeps round-off excursions of a disk out of its
+        // cell from hiding a contact across two cells.
+        const double cmin = 2.0 * max_rad_ * cfg_.cell_size_factor * (1.0 + 1e-9);
+        ncx_ = std::max(1, static_cast<int>(std::floor(cfg_.lx / cmin)));
+        ncy_ = std::max(1, static_cast<int>(std::floor(cfg_.ly / cmin)));
+        if ((cfg_.periodic_x && ncx_ < 3) || (cfg_.periodic_y && ncy_ < 3))
+            throw InputError("ED: a periodic box must be at least 3 cell widths (> 3 diameters) wide");
+        csx_ = cfg_.lx / ncx_;
+        csy_ = cfg_.ly / ncy_;
+        hx_ = 0.5 * cfg_.lx;
+        hy_ = 0.5 * cfg_.ly;
+        gx_ = cfg_.gravity.x;
+        gy_ = cfg_.gravity.y;
+        for (const auto& wl : cfg_.walls)
+            if ((wl.axis != 0 && wl.axis != 1) || (wl.side != 1 && wl.side != -1))
+                throw InputError("ED: wall axis must be 0/1 and side +1/-1");
+        setup_laws();
+    }
+    void setup_laws() {
+        auto valid = [](const RoughDiskCollision& l) {
+            return l.r >= 0.0 && l.r <= 1.0 && l.mu >= 0.0 && l.beta0 >= -1.0 && l.beta0 <= 1.0 && l.q > 0.0;
+        };
+        if (!valid(cfg_.law)) throw InputError("ED: need 0<=r<=1, mu>=0, -1<=beta0<=1, q>0");
+        law_ = cfg_.law;
+        law_tc_ = elastic_version(law_);
+        wlaw_.clear();
+        wlaw_tc_.clear();
+        rough_ = law_.frictional() || law_tc_.frictional();
+        for (const auto& wl : cfg_.walls) {
+            RoughDiskCollision l{wl.r, wl.mu, wl.beta0, cfg_.law.q};
+            if (!valid(l)) throw InputError("ED: wall needs 0<=r<=1, mu>=0, -1<=beta0<=1");
+            wlaw_.push_back(l);
+            wlaw_tc_.push_back(elastic_version(l));
+            rough_ = rough_ || l.frictional() || wlaw_tc_.back().frictional();
+        }
+    }
+    RoughDiskCollision elastic_version(RoughDiskCollision l) const {
+        l.r = 1.0;
+        if (!cfg_.tc_keep_friction) { l.mu = 0.0; l.beta0 = -1.0; }
+        return l;
+    }
+
+    int cell_of(double px, double py) const {
+        const int cx = std::clamp(static_cast<int>(std::floor(px / csx_)), 0, ncx_ - 1);
+        const int cy = std::clamp(static_cast<int>(std::floor(py / csy_)), 0, ncy_ - 1);
+        return cy * ncx_ + cx;
+    }
+    void build_cells() {
+        const std::size_t n = size();
+        head_.assign(static_cast<std::size_t>(ncx_) * static_cast<std::size_t>(ncy_), -1);
+        cell_.assign(n, 0);
+        next_.assign(n, -1);
+        prev_.assign(n, -1);
+        for (std::size_t i = 0; i < n; ++i) link(static_cast<int>(i), cell_of(x_[i], y_[i]));
+    }
+    void link(int i, int c) {
+        cell_[i] = c;
+        prev_[i] = -1;
+        next_[i] = head_[c];
+        if (head_[c] >= 0) prev_[head_[c]] = i;
+        head_[c] = i;
+    }
+    void unlink(int i) {
+        const int c = cell_[i];
+        if (prev_[i] >= 0) next_[prev_[i]] = next_[i]; else head_[c] = next_[i];
+        if (next_[i] >= 0) prev_[next_[i]] = prev_[i];
+    }
+    // Calls f(cell) for the up to 9 cells around c (deduplicated: walled axes clip).
+    template <class F>
+    void for_neighbour_cells(int c, F&& f) const {
+        const int cx = c % ncx_, cy = c / ncx_;
+        for (int dy = -1; dy <= 1; ++dy) {
+            int ny = cy + dy;
+            if (ny < 0 || ny >= ncy_) {
+                if (!cfg_.periodic_y) continue;
+                ny = ny < 0 ? ny + ncy_ : ny - ncy_;
+            }
+            for (int dx = -1; dx <= 1; ++dx) {
+                int nx = cx + dx;
+                if (nx < 0 || nx >= ncx_) {
+                    if (!cfg_.periodic_x) continue;
+                    nx = nx < 0 ? nx + ncx_ : nx - ncx_;
+                }
+                f(ny * ncx_ + nx);
+            }
+        }
+    }
+
+    void advance(int i, double t) {
+        const double dt = t - tau_[i];
+        if (dt == 0.0) return;
+        if (has_gravity()) {
+            x_[i] += (vx_[i] + 0.5 * gx_ * dt) * dt;
+            y_[i] += (vy_[i] + 0.5 * gy_ * dt) * dt;
+            vx_[i] += gx_ * dt;
+            vy_[i] += gy_ * dt;
+        } else {
+            x_[i] += vx_[i] * dt;
+            y_[i] += vy_[i] * dt;
+        }
+        tau_[i] = t;
+    }
+    bool has_gravity() const { return gx_ != 0.0 || gy_ != 0.0; }
+    Probe probe(int i, double t) const {
+        const double dt = t - tau_[i];
+        return {i, x_[i] + (vx_[i] + 0.5 * gx_ * dt) * dt, y_[i] + (vy_[i] + 0.5 * gy_ * dt) * dt,
+                vx_[i] + gx_ * dt, vy_[i] + gy_ * dt, t};
+    }
+
+    // Earliest contact (interval from p.t) of p with the disks in cell c.
+    void scan_cell(const Probe& p, int c, double& best, int& best_j) const {
+        const int i = p.i;
+        const int lp = last_partner_[i];
+        for (int j = head_[c]; j >= 0; j = next_[j]) {
+            if (j == i) continue;
+            if (j == lp && last_partner_[j] == i) continue; // separating since their collision
+            const double dt = p.t - tau_[j];
+            double dx = p.x - (x_[j] + (vx_[j] + 0.5 * gx_ * dt) * dt);
+            double dy = p.y - (y_[j] + (vy_[j] + 0.5 * gy_ * dt) * dt);
+            if (cfg_.periodic_x) { if (dx > hx_) dx -= cfg_.lx; else if (dx < -hx_) dx += cfg_.lx; }
+            if (cfg_.periodic_y) { if (dy > hy_) dy -= cfg_.ly; else if (dy < -hy_) dy += cfg_.ly; }
+            const double dvx = p.vx - (vx_[j] + gx_ * dt);
+            const double dvy = p.vy - (vy_[j] + gy_ * dt);
+            const double tc = flight_roots::pair_contact_time(dx, dy, dvx, dvy, rad_[i] + rad_[j]);
+            if (tc < best) { best = tc; best_j = j; }
+        }
+    }
+
+    // Full prediction for i at its own clock (tau_i == time of the current event).
+    void predict_full(int i) {
+        const Probe p{i, x_[i], y_[i], vx_[i], vy_[i], tau_[i]};
+        double bt = kInf;
+        int bj = -1;
+        for_neighbour_cells(cell_[i], [&](int c) { scan_cell(p, c, bt, bj); });
+        set_pair_prediction(i, bt, bj);
+        schedule(i);
+    }
+    void set_pair_prediction(int i, double dt, int j) {
+        partner_[i] = j;
+        if (j >= 0) {
+            col_t_[i] = tau_[i] + dt;
+            pcount_[i] = count_[j];
+        } else {
+            col_t_[i] = kInf;
+        }
+    }
+    // After entering a new cell along dir: scan only the newly adjacent cells.
+    void predict_after_crossing(int i, int dir) {
+        if (partner_[i] >= 0 && count_[partner_[i]] != pcount_[i]) {
+            predict_full(i);
+            return;
+        }
+        const Probe p{i, x_[i], y_[i], vx_[i], vy_[i], tau_[i]};
+        double bt = kInf;
+        int bj = -1;
+        const int cx = cell_[i] % ncx_, cy = cell_[i] / ncx_;
+        if (dir < 2) {
+            int nx = cx + (dir == 1 ? 1 : -1);
+            bool ok = true;
+            if (nx < 0 || nx >= ncx_) {
+                if (cfg_.periodic_x) nx = nx < 0 ? nx + ncx_ : nx - ncx_; else ok = false;
+            }
+            if (ok) {
+                for (int dy = -1; dy <= 1; ++dy) {
+                    int ny = cy + dy;
+                    if (ny < 0 || ny >= ncy_) {
+                        if (!cfg_.periodic_y) continue;
+                        ny = ny < 0 ? ny + ncy_ : ny - ncy_;
+                    }
+                    scan_cell(p, ny * ncx_ + nx, bt, bj);
+                }
+            }
+        } else {
+            int ny = cy + (dir == 3 ? 1 : -1);
+            bool ok = true;
+            if (ny < 0 || ny >= ncy_) {
+                if (cfg_.periodic_y) ny = ny < 0 ? ny + ncy_ : ny - ncy_; else ok = false;
+            }
+            if (ok) {
+                for (int dx = -1; dx <= 1; ++dx) {
+                    int nx = cx + dx;
+                    if (nx < 0 || nx >= ncx_) {
+                        if (!cfg_.periodic_x) continue;
+                        nx = nx < 0 ? nx + ncx_ : nx - ncx_;
+                    }
+                    scan_cell(p, ny * ncx_ + nx, bt, bj);
+                }
+            }
+        }
+        if (bj >= 0 && tau_[i] + bt < col_t_[i]) set_pair_prediction(i, bt, bj);
+        schedule(i);
+    }
+
+    // Combine the stored pair prediction with wall and cell-exit times; queue the earliest.
+    void schedule(int i) {
+        double best = col_t_[i];
+        std::uint8_t kind = partner_[i] >= 0 ? kCollision : kNone;
+        std::uint8_t arg = 0;
+        const double t = tau_[i];
+        const double a = rad_[i];
+        for (std::size_t w = 0; w < cfg_.walls.size(); ++w) {
+            const EdWall& wl = cfg_.walls[w];
+            if (!wl.enabled) continue;
+            const double s = wl.side;
+            double tw;
+            if (wl.axis == 0) tw = flight_roots::gap_closing_time(s * (x_[i] - wl.position) - a, s * vx_[i], s * gx_);
+            else tw = flight_roots::gap_closing_time(s * (y_[i] - wl.position) - a, s * vy_[i], s * gy_);
+            if (t + tw < best) { best = t + tw; kind = kWall; arg = static_cast<std::uint8_t>(w); }
+        }
+        const int cx = cell_[i] % ncx_, cy = cell_[i] / ncx_;
+        // Cell boundaries; edge cells of walled axes extend to infinity.
+        if (cfg_.periodic_x || cx > 0) {
+            const double tc = flight_roots::gap_closing_time(x_[i] - cx * csx_, vx_[i], gx_);
+            if (t + tc < best) { best = t + tc; kind = kCross; arg = 0; }
+        }
+        if (cfg_.periodic_x || cx < ncx_ - 1) {
+            const double hi = cx + 1 == ncx_ ? cfg_.lx : (cx + 1) * csx_;
+            const double tc = flight_roots::gap_closing_time(hi - x_[i], -vx_[i], -gx_);
+            if (t + tc < best) { best = t + tc; kind = kCross; arg = 1; }
+        }
+        if (cfg_.periodic_y || cy > 0) {
+            const double tc = flight_roots::gap_closing_time(y_[i] - cy * csy_, vy_[i], gy_);
+            if (t + tc < best) { best = t + tc; kind = kCross; arg = 2; }
+        }
+        if (cfg_.periodic_y || cy < ncy_ - 1) {
+            const double hi = cy + 1 == ncy_ ? cfg_.ly : (cy + 1) * csy_;
+            const double tc = flight_roots::gap_closing_time(hi - y_[i], -vy_[i], -gy_);
+            if (t + tc < best) { best = t + tc; kind = kCross; arg = 3; }
+        }
+        ev_t_[i] = best;
+        kind_[i] = kind;
+        arg_[i] = arg;
+        queue_.update(i, best);
+    }
+
+    void predict_all() {
+        for (std::size_t i = 0; i < size(); ++i) predict_full(static_cast<int>(i));
+    }
+    void reset_predictions() {
+        setup_geometry();
+        synchronize();
+        predict_all();
+    }
+
+    // ---- execution --------------------------------------------------------------------------
+    void dispatch_stored(double t_end, std::uint64_t n) {
+        if (observer_) run_impl(t_end, n, observer_);
+        else {
+            NoObserver none;
+            run_impl(t_end, n, none);
+        }
+    }
+    template <class Obs>
+    void run_impl(double t_end, std::uint64_t n, Obs& obs) {
+        start_run();
+        if (rough_) loop<true>(t_end, n, obs);
+        else loop<false>(t_end, n, obs);
+        if (t_end < kInf && t_end > t_now_ && !(queue_.top_time() <= t_end)) t_now_ = t_end;
+    }
+    void start_run() {
+        if (cfg_.collapse_window > 0.0) { window_ = cfg_.collapse_window; return; }
+        double v2 = 0.0, dsum = 0.0;
+        for (std::size_t i = 0; i < size(); ++i) {
+            const Vec2 v = velocity(i);
+            v2 += norm2(v);
+            dsum += 2.0 * rad_[i];
+        }
+        const double d = dsum / static_cast<double>(size());
+        const double vref = std::max(std::sqrt(v2 / static_cast<double>(size())),
+                                     std::sqrt(std::hypot(gx_, gy_) * d));
+        window_ = vref > 0.0 ? 1e-7 * d / vref : 0.0;
+    }
+
+    template <bool kRough, class Obs>
+    void loop(double t_end, std::uint64_t n, Obs& obs) {
+        const std::uint64_t target = n > kMaxCount - pair_collisions_ ? kMaxCount : pair_collisions_ + n;
+        while (pair_collisions_ < target) {
+            const double t = queue_.top_time();
+            if (!(t <= t_end)) break;
+            const int i = queue_.top_id();
+            ++events_;
+            if (t == t_last_event_) {
+                if (++zero_time_run_ > kZeroTimeLimit) fail_loop(i, t);
+            } else {
+                zero_time_run_ = 0;
+                t_last_event_ = t;
+            }
+            t_now_ = t;
+            switch (kind_[i]) {
+            case kCross: do_cross(i, t); break;
+            case kWall: do_wall<kRough>(i, arg_[i], t, obs); break;
+            case kCollision: {
+                const int j = partner_[i];
+                if (count_[j] != pcount_[i]) {
+                    ++stale_;
+                    advance(i, t);
+                    predict_full(i);
+                } else {
+                    do_pair<kRough>(i, j, t, obs);
+                }
+                break;
+            }
+            default: throw std::logic_error("ED: finite event time with no event");
+            }
+        }
+    }
+
+    [[noreturn]] void fail_loop(int i, double t) const {
+        std::ostringstream os;
+        os << "ED: " << kZeroTimeLimit << " consecutive events at the same time t = " << t
+           << " s (particle " << i << "); the event sequence is stuck (inelastic collapse or a "
+           << "disk resting on a wall). Use the TC model (t_c > 0, Luding Eq. 7).";
+        throw std::runtime_error(os.str());
+    }
+    void note_collision(int i, double t) {
+        ++count_[i];
+        if (t - burst_t0_[i] > window_) {
+            burst_t0_[i] = t;
+            burst_n_[i] = 0;
+        }
+        if (++burst_n_[i] > cfg_.collapse_limit) {
+            std::ostringstream os;
+            os << "ED: inelastic collapse: particle " << i << " took part in more than "
+               << cfg_.collapse_limit << " collisions within " << window_ << " s (at t = " << t
+               << " s); the collision rate diverges. Use the TC model (t_c > 0, Luding Eq. 7) "
+               << "or weaker dissipation.";
+            throw std::runtime_error(os.str());
+        }
+        last_t_[i] = t;
+    }
+    bool tc_elastic(double t, int i) const { return cfg_.t_c > 0.0 && t - last_t_[i] <= cfg_.t_c; }
+
+    void do_cross(int i, double t) {
+        ++crossings_;
+        advance(i, t);
+        unlink(i);
+        const int dir = arg_[i];
+        int cx = cell_[i] % ncx_, cy = cell_[i] / ncx_;
+        switch (dir) {
+        case 0: if (--cx < 0) { cx += ncx_; x_[i] += cfg_.lx; } break;
+        case 1: if (++cx == ncx_) { cx = 0; x_[i] -= cfg_.lx; } break;
+        case 2: if (--cy < 0) { cy += ncy_; y_[i] += cfg_.ly; } break;
+        default: if (++cy == ncy_) { cy = 0; y_[i] -= cfg_.ly; } break;
+        }
+        link(i, cy * ncx_ + cx);
+        predict_after_crossing(i, dir);
+    }
+
+    template <bool kRough, class Obs>
+    void do_pair(int i, int j, double t, Obs& obs) {
+        advance(i, t);
+        advance(j, t);
+        double dx = x_[i] - x_[j], dy = y_[i] - y_[j];
+        if (cfg_.periodic_x) { if (dx > hx_) dx -= cfg_.lx; else if (dx < -hx_) dx += cfg_.lx; }
+        if (cfg_.periodic_y) { if (dy > hy_) dy -= cfg_.ly; else if (dy < -hy_) dy += cfg_.ly; }
+        const double dist = std::sqrt(dx * dx + dy * dy);
+        max_overlap_ = std::max(max_overlap_, rad_[i] + rad_[j] - dist);
+        const Vec2 n{dx / dist, dy / dist};
+        const bool el = tc_elastic(t, i) || tc_elastic(t, j);
+        const RoughDiskCollision& law = el ? law_tc_ : law_;
+        const Vec2 vi{vx_[i], vy_[i]}, vj{vx_[j], vy_[j]};
+        const auto res = law.template collide<kRough>(vi, w_[i], m_[i], rad_[i], vj, w_[j], m_[j], rad_[j], n);
+        vx_[i] += res.dP.x / m_[i];
+        vy_[i] += res.dP.y / m_[i];
+        vx_[j] -= res.dP.x / m_[j];
+        vy_[j] -= res.dP.y / m_[j];
+        if constexpr (kRough) {
+            w_[i] += res.dw1;
+            w_[j] += res.dw2;
+        }
+        note_collision(i, t);
+        note_collision(j, t);
+        ++pair_collisions_;
+        if (el) ++elastic_;
+        last_partner_[i] = j;
+        last_partner_[j] = i;
+        if constexpr (!std::is_same_v<std::decay_t<Obs>, NoObserver>) {
+            CollisionRecord rec;
+            rec.t = t;
+            rec.i = i;
+            rec.j = j;
+            rec.ri = {x_[i], y_[i]};
+            rec.rj = {x_[i] - dx, y_[i] - dy};
+            rec.n = n;
+            rec.dP = res.dP;
+            const Vec2 dv = vi - vj;
+            const double vv = norm(dv);
+            rec.b_over_d = vv > 0.0 ? std::fabs(cross(n, dv)) / vv : 0.0;
+            rec.elastic = el;
+            obs(rec);
+        }
+        predict_full(i);
+        predict_full(j);
+    }
+
+    template <bool kRough, class Obs>
+    void do_wall(int i, int w, double t, Obs& obs) {
+        advance(i, t);
+        const EdWall& wl = cfg_.walls[w];
+        const Vec2 n = wl.axis == 0 ? Vec2{double(wl.side), 0.0} : Vec2{0.0, double(wl.side)};
+        const double c = wl.axis == 0 ? x_[i] : y_[i];
+        max_overlap_ = std::max(max_overlap_, rad_[i] - wl.side * (c - wl.position));
+        const bool el = tc_elastic(t, i);
+        const RoughDiskCollision& law = el ? wlaw_tc_[w] : wlaw_[w];
+        const Vec2 vi{vx_[i], vy_[i]};
+        const auto res = law.template collide<kRough>(vi, w_[i], m_[i], rad_[i], Vec2{}, 0.0, kInf, 0.0, n);
+        vx_[i] += res.dP.x / m_[i];
+        vy_[i] += res.dP.y / m_[i];
+        if constexpr (kRough) w_[i] += res.dw1;
+        note_collision(i, t);
+        ++wall_collisions_;
+        if (el) ++elastic_;
+        last_partner_[i] = -1 - w;
+        if constexpr (!std::is_same_v<std::decay_t<Obs>, NoObserver>) {
+            CollisionRecord rec;
+            rec.t = t;
+            rec.i = i;
+            rec.j = -1 - w;
+            rec.ri = {x_[i], y_[i]};
+            rec.rj = rec.ri - n * rad_[i];
+            rec.n = n;
+            rec.dP = res.dP;
+            const double vv = norm(vi);
+            rec.b_over_d = vv > 0.0 ? std::fabs(cross(n, vi)) / vv : 0.0;
+            rec.elastic = el;
+            obs(rec);
+        }
+        predict_full(i);
+    }
+
+    // ---- data -------------------------------------------------------------------------------
+    EdConfig cfg_;
+    RoughDiskCollision law_, law_tc_;
+    std::vector<RoughDiskCollision> wlaw_, wlaw_tc_;
+    bool rough_ = false;
+    double t_now_ = 0.0;
+    double max_rad_ = 0.0;
+    int ncx_ = 1, ncy_ = 1;
+    double csx_ = 1.0, csy_ = 1.0, hx_ = 0.5, hy_ = 0.5, gx_ = 0.0, gy_ = 0.0;
+    double window_ = 0.0;
+    double t_last_event_ = -kInf;
+    std::uint64_t zero_time_run_ = 0;
+
+    // Structure of arrays, one entry per particle.
+    std::vector<double> x_, y_, vx_, vy_, w_, tau_, rad_, m_, last_t_, burst_t0_, ev_t_, col_t_;
+    std::vector<std::uint64_t> count_, pcount_;
+    std::vector<std::int32_t> last_partner_, partner_;
+    std::vector<std::uint8_t> kind_, arg_;
+    std::vector<std::uint32_t> burst_n_;
+    std::vector<std::int32_t> cell_, next_, prev_, head_;
+    Queue queue_;
+
+    std::uint64_t pair_collisions_ = 0, wall_collisions_ = 0, elastic_ = 0, events_ = 0,
+                  crossings_ = 0, stale_ = 0;
+    double max_overlap_ = 0.0;
+    Observer observer_;
+};
+
+using EdEngine = BasicEdEngine<BinaryHeapQueue>;
+
+} // namespace granrepro

@@ -1,0 +1,49 @@
+// An experiment: the C++ half of experiments/<name>.{toml,cpp}. It knows its physics set-up and
+// which observables to compute; it knows nothing of files, plots or the command line.
+#pragma once
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "harness/parameter_set.hpp"
+#include "harness/result.hpp"
+
+namespace granrepro {
+
+struct RunContext {
+    const ParameterSet& params;
+    Scale scale;
+    std::uint64_t seed;
+    int threads;                    // independent sweep points may run concurrently
+    bool quiet;                     // no progress output
+    std::filesystem::path work_dir; // for checkpoints of long runs (survives an interrupted run)
+};
+
+struct Experiment {
+    std::string name; // subcommand and experiments/<name>.toml
+    // Checks that relate parameters (e.g. time step against contact duration); throws InputError.
+    void (*validate)(const ParameterSet&);
+    Result (*run)(const RunContext&);
+};
+
+// The explicit table of experiments, in experiments/registry.cpp.
+const std::vector<Experiment>& experiment_registry();
+
+// Metadata of an experiment file: what `list` shows and which figures it makes.
+struct FigureInfo {
+    std::string id;      // e.g. "schaefer95-fig3"; the script is plots/<id>.gp
+    std::string caption; // one line
+};
+
+struct ExperimentInfo {
+    std::string name, paper, description;
+    std::vector<FigureInfo> figures;
+    std::filesystem::path file;
+    static ExperimentInfo load(const std::filesystem::path& file); // throws InputError
+};
+
+// Where experiments/, expected/ and plots/ live: $GRANREPRO_HOME, else the source tree.
+std::filesystem::path project_root();
+
+} // namespace granrepro

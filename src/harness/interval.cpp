@@ -1,0 +1,70 @@
+#include "harness/interval.hpp"
+
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <limits>
+
+#include "core/input_error.hpp"
+
+namespace granrepro {
+
+namespace {
+std::string trim(const std::string& s) {
+    const auto a = s.find_first_not_of(" \t");
+    if (a == std::string::npos) return {};
+    const auto b = s.find_last_not_of(" \t");
+    return s.substr(a, b - a + 1);
+}
+} // namespace
+
+bool parse_double(const std::string& in, double& out) {
+    const std::string s = trim(in);
+    if (s.empty()) return false;
+    errno = 0;
+    char* end = nullptr;
+    const double v = std::strtod(s.c_str(), &end);
+    if (end != s.c_str() + s.size() || errno == ERANGE || std::isnan(v)) return false;
+    out = v;
+    return true;
+}
+
+bool parse_long(const std::string& in, long& out) {
+    const std::string s = trim(in);
+    if (s.empty()) return false;
+    errno = 0;
+    char* end = nullptr;
+    const long v = std::strtol(s.c_str(), &end, 10);
+    if (end != s.c_str() + s.size() || errno == ERANGE) return false;
+    out = v;
+    return true;
+}
+
+Interval Interval::parse(const std::string& text) {
+    const std::string t = trim(text);
+    const auto comma = t.find(',');
+    if (t.size() < 5 || comma == std::string::npos || (t.front() != '(' && t.front() != '[') ||
+        (t.back() != ')' && t.back() != ']'))
+        throw InputError("range '" + text + "' is not of the form (a, b], [a, b) ...");
+    Interval iv;
+    iv.text = t;
+    iv.lo_open = t.front() == '(';
+    iv.hi_open = t.back() == ')';
+    const std::string a = trim(t.substr(1, comma - 1));
+    const std::string b = trim(t.substr(comma + 1, t.size() - comma - 2));
+    const double inf = std::numeric_limits<double>::infinity();
+    if (a == "-inf") iv.lo = -inf;
+    else if (!parse_double(a, iv.lo)) throw InputError("range '" + text + "': bad lower bound");
+    if (b == "inf") iv.hi = inf;
+    else if (!parse_double(b, iv.hi)) throw InputError("range '" + text + "': bad upper bound");
+    return iv;
+}
+
+bool Interval::contains(double x) const {
+    if (std::isnan(x)) return false;
+    const bool above = lo_open ? x > lo : x >= lo;
+    const bool below = hi_open ? x < hi : x <= hi;
+    return above && below;
+}
+
+} // namespace granrepro

@@ -1,0 +1,272 @@
+#include "harness/parameter_set.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <toml.hpp>
+
+#include "core/input_error.hpp"
+
+namespace granrepro {
+
+const char* to_string(Scale s) { return s == Scale::Quick ? "quick" : "paper"; }
+
+Scale parse_scale(const std::string& s) {
+    if (s == "quick") return Scale::Quick;
+    if (s == "paper") return Scale::Paper;
+    throw InputError("--scale " + s + ": must be 'quick' or 'paper'");
+}
+
+namespace {
+
+std::string fmt(double x) {
+    std::ostringstream os;
+    os.precision(10);
+    os << x;
+    return os.str();
+}
+
+std::string kind_text(Parameter::Kind k) {
+    switch (k) {
+    case Parameter::Kind::Real: return "a number";
+    case Parameter::Kind::Integer: return "an integer";
+    case Parameter::Kind::Text: return "one of";
+    case Parameter::Kind::Flag: return "true or false";
+    default: return "a comma-separated list of numbers";
+    }
+}
+
+std::string toml_text(const toml::value& v) {
+    if (v.is_string()) return v.as_string().str;
+    if (v.is_floating()) return fmt(v.as_floating());
+    if (v.is_integer()) return std::to_string(v.as_integer());
+    if (v.is_boolean()) return v.as_boolean() ? "true" : "false";
+    if (v.is_array()) {
+        std::string out;
+        for (const auto& e : v.as_array()) {
+            if (!out.empty()) out += ",";
+            out += toml_text(e);
+        }
+        return out;
+    }
+    return "?";
+}
+
+} // namespace
+
+std::string Parameter::value_text() const {
+    switch (kind) {
+    case Kind::Real: return fmt(real);
+    case Kind::Integer: return std::to_string(integer);
+    case Kind::Text: return text;
+    case Kind::Flag: return flag ? "true" : "false";
+    default: {
+        std::string out;
+        for (double x : reals) out += (out.empty() ? "" : ",") + fmt(x);
+        return out;
+    }
+    }
+}
+
+std::string Parameter::allowed_text() const {
+    std::string out = kind_text(kind);
+    if (kind == Kind::Text) {
+        for (std::size_t i = 0; i < choices.size(); ++i) out += (i ? ", " : " ") + choices[i];
+    } else if (has_range) {
+        out += (kind == Kind::RealList ? ", each in " : " in ") + range.text;
+    }
+    if (!unit.empty() && unit != "1" && kind != Kind::Text && kind != Kind::Flag) out += " [" + unit + "]";
+    return out;
+}
+
+namespace {
+
+// Parses `text` into p according to its kind and checks range/choices; false when not allowed.
+bool assign(Parameter& p, const std::string& text) {
+    switch (p.kind) {
+    case Parameter::Kind::Real: {
+        double x;
+        if (!parse_double(text, x) || !std::isfinite(x)) return false;
+        if (p.has_range && !p.range.contains(x)) return false;
+        p.real = x;
+        return true;
+    }
+    case Parameter::Kind::Integer: {
+        long x;
+        if (!parse_long(text, x)) return false;
+        if (p.has_range && !p.range.contains(double(x))) return false;
+        p.integer = x;
+        return true;
+    }
+    case Parameter::Kind::Text:
+        if (!p.choices.empty() && std::find(p.choices.begin(), p.choices.end(), text) == p.choices.end())
+            return false;
+        p.text = text;
+        return true;
+    case Parameter::Kind::Flag:
+        if (text == "true" || text == "1") p.flag = true;
+        else if (text == "false" || text == "0") p.flag = false;
+        else return false;
+        return true;
+    case Parameter::Kind::RealList: {
+        std::vector<double> xs;
+        std::stringstream ss(text);
+        std::string item;
+        while (std::getline(ss, item, ',')) {
+            double x;
+            if (!parse_double(item, x) || !std::isfinite(x)) return false;
+            if (p.has_range && !p.range.contains(x)) return false;
+            xs.push_back(x);
+        }
+        if (xs.empty()) return false;
+        p.reals = xs;
+        return true;
+    }
+    }
+    return false;
+}
+
+Parameter::Kind kind_of(const toml::value& v) {
+    if (v.is_floating()) return Parameter::Kind::Real;
+    if (v.is_integer()) return Parameter::Kind::Integer;
+    if (v.is_string()) return Parameter::Kind::Text;
+    if (v.is_boolean()) return Parameter::Kind::Flag;
+    if (v.is_array()) return Parameter::Kind::RealList;
+    throw InputError("unsupported parameter type");
+}
+
+} // namespace
+
+ParameterSet ParameterSet::load(const std::filesystem::path& file, Scale scale) {
+    const std::string where = file.string();
+    toml::value root;
+    try {
+        root = toml::parse(where);
+    } catch (const std::exception& e) {
+        std::string msg = e.what();
+        msg = msg.substr(0, msg.find('\n'));
+        throw InputError(where + ": cannot read experiment file: " + msg);
+    }
+    ParameterSet set;
+    if (!root.contains("parameters") || !root.at("parameters").is_table())
+        throw InputError(where + ": missing [parameters] table");
+    std::vector<std::pair<std::uint_least32_t, Parameter>> ordered;
+    for (const auto& [name, spec] : root.at("parameters").as_table()) {
+        Parameter p;
+        p.name = name;
+        const std::string ctx = where + ": parameter " + name;
+        if (!spec.is_table()) throw InputError(ctx + ": must be a table");
+        const auto& t = spec.as_table();
+        auto str = [&](const char* key) -> std::string {
+            const auto it = t.find(key);
+            if (it == t.end()) return {};
+            if (!it->second.is_string()) throw InputError(ctx + ": '" + key + "' must be a string");
+            return it->second.as_string().str;
+        };
+        p.unit = str("unit");
+        p.source = str("source");
+        p.help = str("help");
+        if (p.unit.empty() || p.source.empty())
+            throw InputError(ctx + ": every parameter needs a unit and a source");
+        const std::string range = str("range");
+        if (!range.empty()) {
+            p.has_range = true;
+            p.range = Interval::parse(range);
+        }
+        if (t.count("choices"))
+            for (const auto& c : toml::find<std::vector<std::string>>(spec, "choices")) p.choices.push_back(c);
+        const toml::value* quick = nullptr;
+        const toml::value* paper = nullptr;
+        if (t.count("value")) quick = paper = &t.at("value");
+        if (t.count("quick")) quick = &t.at("quick");
+        if (t.count("paper")) paper = &t.at("paper");
+        if (!quick || !paper) throw InputError(ctx + ": needs 'value' or both 'quick' and 'paper'");
+        const toml::value& chosen = scale == Scale::Quick ? *quick : *paper;
+        try {
+            p.kind = kind_of(chosen);
+        } catch (const InputError&) {
+            throw InputError(ctx + ": value has an unsupported type");
+        }
+        if (p.kind == Parameter::Kind::Integer && kind_of(scale == Scale::Quick ? *paper : *quick) == Parameter::Kind::Real)
+            p.kind = Parameter::Kind::Real; // 1 and 1.5 at the two scales: a real parameter
+        p.quick_text = toml_text(*quick);
+        p.paper_text = toml_text(*paper);
+        if (!assign(p, toml_text(chosen)))
+            throw InputError(ctx + ": default " + toml_text(chosen) + " is not " + p.allowed_text());
+        ordered.emplace_back(spec.location().line(), std::move(p));
+    }
+    std::stable_sort(ordered.begin(), ordered.end(),
+                     [](const auto& a, const auto& b) { return a.first < b.first; });
+    for (auto& [line, p] : ordered) set.params_.push_back(std::move(p));
+    return set;
+}
+
+void ParameterSet::set(const std::string& assignment) {
+    const auto eq = assignment.find('=');
+    if (eq == std::string::npos || eq == 0)
+        throw InputError("--set " + assignment + ": expected name=value");
+    const std::string name = assignment.substr(0, eq);
+    const std::string value = assignment.substr(eq + 1);
+    auto it = std::find_if(params_.begin(), params_.end(), [&](const Parameter& p) { return p.name == name; });
+    if (it == params_.end()) {
+        std::string known;
+        for (const auto& p : params_) known += (known.empty() ? "" : ", ") + p.name;
+        throw InputError("--set " + name + ": unknown parameter; this experiment has: " + known);
+    }
+    if (!assign(*it, value))
+        throw InputError("--set " + name + "=" + value + ": " + name + " must be " + it->allowed_text());
+    it->overridden = true;
+}
+
+const Parameter& ParameterSet::get(const std::string& name) const {
+    for (const auto& p : params_)
+        if (p.name == name) return p;
+    throw std::logic_error("experiment asked for undeclared parameter '" + name + "'");
+}
+
+bool ParameterSet::has(const std::string& name) const {
+    return std::any_of(params_.begin(), params_.end(), [&](const Parameter& p) { return p.name == name; });
+}
+
+const Parameter& ParameterSet::find(const std::string& name, Parameter::Kind kind) const {
+    const Parameter& p = get(name);
+    if (p.kind != kind) throw std::logic_error("parameter '" + name + "' read with the wrong type");
+    return p;
+}
+
+double ParameterSet::real(const std::string& n) const {
+    const Parameter& p = get(n);
+    if (p.kind == Parameter::Kind::Integer) return double(p.integer);
+    return find(n, Parameter::Kind::Real).real;
+}
+long ParameterSet::integer(const std::string& n) const { return find(n, Parameter::Kind::Integer).integer; }
+const std::string& ParameterSet::text(const std::string& n) const { return find(n, Parameter::Kind::Text).text; }
+bool ParameterSet::flag(const std::string& n) const { return find(n, Parameter::Kind::Flag).flag; }
+const std::vector<double>& ParameterSet::reals(const std::string& n) const {
+    return find(n, Parameter::Kind::RealList).reals;
+}
+
+void ParameterSet::reject(const std::string& name, const std::string& requirement) const {
+    throw InputError(name + " = " + get(name).value_text() + ": " + requirement);
+}
+
+nlohmann::json ParameterSet::to_json() const {
+    nlohmann::json j = nlohmann::json::object();
+    for (const auto& p : params_) {
+        nlohmann::json e;
+        switch (p.kind) {
+        case Parameter::Kind::Real: e["value"] = p.real; break;
+        case Parameter::Kind::Integer: e["value"] = p.integer; break;
+        case Parameter::Kind::Text: e["value"] = p.text; break;
+        case Parameter::Kind::Flag: e["value"] = p.flag; break;
+        case Parameter::Kind::RealList: e["value"] = p.reals; break;
+        }
+        e["unit"] = p.unit;
+        e["source"] = p.source;
+        if (p.overridden) e["overridden"] = true;
+        j[p.name] = e;
+    }
+    return j;
+}
+
+} // namespace granrepro

@@ -1,0 +1,69 @@
+// The parameters of one experiment, read from experiments/<name>.toml. Each parameter carries
+// its value at both scales, its unit, the paper's source for it (or the reason for our choice
+// where the paper is silent) and its allowed range. `--set name=value` overrides any of them;
+// the resolved set is written into every output file.
+#pragma once
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "harness/interval.hpp"
+
+namespace granrepro {
+
+enum class Scale { Quick, Paper };
+const char* to_string(Scale s);
+Scale parse_scale(const std::string& s); // throws InputError
+
+struct Parameter {
+    enum class Kind { Real, Integer, Text, Flag, RealList };
+    std::string name;
+    Kind kind = Kind::Real;
+    std::string unit;   // SI unit, "1" for dimensionless
+    std::string source; // paper section/figure/equation, or why we chose it
+    std::string help;   // one line
+    bool has_range = false;
+    Interval range;
+    std::vector<std::string> choices; // for Text
+    // Resolved value (one of these, by kind).
+    double real = 0;
+    long integer = 0;
+    std::string text;
+    bool flag = false;
+    std::vector<double> reals;
+    std::string quick_text, paper_text; // defaults at both scales, for --help
+    bool overridden = false;
+
+    std::string value_text() const;
+    std::string allowed_text() const; // "a number in (0, 1] [1]" etc.
+};
+
+class ParameterSet {
+public:
+    // Reads the [parameters] of an experiment file and resolves them for one scale.
+    static ParameterSet load(const std::filesystem::path& file, Scale scale);
+
+    // Applies one `--set name=value`; throws InputError naming the parameter and what is allowed.
+    void set(const std::string& assignment);
+
+    double real(const std::string& name) const;
+    long integer(const std::string& name) const;
+    const std::string& text(const std::string& name) const;
+    bool flag(const std::string& name) const;
+    const std::vector<double>& reals(const std::string& name) const;
+    const Parameter& get(const std::string& name) const;
+    bool has(const std::string& name) const;
+
+    // Throws InputError("name = value: must be ...") — for checks that relate parameters.
+    [[noreturn]] void reject(const std::string& name, const std::string& requirement) const;
+
+    const std::vector<Parameter>& all() const { return params_; }
+    nlohmann::json to_json() const;
+
+private:
+    const Parameter& find(const std::string& name, Parameter::Kind kind) const;
+    std::vector<Parameter> params_;
+};
+
+} // namespace granrepro

@@ -1,0 +1,51 @@
+// What an experiment hands back: tables of columns (curves) and named scalars, each with units.
+// The writer turns them into data.h5, summary.json and the tab-separated files gnuplot reads.
+#pragma once
+#include <string>
+#include <vector>
+
+namespace granrepro {
+
+struct Column {
+    std::string name;
+    std::string unit;
+    std::vector<double> values;
+};
+
+struct Table {
+    std::string name;        // file-name safe, e.g. "dv_vs_vy"
+    std::string description; // one line
+    std::vector<Column> columns;
+
+    Column& add(std::string name, std::string unit) {
+        columns.push_back({std::move(name), std::move(unit), {}});
+        return columns.back();
+    }
+};
+
+struct Scalar {
+    std::string name;
+    double value = 0;
+    std::string unit;
+    std::string description;
+};
+
+struct Result {
+    std::vector<Table> tables;
+    std::vector<Scalar> scalars;
+
+    Table& table(std::string name, std::string description) {
+        tables.push_back({std::move(name), std::move(description), {}});
+        return tables.back();
+    }
+    void scalar(std::string name, double value, std::string unit, std::string description) {
+        scalars.push_back({std::move(name), value, std::move(unit), std::move(description)});
+    }
+    const Scalar* find_scalar(const std::string& name) const {
+        for (const auto& s : scalars)
+            if (s.name == name) return &s;
+        return nullptr;
+    }
+};
+
+} // namespace granrepro

@@ -1,0 +1,133 @@
+#include "harness/runner.hpp"
+
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+
+#include "core/input_error.hpp"
+#include "harness/claims.hpp"
+#include "harness/plotter.hpp"
+#include "io/result_writer.hpp"
+#include "io/staged_directory.hpp"
+
+namespace fs = std::filesystem;
+
+namespace granrepro {
+
+const Experiment& find_experiment(const std::string& name) {
+    for (const auto& e : experiment_registry())
+        if (e.name == name) return e;
+    std::string known;
+    for (const auto& e : experiment_registry()) known += (known.empty() ? "" : ", ") + e.name;
+    throw InputError("unknown experiment '" + name + "'; known: " + known);
+}
+
+ExperimentInfo experiment_info(const std::string& name) {
+    return ExperimentInfo::load(project_root() / "experiments" / (name + ".toml"));
+}
+
+std::string experiment_of_figure(const std::string& id) {
+    std::string known;
+    for (const auto& e : experiment_registry()) {
+        for (const auto& f : experiment_info(e.name).figures) {
+            if (f.id == id) return e.name;
+            known += (known.empty() ? "" : ", ") + f.id;
+        }
+    }
+    throw InputError("unknown figure '" + id + "'; known: " + known);
+}
+
+ParameterSet resolve_parameters(const std::string& name, const RunOptions& opt) {
+    const Experiment& exp = find_experiment(name);
+    ParameterSet params = ParameterSet::load(experiment_info(name).file, opt.scale);
+    for (const auto& s : opt.sets) params.set(s);
+    exp.validate(params);
+    return params;
+}
+
+namespace {
+std::string read_text(const fs::path& p) {
+    std::ifstream in(p);
+    std::stringstream ss;
+    ss << in.rdbuf();
+    return ss.str();
+}
+fs::path expected_file(const std::string& name) { return project_root() / "expected" / (name + ".toml"); }
+} // namespace
+
+int run_experiment(const std::string& name, const RunOptions& opt) {
+    const Experiment& exp = find_experiment(name);
+    const ExperimentInfo info = experiment_info(name);
+    const ParameterSet params = resolve_parameters(name, opt);
+    for (const auto& f : opt.figures) {
+        bool found = false;
+        for (const auto& fi : info.figures) found = found || fi.id == f;
+        if (!found) throw InputError("figure " + f + " is not made by experiment " + name);
+    }
+    // Read the claims before spending time on the run: a broken file is an input error.
+    const auto claims = load_claims(expected_file(name), name);
+    ensure_writable_directory(opt.out, "--out");
+
+    StagedDirectory stage(opt.out / name);
+    const fs::path work_dir = opt.out / ("." + name + ".checkpoint");
+    fs::create_directories(work_dir);
+    const RunContext ctx{params, opt.scale, opt.seed, opt.threads, opt.quiet, work_dir};
+
+    const auto t0 = std::chrono::steady_clock::now();
+    Result result = exp.run(ctx);
+    const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+
+    Provenance prov{name, info.paper, read_text(info.file), opt.scale, opt.seed, wall, opt.threads};
+    write_result_h5(stage.path() / "data.h5", prov, params, result);
+    write_tables_tsv(stage.path() / "tables", result);
+    const auto verdicts = evaluate_claims(claims, scalars_json(result), opt.scale);
+    nlohmann::json summary = summary_json(prov, params, result);
+    summary["claims"] = claims_to_json(verdicts);
+    {
+        std::ofstream out(stage.path() / "summary.json");
+        out << summary.dump(2) << "\n";
+    }
+    for (const auto& f : info.figures)
+        if (opt.figures.empty() || std::find(opt.figures.begin(), opt.figures.end(), f.id) != opt.figures.end())
+            render_figure(f.id, stage.path());
+    stage.commit();
+    std::error_code ec;
+    fs::remove_all(work_dir, ec);
+    if (!opt.quiet) std::fprintf(stderr, "%s: %.1f s, results in %s\n", name.c_str(), wall, (opt.out / name).c_str());
+    std::fputs(format_claim_table(name, verdicts).c_str(), stdout);
+    return 0;
+}
+
+int check_experiment(const std::string& name, const fs::path& out, bool quiet) {
+    find_experiment(name);
+    const auto claims = load_claims(expected_file(name), name);
+    const fs::path summary_path = out / name / "summary.json";
+    if (!fs::exists(summary_path))
+        throw InputError("check " + name + ": no results in " + (out / name).string() + "; run `granrepro " +
+                         name + "` first");
+    nlohmann::json summary;
+    try {
+        summary = nlohmann::json::parse(read_text(summary_path));
+    } catch (const std::exception&) {
+        throw InputError(summary_path.string() + ": not valid JSON");
+    }
+    const Scale scale = parse_scale(summary.value("scale", "quick"));
+    const auto verdicts = evaluate_claims(claims, summary["scalars"], scale);
+    if (!quiet) std::fputs(format_claim_table(name + " (" + to_string(scale) + " scale)", verdicts).c_str(), stdout);
+    return all_pass(verdicts) ? 0 : 1;
+}
+
+int plot_experiment(const std::string& name, const fs::path& out, const std::vector<std::string>& figures) {
+    const ExperimentInfo info = experiment_info(name);
+    const fs::path dir = out / name;
+    if (!fs::exists(dir / "tables"))
+        throw InputError("plot " + name + ": no results in " + dir.string() + "; run `granrepro " + name + "` first");
+    int failures = 0;
+    for (const auto& f : info.figures)
+        if (figures.empty() || std::find(figures.begin(), figures.end(), f.id) != figures.end())
+            failures += render_figure(f.id, dir) ? 0 : 1;
+    return failures ? 1 : 0;
+}
+
+} // namespace granrepro

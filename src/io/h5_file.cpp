@@ -1,0 +1,132 @@
+#include "io/h5_file.hpp"
+
+#include <stdexcept>
+
+namespace granrepro {
+
+namespace {
+hid_t check(hid_t id, const std::string& what) {
+    if (id < 0) throw std::runtime_error("HDF5: " + what);
+    return id;
+}
+void check(herr_t e, const std::string& what) {
+    if (e < 0) throw std::runtime_error("HDF5: " + what);
+}
+} // namespace
+
+H5File H5File::create(const std::string& path) {
+    return H5File(check(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), "create " + path), &H5Fclose);
+}
+
+H5File H5File::open(const std::string& path) {
+    H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+    return H5File(check(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), "open " + path), &H5Fclose);
+}
+
+H5Object H5Object::group(const std::string& name) const {
+    return {check(H5Gcreate2(id_, name.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), "group " + name), &H5Gclose};
+}
+
+H5Object H5Object::open_group(const std::string& name) const {
+    return {check(H5Gopen2(id_, name.c_str(), H5P_DEFAULT), "open group " + name), &H5Gclose};
+}
+
+namespace {
+void write_attr(hid_t obj, const std::string& name, hid_t type, hid_t space, const void* data) {
+    const hid_t a = check(H5Acreate2(obj, name.c_str(), type, space, H5P_DEFAULT, H5P_DEFAULT), "attr " + name);
+    const herr_t e = H5Awrite(a, type, data);
+    H5Aclose(a);
+    check(e, "write attr " + name);
+}
+} // namespace
+
+void H5Object::attr(const std::string& name, double v) const {
+    const hid_t s = H5Screate(H5S_SCALAR);
+    write_attr(id_, name, H5T_NATIVE_DOUBLE, s, &v);
+    H5Sclose(s);
+}
+
+void H5Object::attr(const std::string& name, long v) const {
+    const hid_t s = H5Screate(H5S_SCALAR);
+    write_attr(id_, name, H5T_NATIVE_LONG, s, &v);
+    H5Sclose(s);
+}
+
+void H5Object::attr(const std::string& name, const std::string& v) const {
+    const hid_t t = H5Tcopy(H5T_C_S1);
+    H5Tset_size(t, v.empty() ? 1 : v.size());
+    H5Tset_cset(t, H5T_CSET_UTF8);
+    const hid_t s = H5Screate(H5S_SCALAR);
+    const std::string padded = v.empty() ? std::string(1, '\0') : v;
+    write_attr(id_, name, t, s, padded.data());
+    H5Sclose(s);
+    H5Tclose(t);
+}
+
+void H5Object::attr(const std::string& name, const std::vector<double>& v) const {
+    const hsize_t n = v.size();
+    const hid_t s = H5Screate_simple(1, &n, nullptr);
+    write_attr(id_, name, H5T_NATIVE_DOUBLE, s, v.data());
+    H5Sclose(s);
+}
+
+void H5Object::dataset(const std::string& name, const std::vector<double>& v,
+                       const std::string& unit, const std::string& description) const {
+    const hsize_t n = v.size();
+    const hid_t s = H5Screate_simple(1, &n, nullptr);
+    const hid_t d = check(H5Dcreate2(id_, name.c_str(), H5T_IEEE_F64LE, s, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
+                          "dataset " + name);
+    const herr_t e = n ? H5Dwrite(d, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data()) : 0;
+    H5Sclose(s);
+    H5Object ds(d, &H5Dclose);
+    check(e, "write " + name);
+    ds.attr("unit", unit);
+    if (!description.empty()) ds.attr("description", description);
+}
+
+void H5Object::bytes(const std::string& name, const std::vector<unsigned char>& v) const {
+    const hsize_t n = v.size();
+    const hid_t s = H5Screate_simple(1, &n, nullptr);
+    const hid_t d = check(H5Dcreate2(id_, name.c_str(), H5T_NATIVE_UCHAR, s, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
+                          "dataset " + name);
+    const herr_t e = n ? H5Dwrite(d, H5T_NATIVE_UCHAR, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data()) : 0;
+    H5Sclose(s);
+    H5Dclose(d);
+    check(e, "write " + name);
+}
+
+std::vector<double> H5Object::read_dataset(const std::string& name) const {
+    H5Object d(check(H5Dopen2(id_, name.c_str(), H5P_DEFAULT), "open " + name), &H5Dclose);
+    H5Object s(H5Dget_space(d.id()), &H5Sclose);
+    const hssize_t n = H5Sget_simple_extent_npoints(s.id());
+    std::vector<double> v(static_cast<std::size_t>(n));
+    if (n) check(H5Dread(d.id(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data()), "read " + name);
+    return v;
+}
+
+std::vector<unsigned char> H5Object::read_bytes(const std::string& name) const {
+    H5Object d(check(H5Dopen2(id_, name.c_str(), H5P_DEFAULT), "open " + name), &H5Dclose);
+    H5Object s(H5Dget_space(d.id()), &H5Sclose);
+    const hssize_t n = H5Sget_simple_extent_npoints(s.id());
+    std::vector<unsigned char> v(static_cast<std::size_t>(n));
+    if (n) check(H5Dread(d.id(), H5T_NATIVE_UCHAR, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data()), "read " + name);
+    return v;
+}
+
+std::string H5Object::read_string_attr(const std::string& name) const {
+    H5Object a(check(H5Aopen(id_, name.c_str(), H5P_DEFAULT), "open attr " + name), &H5Aclose);
+    H5Object t(H5Aget_type(a.id()), &H5Tclose);
+    std::string s(H5Tget_size(t.id()), '\0');
+    check(H5Aread(a.id(), t.id(), s.data()), "read attr " + name);
+    while (!s.empty() && s.back() == '\0') s.pop_back();
+    return s;
+}
+
+double H5Object::read_double_attr(const std::string& name) const {
+    H5Object a(check(H5Aopen(id_, name.c_str(), H5P_DEFAULT), "open attr " + name), &H5Aclose);
+    double v = 0;
+    check(H5Aread(a.id(), H5T_NATIVE_DOUBLE, &v), "read attr " + name);
+    return v;
+}
+
+} // namespace granrepro

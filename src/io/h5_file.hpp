@@ -1,0 +1,49 @@
+// Thin RAII layer over the HDF5 C API: just what the result schema needs (groups, 1-D double
+// datasets, scalar and string attributes).
+#pragma once
+#include <hdf5.h>
+#include <string>
+#include <vector>
+
+namespace granrepro {
+
+class H5Object {
+public:
+    H5Object() = default;
+    H5Object(hid_t id, herr_t (*close)(hid_t)) : id_(id), close_(close) {}
+    H5Object(const H5Object&) = delete;
+    H5Object& operator=(const H5Object&) = delete;
+    H5Object(H5Object&& o) noexcept : id_(o.id_), close_(o.close_) { o.id_ = -1; }
+    ~H5Object() { if (id_ >= 0 && close_) close_(id_); }
+    hid_t id() const { return id_; }
+
+    H5Object group(const std::string& name) const;     // create
+    H5Object open_group(const std::string& name) const;
+    void attr(const std::string& name, double v) const;
+    void attr(const std::string& name, long v) const;
+    void attr(const std::string& name, const std::string& v) const;
+    void attr(const std::string& name, const std::vector<double>& v) const;
+    // A 1-D double dataset with a "unit" attribute (and optional description).
+    void dataset(const std::string& name, const std::vector<double>& v, const std::string& unit,
+                 const std::string& description = {}) const;
+    void bytes(const std::string& name, const std::vector<unsigned char>& v) const;
+
+    std::vector<double> read_dataset(const std::string& name) const;
+    std::vector<unsigned char> read_bytes(const std::string& name) const;
+    std::string read_string_attr(const std::string& name) const;
+    double read_double_attr(const std::string& name) const;
+
+private:
+    hid_t id_ = -1;
+    herr_t (*close_)(hid_t) = nullptr;
+};
+
+class H5File : public H5Object {
+public:
+    static H5File create(const std::string& path); // truncates
+    static H5File open(const std::string& path);   // read-only
+private:
+    using H5Object::H5Object;
+};
+
+} // namespace granrepro
