@@ -1,0 +1,234 @@
+// The harness: ranges, parameters and --set, claims, curve analysis, HDF5 round trip.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <unistd.h>
+#include <fstream>
+
+#include "analysis/curve_analysis.hpp"
+#include "core/input_error.hpp"
+#include "harness/claims.hpp"
+#include "harness/parameter_set.hpp"
+#include "io/h5_file.hpp"
+#include "io/staged_directory.hpp"
+
+using namespace granrepro;
+namespace fs = std::filesystem;
+
+namespace {
+
+fs::path temp_dir(const std::string& name) {
+    const fs::path p = fs::temp_directory_path() / ("granrepro-test-" + name + "-" + std::to_string(::getpid()));
+    fs::remove_all(p);
+    fs::create_directories(p);
+    return p;
+}
+
+fs::path write(const fs::path& p, const std::string& text) {
+    std::ofstream(p) << text;
+    return p;
+}
+
+const char* kExperiment = R"toml(
+name = "demo"
+paper = "p"
+description = "d"
+[parameters.k_N]
+value = 2000.0
+unit = "N/m"
+range = "(0, inf)"
+source = "s"
+[parameters.e_N]
+value = 0.7
+unit = "1"
+range = "(0, 1]"
+source = "s"
+[parameters.n]
+quick = 10
+paper = 100
+unit = "1"
+range = "[3, 1000]"
+source = "s"
+[parameters.vx]
+value = [0.1, 0.3]
+unit = "m/s"
+range = "(0, inf)"
+source = "s"
+[parameters.mode]
+value = "a"
+choices = ["a", "b"]
+unit = "1"
+source = "s"
+)toml";
+
+TEST(Interval, ParsesOpenAndClosedBounds) {
+    const Interval iv = Interval::parse("(0, 1]");
+    EXPECT_FALSE(iv.contains(0.0));
+    EXPECT_TRUE(iv.contains(1.0));
+    EXPECT_TRUE(iv.contains(0.5));
+    EXPECT_FALSE(iv.contains(1.0000001));
+    EXPECT_TRUE(Interval::parse("[3, inf)").contains(1e300));
+    EXPECT_FALSE(Interval::parse("[3, inf)").contains(NAN));
+    EXPECT_THROW(Interval::parse("0..1"), InputError);
+}
+
+TEST(ParameterSet, ScalesOverridesAndErrorsNameTheParameter) {
+    const fs::path dir = temp_dir("params");
+    const fs::path f = write(dir / "demo.toml", kExperiment);
+    ParameterSet quick = ParameterSet::load(f, Scale::Quick);
+    EXPECT_EQ(quick.integer("n"), 10);
+    EXPECT_EQ(ParameterSet::load(f, Scale::Paper).integer("n"), 100);
+    EXPECT_EQ(quick.all().front().name, "k_N"); // file order is kept
+    quick.set("k_N=5e3");
+    EXPECT_DOUBLE_EQ(quick.real("k_N"), 5000.0);
+    quick.set("vx=0.2,0.4,0.6");
+    EXPECT_EQ(quick.reals("vx").size(), 3u);
+    auto message = [&](const std::string& assignment) {
+        try {
+            quick.set(assignment);
+        } catch (const InputError& e) {
+            return std::string(e.what());
+        }
+        return std::string("no error");
+    };
+    EXPECT_NE(message("k_N=-1").find("k_N must be a number in (0, inf) [N/m]"), std::string::npos);
+    EXPECT_NE(message("e_N=1.5").find("(0, 1]"), std::string::npos);
+    EXPECT_NE(message("k_N=abc").find("k_N"), std::string::npos);
+    EXPECT_NE(message("n=2.5").find("an integer"), std::string::npos);
+    EXPECT_NE(message("mode=c").find("one of a, b"), std::string::npos);
+    EXPECT_NE(message("nope=1").find("unknown parameter"), std::string::npos);
+    EXPECT_NE(message("k_N").find("name=value"), std::string::npos);
+    EXPECT_DOUBLE_EQ(quick.real("k_N"), 5000.0); // failed overrides change nothing
+    fs::remove_all(dir);
+}
+
+TEST(ParameterSet, RejectsAFileWithoutSourcesOrWithBadDefaults) {
+    const fs::path dir = temp_dir("badparams");
+    const fs::path f = write(dir / "x.toml", "[parameters.a]\nvalue = 1.0\nunit = \"m\"\n");
+    EXPECT_THROW(ParameterSet::load(f, Scale::Quick), InputError);
+    const fs::path g = write(dir / "y.toml", "[parameters.a]\nvalue = -1.0\nunit = \"m\"\nsource = \"s\"\nrange = \"(0, 1)\"\n");
+    EXPECT_THROW(ParameterSet::load(g, Scale::Quick), InputError);
+    const fs::path h = write(dir / "z.toml", "[parameters.a\nvalue = ");
+    EXPECT_THROW(ParameterSet::load(h, Scale::Quick), InputError);
+    fs::remove_all(dir);
+}
+
+TEST(Claims, VerdictsForValueRangeAndKnownDeviation) {
+    const fs::path dir = temp_dir("claims");
+    const fs::path f = write(dir / "e.toml", R"toml(
+experiment = "e"
+[[claim]]
+id = "a"
+statement = "s"
+source = "s"
+measured = "x"
+paper = 1.0
+rel_tol = 0.1
+tolerance_reason = "r"
+[[claim]]
+id = "b"
+statement = "s"
+source = "s"
+measured = "y"
+min = 0.0
+max = 1.0
+tolerance_reason = "r"
+[[claim]]
+id = "c"
+statement = "s"
+source = "s"
+measured = "y"
+paper = 5.0
+abs_tol = 0.1
+known_deviation = "because"
+[[claim]]
+id = "d"
+statement = "s"
+source = "s"
+measured = "missing"
+min = 0.0
+tolerance_reason = "r"
+scales = ["paper"]
+)toml");
+    const auto claims = load_claims(f, "e");
+    ASSERT_EQ(claims.size(), 4u);
+    nlohmann::json s = {{"x", 1.05}, {"y", 2.0}};
+    auto r = evaluate_claims(claims, s, Scale::Quick);
+    EXPECT_EQ(r[0].verdict, Verdict::Pass);
+    EXPECT_EQ(r[1].verdict, Verdict::Fail);
+    EXPECT_EQ(r[2].verdict, Verdict::KnownDeviation);
+    EXPECT_EQ(r[3].verdict, Verdict::Skipped);
+    EXPECT_FALSE(all_pass(r));
+    s["x"] = 1.2;
+    s["y"] = 0.5;
+    r = evaluate_claims(claims, s, Scale::Paper);
+    EXPECT_EQ(r[0].verdict, Verdict::Fail);
+    EXPECT_EQ(r[1].verdict, Verdict::Pass);
+    EXPECT_EQ(r[3].verdict, Verdict::Fail); // a missing measurement fails
+    EXPECT_THROW(load_claims(f, "other"), InputError);
+    EXPECT_THROW(load_claims(dir / "absent.toml", "e"), InputError);
+    const fs::path bad = write(dir / "bad.toml", "experiment = \"e\"\n[[claim]]\nid = \"a\"\n");
+    EXPECT_THROW(load_claims(bad, "e"), InputError);
+    fs::remove_all(dir);
+}
+
+TEST(CurveAnalysis, RecoversPowerLawAndPeak) {
+    const auto x = log_space(0.1, 100.0, 61);
+    std::vector<double> y(x.size()), bump(x.size());
+    for (std::size_t i = 0; i < x.size(); ++i) {
+        y[i] = 3.0 * std::pow(x[i], -1.3);
+        bump[i] = x[i] / (1.0 + x[i] * x[i] / 4.0); // maximum at x = 2
+    }
+    const auto fit = fit_power_law(x, y, 1.0, 100.0);
+    EXPECT_NEAR(fit.exponent, -1.3, 1e-10);
+    const Peak p = first_maximum(x, bump);
+    EXPECT_NEAR(p.x, 2.0, 0.02);
+    EXPECT_EQ(count_maxima(x, bump), 1);
+    EXPECT_EQ(count_maxima(x, y), 0); // monotone: no interior maximum
+    std::vector<double> two = bump;
+    for (std::size_t i = 40; i < x.size(); ++i) two[i] += 2.0 * x[i] / (1.0 + std::pow(x[i] / 40.0, 2)) / 40.0;
+    EXPECT_EQ(count_maxima(x, two), 2);
+    // The crossing is interpolated linearly in log x, so y = ln x is located exactly.
+    std::vector<double> lnx(x.size());
+    for (std::size_t i = 0; i < x.size(); ++i) lnx[i] = std::log(x[i]);
+    EXPECT_NEAR(first_upward_crossing(x, lnx, std::log(5.0)), 5.0, 1e-9);
+    EXPECT_TRUE(std::isnan(first_upward_crossing(x, lnx, 1e3)));
+}
+
+TEST(H5File, RoundTripsDatasetsAndAttributes) {
+    const fs::path dir = temp_dir("h5");
+    {
+        H5File f = H5File::create((dir / "a.h5").string());
+        f.attr("name", std::string("brake-failure"));
+        f.attr("x", 2.5);
+        const H5Object g = f.group("tables");
+        g.dataset("v", {1.0, 2.0, 3.5}, "m/s");
+        f.bytes("raw", {1, 2, 3});
+    }
+    const H5File f = H5File::open((dir / "a.h5").string());
+    EXPECT_EQ(f.read_string_attr("name"), "brake-failure");
+    EXPECT_DOUBLE_EQ(f.read_double_attr("x"), 2.5);
+    EXPECT_EQ(f.read_dataset("tables/v"), (std::vector<double>{1.0, 2.0, 3.5}));
+    EXPECT_EQ(f.read_bytes("raw"), (std::vector<unsigned char>{1, 2, 3}));
+    fs::remove_all(dir);
+}
+
+TEST(StagedDirectory, LeavesNothingBehindUnlessCommitted) {
+    const fs::path dir = temp_dir("stage");
+    {
+        StagedDirectory s(dir / "exp");
+        write(s.path() / "data.txt", "x");
+    }
+    EXPECT_FALSE(fs::exists(dir / "exp"));
+    EXPECT_TRUE(fs::is_empty(dir));
+    {
+        StagedDirectory s(dir / "exp");
+        write(s.path() / "data.txt", "y");
+        s.commit();
+    }
+    EXPECT_TRUE(fs::exists(dir / "exp" / "data.txt"));
+    fs::remove_all(dir);
+}
+
+} // namespace
