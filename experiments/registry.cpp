@@ -8,12 +8,14 @@ namespace granrepro {
 namespace experiments {
 Experiment brake_failure();
 Experiment emergency_brake();
+Experiment bistable_pipe();
 } // namespace experiments
 
 const std::vector<Experiment>& experiment_registry() {
     static const std::vector<Experiment> table = {
         experiments::brake_failure(),
         experiments::emergency_brake(),
+        experiments::bistable_pipe(),
     };
     return table;
 }

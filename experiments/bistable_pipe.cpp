@@ -1,0 +1,372 @@
+// bistable-pipe: Schäfer & Wolf (1995) Fig. 6. Grains fall through a vertical 2D pipe between two
+// rows of fixed wall grains; the steady-state mean velocity is recorded against e_N for three
+// k_N, from a slow start and from a fast start. A steady state is detected from the data (the
+// drift of the mean velocity over a trailing window), never assumed; a run that does not reach
+// one by t_max is reported as such. In steady states the braking balance of Eq. (9),
+// g = ṅ Δv_y, is measured, and Δv_y is compared with the impact curve of Fig. 4 evaluated at the
+// pipe's own wall geometry and measured impact velocities.
+#include <cmath>
+#include <gsl/gsl_fit.h>
+#include <numeric>
+#include <string>
+
+#include "core/rng_stream.hpp"
+#include "engines/soft/pipe_engine.hpp"
+#include "experiments/impact_shot.hpp"
+#include "harness/experiment.hpp"
+#include "harness/parallel_sweep.hpp"
+#include "harness/sweep_checkpoint.hpp"
+#include "models/coulomb_shear.hpp"
+#include "models/linear_spring_dashpot.hpp"
+
+namespace granrepro::experiments {
+
+namespace {
+
+using Engine = PipeEngine<LinearSpringDashpot, CoulombShear>;
+
+struct PipeSpec {
+    PipeGeometry geo;
+    double d_mean, polydispersity, m_mean, phi, mu;
+    double k_N, e_N;
+    double v0, agitation; // start: mean downward speed and rms of the random velocities [m/s]
+    double steps_per_contact, skin;
+    double t_max, window, drift_tol, t_average, sample_dt, v_abort;
+    std::uint64_t seed, stream;
+};
+
+struct RunResult {
+    bool steady = false;
+    double t_steady = NAN, v_mean = NAN, v_std = NAN, v_final = NAN, sigma_vx = NAN;
+    double ndot = NAN, dvy = NAN, vx_in = NAN, vy_in = NAN, dt = NAN;
+    long grains = 0;
+    std::vector<double> t, v, sx;
+
+    nlohmann::json to_json() const {
+        return {{"steady", steady}, {"t_steady", t_steady}, {"v_mean", v_mean}, {"v_std", v_std},
+                {"v_final", v_final}, {"sigma_vx", sigma_vx}, {"ndot", ndot}, {"dvy", dvy},
+                {"vx_in", vx_in}, {"vy_in", vy_in}, {"dt", dt}, {"grains", grains},
+                {"t", t}, {"v", v}, {"sx", sx}};
+    }
+    static RunResult from_json(const nlohmann::json& j) {
+        RunResult r;
+        auto num = [&](const char* k) { return j.at(k).is_null() ? NAN : j.at(k).get<double>(); };
+        r.steady = j.at("steady");
+        r.t_steady = num("t_steady"); r.v_mean = num("v_mean"); r.v_std = num("v_std");
+        r.v_final = num("v_final"); r.sigma_vx = num("sigma_vx"); r.ndot = num("ndot");
+        r.dvy = num("dvy"); r.vx_in = num("vx_in"); r.vy_in = num("vy_in"); r.dt = num("dt");
+        r.grains = j.at("grains");
+        r.t = j.at("t").get<std::vector<double>>();
+        r.v = j.at("v").get<std::vector<double>>();
+        r.sx = j.at("sx").get<std::vector<double>>();
+        return r;
+    }
+};
+
+// Free-wall restitution e_N defines gamma_N, as for Figs. 3-5 (e_N = 0.70 <=> gamma_N = 1e4 1/s
+// at k_N = 2000 N/m and m = 1 mg).
+LinearSpringDashpot law_for(double k_N, double e_N, double m_mean) {
+    return LinearSpringDashpot::from_restitution(k_N, e_N, m_mean);
+}
+
+// Triangular lattice between the wall crests, N sites chosen at random; diameters uniform in
+// d_mean (1 ± polydispersity), masses ∝ d^2 (uniform areal density) with m(d_mean) = m_mean.
+Engine build(const PipeSpec& s) {
+    const LinearSpringDashpot law = law_for(s.k_N, s.e_N, s.m_mean);
+    const double d_min = s.d_mean * (1 - s.polydispersity), d_max = s.d_mean * (1 + s.polydispersity);
+    const double m_min = s.m_mean * (d_min / s.d_mean) * (d_min / s.d_mean);
+    const double dt = law.collision_time(0.5 * m_min) / s.steps_per_contact; // stiffest pair, Eq. (5)
+    Engine eng(law, CoulombShear{s.mu}, s.geo, dt, s.skin);
+    RngStream rng(s.seed, s.stream);
+    // Area fraction relative to the channel between the wall crests, (width - d_wall) x length.
+    const double area = (s.geo.width - 2 * s.geo.wall_radius) * s.geo.length;
+    const double mean_d2 = s.d_mean * s.d_mean * (1 + s.polydispersity * s.polydispersity / 3);
+    const long n = std::lround(s.phi * area / (M_PI / 4 * mean_d2));
+    const double x_lo = s.geo.wall_radius + 0.5 * d_max + 1e-6, x_hi = s.geo.width - x_lo;
+    std::vector<std::pair<double, double>> sites;
+    for (double a = std::sqrt(area / double(n) / (std::sqrt(3.0) / 2)); a >= d_max; a *= 0.995) {
+        sites.clear();
+        const int rows = int(s.geo.length / (a * std::sqrt(3.0) / 2));
+        const double row_h = s.geo.length / rows;
+        for (int r = 0; r < rows; ++r)
+            for (double x = x_lo + (r % 2) * 0.5 * a; x <= x_hi; x += a) sites.push_back({x, r * row_h});
+        if (long(sites.size()) >= n) break;
+    }
+    if (long(sites.size()) < n) throw std::runtime_error("area fraction too high for a lattice start");
+    for (std::size_t i = sites.size() - 1; i > 0; --i) std::swap(sites[i], sites[rng.index(i + 1)]);
+    sites.resize(std::size_t(n));
+    std::vector<double> vx(static_cast<std::size_t>(n)), vy(static_cast<std::size_t>(n));
+    for (long i = 0; i < n; ++i) {
+        vx[std::size_t(i)] = s.agitation * rng.normal();
+        vy[std::size_t(i)] = s.agitation * rng.normal();
+    }
+    const double mx = std::accumulate(vx.begin(), vx.end(), 0.0) / double(n);
+    const double my = std::accumulate(vy.begin(), vy.end(), 0.0) / double(n);
+    for (long i = 0; i < n; ++i) {
+        const double d = s.d_mean * (1 + s.polydispersity * rng.uniform(-1, 1));
+        eng.add_grain(sites[std::size_t(i)].first, sites[std::size_t(i)].second, vx[std::size_t(i)] - mx,
+                      vy[std::size_t(i)] - my - s.v0, 0.5 * d, s.m_mean * (d / s.d_mean) * (d / s.d_mean));
+    }
+    eng.finalize();
+    return eng;
+}
+
+double slope(const std::vector<double>& t, const std::vector<double>& v, std::size_t from) {
+    double c0, c1, c00, c01, c11, ss;
+    gsl_fit_linear(t.data() + from, 1, v.data() + from, 1, t.size() - from, &c0, &c1, &c00, &c01, &c11, &ss);
+    return c1;
+}
+
+// Runs one start to steady state (or t_max). Steady: over the trailing window the fitted slope of
+// the mean velocity is below drift_tol [m/s^2], i.e. braking balances gravity to that accuracy.
+RunResult run_pipe(const PipeSpec& s) {
+    Engine eng = build(s);
+    RunResult r;
+    r.dt = eng.dt();
+    r.grains = long(eng.size());
+    const std::size_t n = eng.size();
+    const long per_window = std::lround(s.window / s.sample_dt);
+    double steady_since = NAN;
+    double next = 0;
+    while (eng.time() < s.t_max) {
+        eng.step();
+        if (eng.time() + 0.5 * eng.dt() < next) continue;
+        next += s.sample_dt;
+        double v = 0, sx = 0;
+        for (std::size_t i = 0; i < n; ++i) {
+            v += eng.vy()[i];
+            sx += eng.vx()[i] * eng.vx()[i];
+        }
+        r.t.push_back(eng.time());
+        r.v.push_back(v / double(n));
+        r.sx.push_back(std::sqrt(sx / double(n)));
+        if (std::abs(r.v.back()) > s.v_abort) break; // far beyond the paper's range: free fall
+        if (std::isnan(steady_since) && long(r.t.size()) > per_window) {
+            if (std::abs(slope(r.t, r.v, r.t.size() - std::size_t(per_window))) < s.drift_tol) {
+                steady_since = eng.time();
+                eng.reset_wall_stats(); // Eq. (9) is measured over the averaging window only
+            }
+        }
+        if (!std::isnan(steady_since) && eng.time() >= steady_since + s.t_average) break;
+    }
+    r.v_final = r.v.back();
+    if (!std::isnan(steady_since) && eng.time() >= steady_since + s.t_average - 1e-12) {
+        r.steady = true;
+        r.t_steady = steady_since;
+        double sum = 0, sum2 = 0, sxs = 0;
+        long k = 0;
+        for (std::size_t i = 0; i < r.t.size(); ++i)
+            if (r.t[i] > steady_since) {
+                sum += r.v[i];
+                sum2 += r.v[i] * r.v[i];
+                sxs += r.sx[i];
+                ++k;
+            }
+        r.v_mean = sum / double(k);
+        r.v_std = std::sqrt(std::max(0.0, sum2 / double(k) - r.v_mean * r.v_mean));
+        r.sigma_vx = sxs / double(k);
+        const WallImpactStats& w = eng.wall_stats();
+        r.ndot = double(w.impacts) / (w.time * double(n));
+        if (w.completed > 0) {
+            r.dvy = w.sum_dvy / double(w.completed);
+            r.vx_in = w.sum_vx_in / double(w.completed);
+            r.vy_in = w.sum_vy_in / double(w.completed);
+        }
+    }
+    return r;
+}
+
+PipeSpec base_spec(const ParameterSet& p, const RunContext* ctx) {
+    PipeSpec s{};
+    s.geo.width = p.real("width");
+    s.geo.wall_radius = 0.5 * p.real("d_wall");
+    s.geo.wall_spacing = p.real("wall_spacing");
+    s.geo.length = std::round(p.real("length") / s.geo.wall_spacing) * s.geo.wall_spacing;
+    s.geo.gravity = p.real("g");
+    s.d_mean = p.real("d_mean");
+    s.polydispersity = p.real("polydispersity");
+    s.m_mean = p.real("m_mean");
+    s.phi = p.real("phi");
+    s.mu = p.real("mu");
+    s.steps_per_contact = p.real("steps_per_contact");
+    s.skin = p.real("skin");
+    s.t_max = p.real("t_max");
+    s.window = p.real("window");
+    s.drift_tol = p.real("drift_tol");
+    s.t_average = p.real("t_average");
+    s.sample_dt = p.real("sample_dt");
+    s.v_abort = p.real("v_abort");
+    s.seed = ctx ? ctx->seed : 1;
+    return s;
+}
+
+void validate(const ParameterSet& p) {
+    for (double e : p.reals("eN_list"))
+        if (!(e > 0 && e <= 1)) p.reject("eN_list", "each e_N must be in (0, 1]");
+    if (p.real("window") + p.real("t_average") > p.real("t_max"))
+        p.reject("t_max", "must exceed window + t_average so that a steady state can be detected and averaged");
+    const double range = p.real("d_mean") * (1 + p.real("polydispersity")) + p.real("skin");
+    if (p.real("length") < 4 * range) p.reject("length", "must be at least 4 interaction ranges");
+    if (p.real("length_check") > 0 && p.real("length_check") < 4 * range)
+        p.reject("length_check", "must be 0 (off) or at least 4 interaction ranges");
+    if (p.real("wall_spacing") < p.real("d_wall") * (1 - 1e-12))
+        p.reject("wall_spacing", "wall grains would overlap; must be at least d_wall");
+    if (p.real("width") < 10 * p.real("d_mean")) p.reject("width", "must be at least 10 grain diameters");
+    for (double k : p.reals("kN_list")) (void)law_for(k, p.reals("eN_list").front(), p.real("m_mean"));
+}
+
+std::string tag(double k, double e, const char* start) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "k%g_e%g_%s", k, e, start);
+    return buf;
+}
+
+Result run(const RunContext& ctx) {
+    const ParameterSet& p = ctx.params;
+    const auto& ks = p.reals("kN_list");
+    const auto& es = p.reals("eN_list");
+    struct Task {
+        double k, e;
+        bool fast;
+        double length;
+    };
+    std::vector<Task> tasks;
+    for (double k : ks)
+        for (double e : es)
+            for (bool fast : {false, true}) tasks.push_back({k, e, fast, p.real("length")});
+    // The length check: the first k_N at its largest e_N, slow start, at a second pipe length.
+    const bool length_check = p.real("length_check") > 0;
+    if (length_check) tasks.push_back({ks.size() > 1 ? ks[1] : ks[0], es.back(), false, p.real("length_check")});
+
+    std::vector<RunResult> results(tasks.size());
+    SweepCheckpoint checkpoint(ctx);
+    Progress progress("bistable-pipe", long(tasks.size()), ctx.quiet);
+    parallel_sweep(long(tasks.size()), ctx.threads, &progress, [&](long i) {
+        if (auto saved = checkpoint.load(i)) {
+            results[std::size_t(i)] = RunResult::from_json(*saved);
+            return;
+        }
+        const Task& t = tasks[std::size_t(i)];
+        PipeSpec s = base_spec(p, &ctx);
+        s.k_N = t.k;
+        s.e_N = t.e;
+        s.geo.length = std::round(t.length / s.geo.wall_spacing) * s.geo.wall_spacing;
+        s.v0 = t.fast ? p.real("fast_v0") : p.real("slow_v0");
+        s.agitation = p.real("agitation");
+        s.stream = std::uint64_t(i);
+        results[std::size_t(i)] = run_pipe(s);
+        checkpoint.save(i, results[std::size_t(i)].to_json());
+    });
+
+    Result r;
+    r.scalar("resumed_points", double(checkpoint.resumed()), "1", "sweep points loaded from a checkpoint");
+    const double m = p.real("m_mean");
+    // The paper's t_col at k_N = 200000 N/m refers to e_N = 0.70 (gamma scaled with sqrt(k_N)).
+    r.scalar("t_col_k200000_e0.70", law_for(200000.0, 0.70, m).collision_time(m), "s",
+             "free-wall contact duration at k_N = 2e5 N/m, e_N = 0.70 (Eq. 4)");
+
+    const PipeSpec base = base_spec(p, &ctx);
+    double worst_balance = 0;
+    int steady_count = 0;
+    for (std::size_t ki = 0; ki < ks.size(); ++ki) {
+        char kt[32];
+        std::snprintf(kt, sizeof kt, "k%g", ks[ki]);
+        Table& t = r.table(std::string("steady_") + kt, "steady-state mean velocity against e_N (NaN: no steady state)");
+        std::vector<double> e_col, slow_v, fast_v, slow_final, fast_final, slow_t, fast_t, slow_bal, fast_bal,
+            slow_link, fast_link;
+        double e_lowest_slow = NAN;
+        int fast_steady = 0;
+        for (std::size_t ei = 0; ei < es.size(); ++ei) {
+            const RunResult& slow = results[(ki * es.size() + ei) * 2];
+            const RunResult& fast = results[(ki * es.size() + ei) * 2 + 1];
+            e_col.push_back(es[ei]);
+            slow_v.push_back(slow.steady ? -slow.v_mean : NAN);
+            fast_v.push_back(fast.steady ? -fast.v_mean : NAN);
+            slow_final.push_back(-slow.v_final);
+            fast_final.push_back(-fast.v_final);
+            slow_t.push_back(slow.t_steady);
+            fast_t.push_back(fast.t_steady);
+            for (const RunResult* rr : {&slow, &fast}) {
+                const double bal = rr->steady ? rr->ndot * rr->dvy / base.geo.gravity : NAN;
+                // Δv_y of an impact on the same wall row at the measured impact velocities (Fig. 4).
+                double link = NAN;
+                if (rr->steady && rr->vy_in > 0 && rr->vx_in > 0) {
+                    ImpactSetup is;
+                    is.d_free = base.d_mean;
+                    is.m_free = base.m_mean;
+                    is.d_wall = 2 * base.geo.wall_radius;
+                    is.wall_spacing = base.geo.wall_spacing;
+                    is.x0 = 0.5 * (is.d_free + is.d_wall);
+                    is.vx_toward = rr->vx_in;
+                    is.vy = rr->vy_in;
+                    const LinearSpringDashpot law = law_for(ks[ki], es[ei], m);
+                    is.dt = law.collision_time(m) / base.steps_per_contact;
+                    double sum = 0;
+                    const int npos = 10;
+                    for (int k = 0; k < npos; ++k) {
+                        is.y0 = is.wall_spacing * k / npos;
+                        sum += shoot(law, CoulombShear{base.mu}, is).dvy;
+                    }
+                    link = (sum / npos) / rr->dvy;
+                }
+                (rr == &slow ? slow_bal : fast_bal).push_back(bal);
+                (rr == &slow ? slow_link : fast_link).push_back(link);
+                if (rr->steady) {
+                    ++steady_count;
+                    worst_balance = std::max(worst_balance, std::abs(bal - 1));
+                }
+            }
+            if (slow.steady) e_lowest_slow = std::isnan(e_lowest_slow) ? es[ei] : std::min(e_lowest_slow, es[ei]);
+            fast_steady += fast.steady;
+        }
+        t.add("e_N", "1").values = e_col;
+        t.add("v_slow", "m/s").values = slow_v;
+        t.add("v_fast", "m/s").values = fast_v;
+        t.add("v_slow_final", "m/s").values = slow_final;
+        t.add("v_fast_final", "m/s").values = fast_final;
+        t.add("t_steady_slow", "s").values = slow_t;
+        t.add("t_steady_fast", "s").values = fast_t;
+        t.add("eq9_balance_slow", "1").values = slow_bal;
+        t.add("eq9_balance_fast", "1").values = fast_bal;
+        t.add("impact_link_slow", "1").values = slow_link;
+        t.add("impact_link_fast", "1").values = fast_link;
+        r.scalar(std::string("slow_branch_lowest_eN_") + kt, e_lowest_slow, "1",
+                 "smallest e_N whose slow start reached a steady state");
+        r.scalar(std::string("fast_branch_fraction_") + kt, double(fast_steady) / double(es.size()), "1",
+                 "fraction of e_N values whose fast start reached a steady state");
+        const RunResult& top_slow = results[(ki * es.size() + es.size() - 1) * 2];
+        const RunResult& top_fast = results[(ki * es.size() + es.size() - 1) * 2 + 1];
+        r.scalar(std::string("v_slow_top_") + kt, top_slow.steady ? -top_slow.v_mean : NAN, "m/s",
+                 "steady speed of the slow start at the largest e_N");
+        r.scalar(std::string("v_fast_top_") + kt, top_fast.steady ? -top_fast.v_mean : NAN, "m/s",
+                 "steady speed of the fast start at the largest e_N");
+    }
+    r.scalar("steady_runs", steady_count, "1", "runs that reached a steady state");
+    r.scalar("eq9_worst_deviation", steady_count ? worst_balance : NAN, "1",
+             "largest |ṅ Δv_y / g - 1| over steady runs (Eq. 9)");
+    if (length_check) {
+        const RunResult& a = results[((ks.size() > 1 ? 1 : 0) * es.size() + es.size() - 1) * 2];
+        const RunResult& b = results.back();
+        r.scalar("length_check_ratio", (a.steady && b.steady) ? b.v_mean / a.v_mean : NAN, "1",
+                 "steady speed at length_check over that at length (same k_N, e_N, slow start)");
+    }
+    for (std::size_t i = 0; i < tasks.size(); ++i) {
+        const Task& tk = tasks[i];
+        std::string name = "series_" + tag(tk.k, tk.e, tk.fast ? "fast" : "slow");
+        if (length_check && i + 1 == tasks.size()) name += "_length_check";
+        Table& ts = r.table(name, "mean velocity and rms v_x against time");
+        ts.add("t", "s").values = results[i].t;
+        std::vector<double> speed(results[i].v.size());
+        for (std::size_t j = 0; j < speed.size(); ++j) speed[j] = -results[i].v[j];
+        ts.add("v_down", "m/s").values = speed;
+        ts.add("sigma_vx", "m/s").values = results[i].sx;
+    }
+    r.scalar("grains", double(results.front().grains), "1", "free grains in the pipe (first run)");
+    return r;
+}
+
+} // namespace
+
+Experiment bistable_pipe() { return {"bistable-pipe", &validate, &run}; }
+
+} // namespace granrepro::experiments
