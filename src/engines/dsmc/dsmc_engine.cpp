@@ -97,7 +97,7 @@ void DsmcEngine::move_and_sort(double dt) {
     std::fill(start_.begin(), start_.end(), 0u);
     for (std::size_t i = 0; i < n; ++i) {
         Vec2& p = pos_[i];
-        p = {wrap(p.x + vel_[i].x * dt, cfg_.lx), wrap(p.y + vel_[i].y * dt, cfg_.ly)};
+        p = {wrap_near(p.x + vel_[i].x * dt, cfg_.lx), wrap_near(p.y + vel_[i].y * dt, cfg_.ly)};
         const auto ix = std::min(static_cast<std::size_t>(p.x * inv_wx_), nx_ - 1);
         const auto iy = std::min(static_cast<std::size_t>(p.y * inv_wy_), ny_ - 1);
         const auto c = static_cast<std::uint32_t>(iy * nx_ + ix);

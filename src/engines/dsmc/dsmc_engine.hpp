@@ -125,6 +125,14 @@ private:
         return x >= l ? x - l : x; // tiny negative x: x + l may round to l
     }
 
+    // A flight of one step is shorter than a cell (tau rule), so one subtraction almost always
+    // suffices; the division in wrap() is the fallback, not the rule.
+    static double wrap_near(double x, double l) {
+        if (x >= l) x -= l;
+        else if (x < 0.0) x += l;
+        return (x >= 0.0 && x < l) ? x : wrap(x, l);
+    }
+
     template <class Obs>
     void collide_cell(std::size_t begin, std::size_t count, double dt, Obs& obs);
 
