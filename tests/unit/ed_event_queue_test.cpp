@@ -47,7 +47,7 @@ TYPED_TEST(EdEventQueue, AllInfiniteAndRebuild) {
     q.update(2, 5.0);
     q.update(1, 5.0);
     EXPECT_EQ(q.top_id(), 1);
-    q.rebuild({3.0, 1.0, 2.0});
+    q.rebuild(std::vector<double>{3.0, 1.0, 2.0});
     EXPECT_EQ(q.top_id(), 1);
     EXPECT_EQ(q.top_time(), 1.0);
 }

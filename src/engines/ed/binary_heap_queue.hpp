@@ -8,6 +8,8 @@
 #include <utility>
 #include <vector>
 
+#include "engines/ed/huge_page_allocator.hpp"
+
 namespace granrepro {
 
 class BinaryHeapQueue {
@@ -25,7 +27,8 @@ public:
         }
     }
     // Replace all keys at once (O(N) heapify); times[i] belongs to id i.
-    void rebuild(const std::vector<double>& times) {
+    template <class Vec>
+    void rebuild(const Vec& times) {
         reset(times.size());
         for (std::size_t k = 0; k < times.size(); ++k) heap_[k].t = times[k];
         for (std::size_t k = heap_.size() / 2; k-- > 0;) sift_down(k);
@@ -84,8 +87,8 @@ private:
         place(k, nd);
     }
 
-    std::vector<Node> heap_;
-    std::vector<std::int32_t> pos_;
+    HugeVector<Node> heap_;
+    HugeVector<std::int32_t> pos_;
 };
 
 } // namespace granrepro

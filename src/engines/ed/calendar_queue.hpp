@@ -5,10 +5,13 @@
 // re-estimated from the spread of pending times every few N updates.
 // Same interface and the same total order on (time, id) as BinaryHeapQueue.
 #pragma once
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <limits>
 #include <vector>
+
+#include "engines/ed/huge_page_allocator.hpp"
 
 namespace granrepro {
 
@@ -17,9 +20,10 @@ public:
     CalendarQueue() = default;
     explicit CalendarQueue(std::size_t n) { reset(n); }
 
-    void reset(std::size_t n) { rebuild(std::vector<double>(n, kInf)); }
-    void rebuild(const std::vector<double>& times) {
-        t_ = times;
+    void reset(std::size_t n) { rebuild(HugeVector<double>(n, kInf)); }
+    template <class Vec>
+    void rebuild(const Vec& times) {
+        t_.assign(times.begin(), times.end());
         const std::size_t n = t_.size();
         next_.assign(n, -1);
         prev_.assign(n, -1);
@@ -34,6 +38,7 @@ public:
         for (std::size_t i = 0; i < n; ++i) insert(static_cast<std::int32_t>(i));
         cache_ = -1;
         updates_ = 0;
+        check_at_ = 64;
     }
 
     std::size_t size() const { return t_.size(); }
@@ -53,7 +58,7 @@ public:
                 cache_ = id;
             }
         }
-        if (++updates_ > 8 * t_.size() + 64) maybe_resize();
+        if (++updates_ >= check_at_) maybe_resize();
     }
 
     std::size_t memory_bytes() const {
@@ -116,37 +121,47 @@ private:
         const std::int64_t vb = vbucket(t_[best]);
         cur_vb_ = vb == -1 ? std::numeric_limits<std::int64_t>::max() : vb;
     }
-    // Width ~ 2 x mean spacing of the pending (finite) times above their minimum.
-    void choose_width() {
-        double tmin = kInf, sum = 0.0;
+    // Width ~ 4 x (median of pending times above their minimum) / count: about three entries
+    // per bucket near the front, where the searches happen. A median, unlike a mean, is not
+    // dragged up by the few particles that have nothing to do for a long time.
+    double estimate_width() const {
+        double tmin = kInf;
         std::size_t cnt = 0;
-        for (double t : t_) if (t < kInf) { tmin = std::min(tmin, t); }
-        for (double t : t_) if (t < kInf) { sum += t - tmin; ++cnt; }
-        double w = cnt > 1 ? 2.0 * (2.0 * sum / static_cast<double>(cnt)) / static_cast<double>(cnt) : 1.0;
-        if (!(w > 0.0) || !std::isfinite(w)) w = 1.0;
-        width_ = w;
-        inv_w_ = 1.0 / w;
+        for (double t : t_) if (t < kInf) { tmin = std::min(tmin, t); ++cnt; }
+        if (cnt < 2) return 1.0;
+        HugeVector<double> sample;
+        const std::size_t stride = std::max<std::size_t>(1, t_.size() / 2048);
+        for (std::size_t i = 0; i < t_.size(); i += stride) if (t_[i] < kInf) sample.push_back(t_[i] - tmin);
+        if (sample.empty()) return 1.0;
+        auto mid = sample.begin() + static_cast<std::ptrdiff_t>(sample.size() / 2);
+        std::nth_element(sample.begin(), mid, sample.end());
+        const double w = 4.0 * *mid / static_cast<double>(cnt);
+        return (w > 0.0 && std::isfinite(w)) ? w : 1.0;
     }
+    void choose_width() {
+        width_ = estimate_width();
+        inv_w_ = 1.0 / width_;
+    }
+    // Checked after 64, 128, ... updates (then every 8N): a width chosen while the keys were
+    // still all infinite is corrected long before it costs O(N) per search.
     void maybe_resize() {
         updates_ = 0;
-        const double old = width_;
-        const std::vector<double> keep = t_;
-        double tmin = kInf, sum = 0.0;
-        std::size_t cnt = 0;
-        for (double t : keep) if (t < kInf) tmin = std::min(tmin, t);
-        for (double t : keep) if (t < kInf) { sum += t - tmin; ++cnt; }
-        if (cnt < 2) return;
-        const double w = 4.0 * sum / (static_cast<double>(cnt) * static_cast<double>(cnt));
-        if (w > 0.0 && (w > 2.0 * old || w < 0.5 * old)) rebuild(keep);
+        const double w = estimate_width();
+        if (w > 2.0 * width_ || w < 0.5 * width_) {
+            rebuild(HugeVector<double>(t_));
+            return;
+        }
+        check_at_ = std::min(2 * check_at_, 8 * t_.size() + 64);
     }
 
-    std::vector<double> t_;
-    std::vector<std::int32_t> next_, prev_, bucket_, head_;
+    HugeVector<double> t_;
+    HugeVector<std::int32_t> next_, prev_, bucket_, head_;
     std::size_t nb_ = 1, mask_ = 0;
     double width_ = 1.0, inv_w_ = 1.0;
     std::int64_t cur_vb_ = std::numeric_limits<std::int64_t>::max();
     std::int32_t cache_ = -1;
     std::size_t updates_ = 0;
+    std::size_t check_at_ = 64;
 };
 
 } // namespace granrepro

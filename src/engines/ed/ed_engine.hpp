@@ -35,6 +35,7 @@
 #include "engines/ed/ed_kinetic_energy.hpp"
 #include "engines/ed/ed_state.hpp"
 #include "engines/ed/flight_roots.hpp"
+#include "engines/ed/huge_page_allocator.hpp"
 #include "models/rough_disk_collision.hpp"
 
 #include <algorithm>
@@ -72,31 +73,27 @@ public:
             throw InputError("ED: position, velocity, radius, mass and spin arrays differ in size");
         cfg_ = cfg;
         t_now_ = t0;
-        x_.resize(n); y_.resize(n); vx_.resize(n); vy_.resize(n); w_.resize(n);
-        tau_.assign(n, t0);
-        rad_ = radius;
-        m_ = mass;
+        p_.assign(n, Hot{});
+        w_.resize(n);
+        m_.assign(mass.begin(), mass.end());
         last_t_.assign(n, -kInf);
         burst_t0_.assign(n, -kInf);
         ev_t_.assign(n, kInf);
         col_t_.assign(n, kInf);
-        count_.assign(n, 0);
         pcount_.assign(n, 0);
-        last_partner_.assign(n, kNoPartner);
         partner_.assign(n, -1);
         kind_.assign(n, kNone);
         arg_.assign(n, 0);
         burst_n_.assign(n, 0);
         for (std::size_t i = 0; i < n; ++i) {
             if (!(radius[i] > 0.0) || !(mass[i] > 0.0)) throw InputError("ED: radius and mass must be > 0");
-            x_[i] = pos[i].x; y_[i] = pos[i].y;
-            vx_[i] = vel[i].x; vy_[i] = vel[i].y;
+            p_[i] = Hot{pos[i].x, pos[i].y, vel[i].x, vel[i].y, t0, radius[i], 0, kNoPartner, -1};
             w_[i] = spin.empty() ? 0.0 : spin[i];
         }
         setup_geometry();
         for (std::size_t i = 0; i < n; ++i) {
-            if (cfg_.periodic_x) x_[i] = wrap(x_[i], cfg_.lx);
-            if (cfg_.periodic_y) y_[i] = wrap(y_[i], cfg_.ly);
+            if (cfg_.periodic_x) p_[i].x = wrap(p_[i].x, cfg_.lx);
+            if (cfg_.periodic_y) p_[i].y = wrap(p_[i].y, cfg_.ly);
         }
         build_cells();
         if (current_max_overlap() > 1e-9 * 2.0 * max_rad_)
@@ -139,11 +136,10 @@ public:
             throw InputError("ED: set_velocities size mismatch");
         synchronize();
         for (std::size_t i = 0; i < size(); ++i) {
-            vx_[i] = vel[i].x; vy_[i] = vel[i].y;
             if (!spin.empty()) w_[i] = spin[i];
         }
         // The "last partners cannot re-collide" shortcut assumed unchanged velocities.
-        std::fill(last_partner_.begin(), last_partner_.end(), kNoPartner);
+        for (auto& h : p_) h.last_partner = kNoPartner;
         reset_predictions();
     }
     const EdConfig& config() const { return cfg_; }
@@ -154,33 +150,33 @@ public:
         for (std::size_t i = 0; i < size(); ++i) advance(static_cast<int>(i), t_now_);
     }
     double time() const { return t_now_; }
-    std::size_t size() const { return x_.size(); }
+    std::size_t size() const { return p_.size(); }
     // Values at time() without mutating the lazy state; positions wrapped into periodic boxes.
     Vec2 position(std::size_t i) const {
-        const double dt = t_now_ - tau_[i];
-        double px = x_[i] + (vx_[i] + 0.5 * gx_ * dt) * dt;
-        double py = y_[i] + (vy_[i] + 0.5 * gy_ * dt) * dt;
+        const double dt = t_now_ - p_[i].tau;
+        double px = p_[i].x + (p_[i].vx + 0.5 * gx_ * dt) * dt;
+        double py = p_[i].y + (p_[i].vy + 0.5 * gy_ * dt) * dt;
         if (cfg_.periodic_x) px = wrap(px, cfg_.lx);
         if (cfg_.periodic_y) py = wrap(py, cfg_.ly);
         return {px, py};
     }
     Vec2 velocity(std::size_t i) const {
-        const double dt = t_now_ - tau_[i];
-        return {vx_[i] + gx_ * dt, vy_[i] + gy_ * dt};
+        const double dt = t_now_ - p_[i].tau;
+        return {p_[i].vx + gx_ * dt, p_[i].vy + gy_ * dt};
     }
     double spin(std::size_t i) const { return w_[i]; }
-    double radius(std::size_t i) const { return rad_[i]; }
+    double radius(std::size_t i) const { return p_[i].rad; }
     double mass(std::size_t i) const { return m_[i]; }
-    double moment_of_inertia(std::size_t i) const { return cfg_.law.q * m_[i] * rad_[i] * rad_[i]; }
+    double moment_of_inertia(std::size_t i) const { return cfg_.law.q * m_[i] * p_[i].rad * p_[i].rad; }
     std::vector<Vec2> positions() const { return collect([this](std::size_t i) { return position(i); }); }
     std::vector<Vec2> velocities() const { return collect([this](std::size_t i) { return velocity(i); }); }
-    const std::vector<double>& spins() const { return w_; }
-    const std::vector<double>& radii() const { return rad_; }
-    const std::vector<double>& masses() const { return m_; }
+    std::vector<double> spins() const { return {w_.begin(), w_.end()}; }
+    std::vector<double> radii() const { return gather(&Hot::rad); }
+    std::vector<double> masses() const { return {m_.begin(), m_.end()}; }
     // Collisions (with particles and walls) each particle took part in.
-    const std::vector<std::uint64_t>& collision_counts() const { return count_; }
-    std::uint64_t collision_count(std::size_t i) const { return count_[i]; }
-    int last_partner(std::size_t i) const { return last_partner_[i]; }
+    std::vector<std::uint64_t> collision_counts() const { return gather(&Hot::count); }
+    std::uint64_t collision_count(std::size_t i) const { return p_[i].count; }
+    int last_partner(std::size_t i) const { return p_[i].last_partner; }
     double last_collision_time(std::size_t i) const { return last_t_[i]; }
     std::uint64_t total_collisions() const { return pair_collisions_; } // particle-particle
     std::uint64_t wall_collisions() const { return wall_collisions_; }
@@ -212,16 +208,16 @@ public:
         for (std::size_t i = 0; i < size(); ++i) {
             const Vec2 pi = raw_position(static_cast<int>(i));
             for_neighbour_cells(cell_[i], [&](int c) {
-                for (int j = head_[c]; j >= 0; j = next_[j]) {
+                for (int j = head_[c]; j >= 0; j = p_[j].next) {
                     if (j <= static_cast<int>(i)) continue;
                     const Vec2 d = min_image(pi - raw_position(j));
-                    worst = std::max(worst, rad_[i] + rad_[j] - norm(d));
+                    worst = std::max(worst, p_[i].rad + p_[j].rad - norm(d));
                 }
             });
             for (const auto& wl : cfg_.walls) {
                 if (!wl.enabled) continue;
                 const double c = wl.axis == 0 ? pi.x : pi.y;
-                worst = std::max(worst, rad_[i] - wl.side * (c - wl.position));
+                worst = std::max(worst, p_[i].rad - wl.side * (c - wl.position));
             }
         }
         return worst;
@@ -235,7 +231,7 @@ public:
             double bt = kInf;
             int bj = -1;
             for_neighbour_cells(cell_[i], [&](int c) { scan_cell(p, c, bt, bj); });
-            if (bt < best.t) best = {t_now_ + bt, static_cast<int>(i), bj};
+            if (t_now_ + bt < best.t) best = {t_now_ + bt, static_cast<int>(i), bj};
         }
         if (best.i > best.j) std::swap(best.i, best.j);
         return best;
@@ -243,9 +239,8 @@ public:
 
     std::size_t memory_bytes() const {
         auto b = [](const auto& v) { return v.capacity() * sizeof(typename std::decay_t<decltype(v)>::value_type); };
-        return b(x_) + b(y_) + b(vx_) + b(vy_) + b(w_) + b(tau_) + b(rad_) + b(m_) + b(last_t_) +
-               b(burst_t0_) + b(ev_t_) + b(col_t_) + b(count_) + b(pcount_) + b(last_partner_) +
-               b(partner_) + b(kind_) + b(arg_) + b(burst_n_) + b(cell_) + b(next_) + b(prev_) +
+        return b(p_) + b(w_) + b(m_) + b(last_t_) + b(burst_t0_) + b(ev_t_) + b(col_t_) + b(pcount_) +
+               b(partner_) + b(kind_) + b(arg_) + b(burst_n_) + b(cell_) + b(prev_) +
                b(head_) + queue_.memory_bytes();
     }
 
@@ -254,12 +249,13 @@ public:
         EdState s;
         s.config = cfg_;
         s.time = t_now_;
-        s.x = x_; s.y = y_; s.vx = vx_; s.vy = vy_; s.spin = w_; s.local_time = tau_;
-        s.radius = rad_; s.mass = m_; s.last_collision_time = last_t_; s.burst_start = burst_t0_;
-        s.predicted_time = ev_t_; s.collision_time = col_t_; s.collision_count = count_;
-        s.partner_count = pcount_; s.last_partner = last_partner_; s.partner = partner_;
-        s.event_kind = kind_; s.event_arg = arg_; s.burst_count = burst_n_;
-        s.cell = cell_; s.cell_next = next_; s.cell_prev = prev_; s.cell_head = head_;
+        s.x = gather(&Hot::x); s.y = gather(&Hot::y); s.vx = gather(&Hot::vx); s.vy = gather(&Hot::vy);
+        s.spin.assign(w_.begin(), w_.end()); s.local_time = gather(&Hot::tau); s.radius = gather(&Hot::rad); s.mass.assign(m_.begin(), m_.end());
+        s.last_collision_time.assign(last_t_.begin(), last_t_.end()); s.burst_start.assign(burst_t0_.begin(), burst_t0_.end()); s.predicted_time.assign(ev_t_.begin(), ev_t_.end());
+        s.collision_time.assign(col_t_.begin(), col_t_.end()); s.collision_count = gather(&Hot::count); s.partner_count.assign(pcount_.begin(), pcount_.end());
+        s.last_partner = gather(&Hot::last_partner); s.partner.assign(partner_.begin(), partner_.end());
+        s.event_kind.assign(kind_.begin(), kind_.end()); s.event_arg.assign(arg_.begin(), arg_.end()); s.burst_count.assign(burst_n_.begin(), burst_n_.end());
+        s.cell.assign(cell_.begin(), cell_.end()); s.cell_next = gather(&Hot::next); s.cell_prev.assign(prev_.begin(), prev_.end()); s.cell_head.assign(head_.begin(), head_.end());
         s.pair_collisions = pair_collisions_; s.wall_collisions = wall_collisions_;
         s.elastic_collisions = elastic_; s.events = events_; s.crossings = crossings_;
         s.stale_events = stale_; s.max_overlap = max_overlap_;
@@ -279,21 +275,39 @@ public:
             check(k);
         cfg_ = s.config;
         t_now_ = s.time;
-        x_ = s.x; y_ = s.y; vx_ = s.vx; vy_ = s.vy; w_ = s.spin; tau_ = s.local_time;
-        rad_ = s.radius; m_ = s.mass; last_t_ = s.last_collision_time; burst_t0_ = s.burst_start;
-        ev_t_ = s.predicted_time; col_t_ = s.collision_time; count_ = s.collision_count;
-        pcount_ = s.partner_count; last_partner_ = s.last_partner; partner_ = s.partner;
-        kind_ = s.event_kind; arg_ = s.event_arg; burst_n_ = s.burst_count;
+        p_.assign(n, Hot{});
+        for (std::size_t i = 0; i < n; ++i)
+            p_[i] = Hot{s.x[i], s.y[i], s.vx[i], s.vy[i], s.local_time[i], s.radius[i],
+                        s.collision_count[i], s.last_partner[i], s.cell_next[i]};
+        w_.assign(s.spin.begin(), s.spin.end()); m_.assign(s.mass.begin(), s.mass.end()); last_t_.assign(s.last_collision_time.begin(), s.last_collision_time.end()); burst_t0_.assign(s.burst_start.begin(), s.burst_start.end());
+        ev_t_.assign(s.predicted_time.begin(), s.predicted_time.end()); col_t_.assign(s.collision_time.begin(), s.collision_time.end());
+        pcount_.assign(s.partner_count.begin(), s.partner_count.end()); partner_.assign(s.partner.begin(), s.partner.end());
+        kind_.assign(s.event_kind.begin(), s.event_kind.end()); arg_.assign(s.event_arg.begin(), s.event_arg.end()); burst_n_.assign(s.burst_count.begin(), s.burst_count.end());
         setup_geometry();
         if (s.cell_head.size() != static_cast<std::size_t>(ncx_) * static_cast<std::size_t>(ncy_))
             throw InputError("ED: EdState cell grid does not match its configuration");
-        cell_ = s.cell; next_ = s.cell_next; prev_ = s.cell_prev; head_ = s.cell_head;
+        cell_.assign(s.cell.begin(), s.cell.end()); prev_.assign(s.cell_prev.begin(), s.cell_prev.end()); head_.assign(s.cell_head.begin(), s.cell_head.end());
         pair_collisions_ = s.pair_collisions; wall_collisions_ = s.wall_collisions;
         elastic_ = s.elastic_collisions; events_ = s.events; crossings_ = s.crossings;
         stale_ = s.stale_events; max_overlap_ = s.max_overlap;
         queue_.rebuild(ev_t_);
     }
 
+    // Largest distance [m] by which any disk at time() lies outside its linked-list cell (0 when
+    // the cell lists are consistent; round-off level otherwise). Walled edge cells are unbounded.
+    double max_cell_excursion() const {
+        double worst = 0.0;
+        for (std::size_t i = 0; i < size(); ++i) {
+            const Vec2 r = raw_position(static_cast<int>(i));
+            const int cx = cell_[i] % ncx_, cy = cell_[i] / ncx_;
+            const double lox = (cx == 0 && !cfg_.periodic_x) ? -kInf : cx * csx_;
+            const double hix = (cx == ncx_ - 1 && !cfg_.periodic_x) ? kInf : (cx + 1) * csx_;
+            const double loy = (cy == 0 && !cfg_.periodic_y) ? -kInf : cy * csy_;
+            const double hiy = (cy == ncy_ - 1 && !cfg_.periodic_y) ? kInf : (cy + 1) * csy_;
+            worst = std::max({worst, lox - r.x, r.x - hix, loy - r.y, r.y - hiy});
+        }
+        return worst;
+    }
     // Geometry of the cell grid (for tests and diagnostics).
     int cells_x() const { return ncx_; }
     int cells_y() const { return ncy_; }
@@ -324,8 +338,8 @@ private:
         return out;
     }
     Vec2 raw_position(int i) const {
-        const double dt = t_now_ - tau_[i];
-        return {x_[i] + (vx_[i] + 0.5 * gx_ * dt) * dt, y_[i] + (vy_[i] + 0.5 * gy_ * dt) * dt};
+        const double dt = t_now_ - p_[i].tau;
+        return {p_[i].x + (p_[i].vx + 0.5 * gx_ * dt) * dt, p_[i].y + (p_[i].vy + 0.5 * gy_ * dt) * dt};
     }
     Vec2 min_image(Vec2 d) const {
         if (cfg_.periodic_x) { if (d.x > hx_) d.x -= cfg_.lx; else if (d.x < -hx_) d.x += cfg_.lx; }
@@ -338,7 +352,7 @@ private:
         if (!(cfg_.cell_size_factor >= 1.0)) throw InputError("ED: cell_size_factor must be >= 1");
         if (!(cfg_.t_c >= 0.0)) throw InputError("ED: t_c must be >= 0");
         max_rad_ = 0.0;
-        for (double a : rad_) max_rad_ = std::max(max_rad_, a);
+        for (const Hot& h : p_) max_rad_ = std::max(max_rad_, h.rad);
         // A margin above the largest diameter keeps round-off excursions of a disk out of its
         // cell from hiding a contact across two cells.
         const double cmin = 2.0 * max_rad_ * cfg_.cell_size_factor * (1.0 + 1e-9);
@@ -390,21 +404,20 @@ private:
         const std::size_t n = size();
         head_.assign(static_cast<std::size_t>(ncx_) * static_cast<std::size_t>(ncy_), -1);
         cell_.assign(n, 0);
-        next_.assign(n, -1);
         prev_.assign(n, -1);
-        for (std::size_t i = 0; i < n; ++i) link(static_cast<int>(i), cell_of(x_[i], y_[i]));
+        for (std::size_t i = 0; i < n; ++i) link(static_cast<int>(i), cell_of(p_[i].x, p_[i].y));
     }
     void link(int i, int c) {
         cell_[i] = c;
         prev_[i] = -1;
-        next_[i] = head_[c];
+        p_[i].next = head_[c];
         if (head_[c] >= 0) prev_[head_[c]] = i;
         head_[c] = i;
     }
     void unlink(int i) {
         const int c = cell_[i];
-        if (prev_[i] >= 0) next_[prev_[i]] = next_[i]; else head_[c] = next_[i];
-        if (next_[i] >= 0) prev_[next_[i]] = prev_[i];
+        if (prev_[i] >= 0) p_[prev_[i]].next = p_[i].next; else head_[c] = p_[i].next;
+        if (p_[i].next >= 0) prev_[p_[i].next] = prev_[i];
     }
     // Calls f(cell) for the up to 9 cells around c (deduplicated: walled axes clip).
     template <class F>
@@ -428,48 +441,48 @@ private:
     }
 
     void advance(int i, double t) {
-        const double dt = t - tau_[i];
+        const double dt = t - p_[i].tau;
         if (dt == 0.0) return;
         if (has_gravity()) {
-            x_[i] += (vx_[i] + 0.5 * gx_ * dt) * dt;
-            y_[i] += (vy_[i] + 0.5 * gy_ * dt) * dt;
-            vx_[i] += gx_ * dt;
-            vy_[i] += gy_ * dt;
+            p_[i].x += (p_[i].vx + 0.5 * gx_ * dt) * dt;
+            p_[i].y += (p_[i].vy + 0.5 * gy_ * dt) * dt;
+            p_[i].vx += gx_ * dt;
+            p_[i].vy += gy_ * dt;
         } else {
-            x_[i] += vx_[i] * dt;
-            y_[i] += vy_[i] * dt;
+            p_[i].x += p_[i].vx * dt;
+            p_[i].y += p_[i].vy * dt;
         }
-        tau_[i] = t;
+        p_[i].tau = t;
     }
     bool has_gravity() const { return gx_ != 0.0 || gy_ != 0.0; }
     Probe probe(int i, double t) const {
-        const double dt = t - tau_[i];
-        return {i, x_[i] + (vx_[i] + 0.5 * gx_ * dt) * dt, y_[i] + (vy_[i] + 0.5 * gy_ * dt) * dt,
-                vx_[i] + gx_ * dt, vy_[i] + gy_ * dt, t};
+        const double dt = t - p_[i].tau;
+        return {i, p_[i].x + (p_[i].vx + 0.5 * gx_ * dt) * dt, p_[i].y + (p_[i].vy + 0.5 * gy_ * dt) * dt,
+                p_[i].vx + gx_ * dt, p_[i].vy + gy_ * dt, t};
     }
 
     // Earliest contact (interval from p.t) of p with the disks in cell c.
     void scan_cell(const Probe& p, int c, double& best, int& best_j) const {
         const int i = p.i;
-        const int lp = last_partner_[i];
-        for (int j = head_[c]; j >= 0; j = next_[j]) {
+        const int lp = p_[i].last_partner;
+        for (int j = head_[c]; j >= 0; j = p_[j].next) {
             if (j == i) continue;
-            if (j == lp && last_partner_[j] == i) continue; // separating since their collision
-            const double dt = p.t - tau_[j];
-            double dx = p.x - (x_[j] + (vx_[j] + 0.5 * gx_ * dt) * dt);
-            double dy = p.y - (y_[j] + (vy_[j] + 0.5 * gy_ * dt) * dt);
+            if (j == lp && p_[j].last_partner == i) continue; // separating since their collision
+            const double dt = p.t - p_[j].tau;
+            double dx = p.x - (p_[j].x + (p_[j].vx + 0.5 * gx_ * dt) * dt);
+            double dy = p.y - (p_[j].y + (p_[j].vy + 0.5 * gy_ * dt) * dt);
             if (cfg_.periodic_x) { if (dx > hx_) dx -= cfg_.lx; else if (dx < -hx_) dx += cfg_.lx; }
             if (cfg_.periodic_y) { if (dy > hy_) dy -= cfg_.ly; else if (dy < -hy_) dy += cfg_.ly; }
-            const double dvx = p.vx - (vx_[j] + gx_ * dt);
-            const double dvy = p.vy - (vy_[j] + gy_ * dt);
-            const double tc = flight_roots::pair_contact_time(dx, dy, dvx, dvy, rad_[i] + rad_[j]);
+            const double dvx = p.vx - (p_[j].vx + gx_ * dt);
+            const double dvy = p.vy - (p_[j].vy + gy_ * dt);
+            const double tc = flight_roots::pair_contact_time(dx, dy, dvx, dvy, p_[i].rad + p_[j].rad);
             if (tc < best) { best = tc; best_j = j; }
         }
     }
 
     // Full prediction for i at its own clock (tau_i == time of the current event).
     void predict_full(int i) {
-        const Probe p{i, x_[i], y_[i], vx_[i], vy_[i], tau_[i]};
+        const Probe p{i, p_[i].x, p_[i].y, p_[i].vx, p_[i].vy, p_[i].tau};
         double bt = kInf;
         int bj = -1;
         for_neighbour_cells(cell_[i], [&](int c) { scan_cell(p, c, bt, bj); });
@@ -479,19 +492,19 @@ private:
     void set_pair_prediction(int i, double dt, int j) {
         partner_[i] = j;
         if (j >= 0) {
-            col_t_[i] = tau_[i] + dt;
-            pcount_[i] = count_[j];
+            col_t_[i] = p_[i].tau + dt;
+            pcount_[i] = p_[j].count;
         } else {
             col_t_[i] = kInf;
         }
     }
     // After entering a new cell along dir: scan only the newly adjacent cells.
     void predict_after_crossing(int i, int dir) {
-        if (partner_[i] >= 0 && count_[partner_[i]] != pcount_[i]) {
+        if (partner_[i] >= 0 && p_[partner_[i]].count != pcount_[i]) {
             predict_full(i);
             return;
         }
-        const Probe p{i, x_[i], y_[i], vx_[i], vy_[i], tau_[i]};
+        const Probe p{i, p_[i].x, p_[i].y, p_[i].vx, p_[i].vy, p_[i].tau};
         double bt = kInf;
         int bj = -1;
         const int cx = cell_[i] % ncx_, cy = cell_[i] / ncx_;
@@ -528,7 +541,7 @@ private:
                 }
             }
         }
-        if (bj >= 0 && tau_[i] + bt < col_t_[i]) set_pair_prediction(i, bt, bj);
+        if (bj >= 0 && p_[i].tau + bt < col_t_[i]) set_pair_prediction(i, bt, bj);
         schedule(i);
     }
 
@@ -537,35 +550,35 @@ private:
         double best = col_t_[i];
         std::uint8_t kind = partner_[i] >= 0 ? kCollision : kNone;
         std::uint8_t arg = 0;
-        const double t = tau_[i];
-        const double a = rad_[i];
+        const double t = p_[i].tau;
+        const double a = p_[i].rad;
         for (std::size_t w = 0; w < cfg_.walls.size(); ++w) {
             const EdWall& wl = cfg_.walls[w];
             if (!wl.enabled) continue;
             const double s = wl.side;
             double tw;
-            if (wl.axis == 0) tw = flight_roots::gap_closing_time(s * (x_[i] - wl.position) - a, s * vx_[i], s * gx_);
-            else tw = flight_roots::gap_closing_time(s * (y_[i] - wl.position) - a, s * vy_[i], s * gy_);
+            if (wl.axis == 0) tw = flight_roots::gap_closing_time(s * (p_[i].x - wl.position) - a, s * p_[i].vx, s * gx_);
+            else tw = flight_roots::gap_closing_time(s * (p_[i].y - wl.position) - a, s * p_[i].vy, s * gy_);
             if (t + tw < best) { best = t + tw; kind = kWall; arg = static_cast<std::uint8_t>(w); }
         }
         const int cx = cell_[i] % ncx_, cy = cell_[i] / ncx_;
         // Cell boundaries; edge cells of walled axes extend to infinity.
         if (cfg_.periodic_x || cx > 0) {
-            const double tc = flight_roots::gap_closing_time(x_[i] - cx * csx_, vx_[i], gx_);
+            const double tc = flight_roots::gap_closing_time(p_[i].x - cx * csx_, p_[i].vx, gx_);
             if (t + tc < best) { best = t + tc; kind = kCross; arg = 0; }
         }
         if (cfg_.periodic_x || cx < ncx_ - 1) {
             const double hi = cx + 1 == ncx_ ? cfg_.lx : (cx + 1) * csx_;
-            const double tc = flight_roots::gap_closing_time(hi - x_[i], -vx_[i], -gx_);
+            const double tc = flight_roots::gap_closing_time(hi - p_[i].x, -p_[i].vx, -gx_);
             if (t + tc < best) { best = t + tc; kind = kCross; arg = 1; }
         }
         if (cfg_.periodic_y || cy > 0) {
-            const double tc = flight_roots::gap_closing_time(y_[i] - cy * csy_, vy_[i], gy_);
+            const double tc = flight_roots::gap_closing_time(p_[i].y - cy * csy_, p_[i].vy, gy_);
             if (t + tc < best) { best = t + tc; kind = kCross; arg = 2; }
         }
         if (cfg_.periodic_y || cy < ncy_ - 1) {
             const double hi = cy + 1 == ncy_ ? cfg_.ly : (cy + 1) * csy_;
-            const double tc = flight_roots::gap_closing_time(hi - y_[i], -vy_[i], -gy_);
+            const double tc = flight_roots::gap_closing_time(hi - p_[i].y, -p_[i].vy, -gy_);
             if (t + tc < best) { best = t + tc; kind = kCross; arg = 3; }
         }
         ev_t_[i] = best;
@@ -604,7 +617,7 @@ private:
         for (std::size_t i = 0; i < size(); ++i) {
             const Vec2 v = velocity(i);
             v2 += norm2(v);
-            dsum += 2.0 * rad_[i];
+            dsum += 2.0 * p_[i].rad;
         }
         const double d = dsum / static_cast<double>(size());
         const double vref = std::max(std::sqrt(v2 / static_cast<double>(size())),
@@ -632,7 +645,7 @@ private:
             case kWall: do_wall<kRough>(i, arg_[i], t, obs); break;
             case kCollision: {
                 const int j = partner_[i];
-                if (count_[j] != pcount_[i]) {
+                if (p_[j].count != pcount_[i]) {
                     ++stale_;
                     advance(i, t);
                     predict_full(i);
@@ -654,7 +667,7 @@ private:
         throw std::runtime_error(os.str());
     }
     void note_collision(int i, double t) {
-        ++count_[i];
+        ++p_[i].count;
         if (t - burst_t0_[i] > window_) {
             burst_t0_[i] = t;
             burst_n_[i] = 0;
@@ -678,10 +691,10 @@ private:
         const int dir = arg_[i];
         int cx = cell_[i] % ncx_, cy = cell_[i] / ncx_;
         switch (dir) {
-        case 0: if (--cx < 0) { cx += ncx_; x_[i] += cfg_.lx; } break;
-        case 1: if (++cx == ncx_) { cx = 0; x_[i] -= cfg_.lx; } break;
-        case 2: if (--cy < 0) { cy += ncy_; y_[i] += cfg_.ly; } break;
-        default: if (++cy == ncy_) { cy = 0; y_[i] -= cfg_.ly; } break;
+        case 0: if (--cx < 0) { cx += ncx_; p_[i].x += cfg_.lx; } break;
+        case 1: if (++cx == ncx_) { cx = 0; p_[i].x -= cfg_.lx; } break;
+        case 2: if (--cy < 0) { cy += ncy_; p_[i].y += cfg_.ly; } break;
+        default: if (++cy == ncy_) { cy = 0; p_[i].y -= cfg_.ly; } break;
         }
         link(i, cy * ncx_ + cx);
         predict_after_crossing(i, dir);
@@ -691,20 +704,20 @@ private:
     void do_pair(int i, int j, double t, Obs& obs) {
         advance(i, t);
         advance(j, t);
-        double dx = x_[i] - x_[j], dy = y_[i] - y_[j];
+        double dx = p_[i].x - p_[j].x, dy = p_[i].y - p_[j].y;
         if (cfg_.periodic_x) { if (dx > hx_) dx -= cfg_.lx; else if (dx < -hx_) dx += cfg_.lx; }
         if (cfg_.periodic_y) { if (dy > hy_) dy -= cfg_.ly; else if (dy < -hy_) dy += cfg_.ly; }
         const double dist = std::sqrt(dx * dx + dy * dy);
-        max_overlap_ = std::max(max_overlap_, rad_[i] + rad_[j] - dist);
+        max_overlap_ = std::max(max_overlap_, p_[i].rad + p_[j].rad - dist);
         const Vec2 n{dx / dist, dy / dist};
         const bool el = tc_elastic(t, i) || tc_elastic(t, j);
         const RoughDiskCollision& law = el ? law_tc_ : law_;
-        const Vec2 vi{vx_[i], vy_[i]}, vj{vx_[j], vy_[j]};
-        const auto res = law.template collide<kRough>(vi, w_[i], m_[i], rad_[i], vj, w_[j], m_[j], rad_[j], n);
-        vx_[i] += res.dP.x / m_[i];
-        vy_[i] += res.dP.y / m_[i];
-        vx_[j] -= res.dP.x / m_[j];
-        vy_[j] -= res.dP.y / m_[j];
+        const Vec2 vi{p_[i].vx, p_[i].vy}, vj{p_[j].vx, p_[j].vy};
+        const auto res = law.template collide<kRough>(vi, w_[i], m_[i], p_[i].rad, vj, w_[j], m_[j], p_[j].rad, n);
+        p_[i].vx += res.dP.x / m_[i];
+        p_[i].vy += res.dP.y / m_[i];
+        p_[j].vx -= res.dP.x / m_[j];
+        p_[j].vy -= res.dP.y / m_[j];
         if constexpr (kRough) {
             w_[i] += res.dw1;
             w_[j] += res.dw2;
@@ -713,15 +726,15 @@ private:
         note_collision(j, t);
         ++pair_collisions_;
         if (el) ++elastic_;
-        last_partner_[i] = j;
-        last_partner_[j] = i;
+        p_[i].last_partner = j;
+        p_[j].last_partner = i;
         if constexpr (!std::is_same_v<std::decay_t<Obs>, NoObserver>) {
             CollisionRecord rec;
             rec.t = t;
             rec.i = i;
             rec.j = j;
-            rec.ri = {x_[i], y_[i]};
-            rec.rj = {x_[i] - dx, y_[i] - dy};
+            rec.ri = {p_[i].x, p_[i].y};
+            rec.rj = {p_[i].x - dx, p_[i].y - dy};
             rec.n = n;
             rec.dP = res.dP;
             const Vec2 dv = vi - vj;
@@ -739,26 +752,26 @@ private:
         advance(i, t);
         const EdWall& wl = cfg_.walls[w];
         const Vec2 n = wl.axis == 0 ? Vec2{double(wl.side), 0.0} : Vec2{0.0, double(wl.side)};
-        const double c = wl.axis == 0 ? x_[i] : y_[i];
-        max_overlap_ = std::max(max_overlap_, rad_[i] - wl.side * (c - wl.position));
+        const double c = wl.axis == 0 ? p_[i].x : p_[i].y;
+        max_overlap_ = std::max(max_overlap_, p_[i].rad - wl.side * (c - wl.position));
         const bool el = tc_elastic(t, i);
         const RoughDiskCollision& law = el ? wlaw_tc_[w] : wlaw_[w];
-        const Vec2 vi{vx_[i], vy_[i]};
-        const auto res = law.template collide<kRough>(vi, w_[i], m_[i], rad_[i], Vec2{}, 0.0, kInf, 0.0, n);
-        vx_[i] += res.dP.x / m_[i];
-        vy_[i] += res.dP.y / m_[i];
+        const Vec2 vi{p_[i].vx, p_[i].vy};
+        const auto res = law.template collide<kRough>(vi, w_[i], m_[i], p_[i].rad, Vec2{}, 0.0, kInf, 0.0, n);
+        p_[i].vx += res.dP.x / m_[i];
+        p_[i].vy += res.dP.y / m_[i];
         if constexpr (kRough) w_[i] += res.dw1;
         note_collision(i, t);
         ++wall_collisions_;
         if (el) ++elastic_;
-        last_partner_[i] = -1 - w;
+        p_[i].last_partner = -1 - w;
         if constexpr (!std::is_same_v<std::decay_t<Obs>, NoObserver>) {
             CollisionRecord rec;
             rec.t = t;
             rec.i = i;
             rec.j = -1 - w;
-            rec.ri = {x_[i], y_[i]};
-            rec.rj = rec.ri - n * rad_[i];
+            rec.ri = {p_[i].x, p_[i].y};
+            rec.rj = rec.ri - n * p_[i].rad;
             rec.n = n;
             rec.dP = res.dP;
             const double vv = norm(vi);
@@ -783,12 +796,30 @@ private:
     std::uint64_t zero_time_run_ = 0;
 
     // Structure of arrays, one entry per particle.
-    std::vector<double> x_, y_, vx_, vy_, w_, tau_, rad_, m_, last_t_, burst_t0_, ev_t_, col_t_;
-    std::vector<std::uint64_t> count_, pcount_;
-    std::vector<std::int32_t> last_partner_, partner_;
-    std::vector<std::uint8_t> kind_, arg_;
-    std::vector<std::uint32_t> burst_n_;
-    std::vector<std::int32_t> cell_, next_, prev_, head_;
+    // Everything the neighbour scan touches of a particle in one cache line.
+    struct alignas(64) Hot {
+        double x, y;              // position at tau [m]
+        double vx, vy;            // velocity at tau [m/s]
+        double tau;               // local clock [s]
+        double rad;               // radius [m]
+        std::uint64_t count;      // collisions so far (stale-event detection)
+        std::int32_t last_partner;
+        std::int32_t next;        // next particle in the same cell, -1 = end
+    };
+    static_assert(sizeof(Hot) == 64);
+    template <class T>
+    std::vector<T> gather(T Hot::*f) const {
+        std::vector<T> out(p_.size());
+        for (std::size_t i = 0; i < p_.size(); ++i) out[i] = p_[i].*f;
+        return out;
+    }
+    HugeVector<Hot> p_;
+    HugeVector<double> w_, m_, last_t_, burst_t0_, ev_t_, col_t_;
+    HugeVector<std::uint64_t> pcount_;
+    HugeVector<std::int32_t> partner_;
+    HugeVector<std::uint8_t> kind_, arg_;
+    HugeVector<std::uint32_t> burst_n_;
+    HugeVector<std::int32_t> cell_, prev_, head_;
     Queue queue_;
 
     std::uint64_t pair_collisions_ = 0, wall_collisions_ = 0, elastic_ = 0, events_ = 0,

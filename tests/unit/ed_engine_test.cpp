@@ -1,0 +1,294 @@
+// ED engine: event search against brute force, conservation laws, TC model, walls, gravity,
+// collapse detection and checkpoint/restart.
+#include "engines/ed/ed_engine.hpp"
+#include "engines/ed/ed_initial_states.hpp"
+#include "engines/ed/flight_roots.hpp"
+
+#include <cmath>
+#include <gtest/gtest.h>
+#include <limits>
+#include <string>
+
+using namespace granrepro;
+
+namespace {
+
+constexpr double kD = 1e-3; // diameter [m]
+constexpr double kM = 1e-6; // mass [kg]
+
+double box_for(std::size_t n, double rho) { return kD * std::sqrt(static_cast<double>(n) * M_PI / (4.0 * rho)); }
+
+template <class Engine>
+Engine random_gas(std::size_t n, double rho, std::uint64_t seed, EdConfig cfg = {}) {
+    const double l = box_for(n, rho);
+    cfg.lx = cfg.ly = l;
+    RngStream rng(seed, 0);
+    const std::vector<double> rad(n, 0.5 * kD), mass(n, kM);
+    const auto pos = random_positions(rad, l, l, cfg.periodic_x, cfg.periodic_y, rng);
+    const auto vel = maxwellian_velocities(mass, 1.0, rng);
+    return Engine(cfg, pos, vel, rad, mass);
+}
+
+// Brute-force O(N^2) earliest pair collision from time(), using the engine's public state and
+// the same "last partners do not re-collide" rule.
+template <class Engine>
+typename Engine::PairEvent brute_force_next(const Engine& e) {
+    typename Engine::PairEvent best;
+    const auto& cfg = e.config();
+    for (std::size_t i = 0; i < e.size(); ++i) {
+        for (std::size_t j = i + 1; j < e.size(); ++j) {
+            if (e.last_partner(i) == static_cast<int>(j) && e.last_partner(j) == static_cast<int>(i)) continue;
+            Vec2 dr = e.position(i) - e.position(j);
+            if (cfg.periodic_x) dr.x -= cfg.lx * std::round(dr.x / cfg.lx);
+            if (cfg.periodic_y) dr.y -= cfg.ly * std::round(dr.y / cfg.ly);
+            const Vec2 dv = e.velocity(i) - e.velocity(j);
+            const double t = flight_roots::pair_contact_time(dr.x, dr.y, dv.x, dv.y, e.radius(i) + e.radius(j));
+            if (e.time() + t < best.t) best = {e.time() + t, static_cast<int>(i), static_cast<int>(j)};
+        }
+    }
+    return best;
+}
+
+} // namespace
+
+// The same test body runs against every engine implementation (event-queue variants) and
+// both boundary types.
+template <class E>
+class EdEngineImpl : public ::testing::Test {};
+using EngineTypes = ::testing::Types<BasicEdEngine<BinaryHeapQueue>, BasicEdEngine<CalendarQueue>>;
+TYPED_TEST_SUITE(EdEngineImpl, EngineTypes);
+
+TYPED_TEST(EdEngineImpl, CellSearchMatchesBruteForceAndEngineExecutesIt) {
+    for (bool periodic : {true, false}) {
+        EdConfig cfg;
+        cfg.periodic_x = cfg.periodic_y = periodic;
+        const double l = box_for(600, 0.35);
+        if (!periodic) {
+            cfg.walls = {EdWall{0, 0.0, +1}, EdWall{0, l, -1}, EdWall{1, 0.0, +1}, EdWall{1, l, -1}};
+        }
+        auto e = random_gas<TypeParam>(600, 0.35, 42, cfg);
+        int adjacent = 0;
+        for (int round = 0; round < 40; ++round) {
+            e.synchronize();
+            ASSERT_LT(e.max_cell_excursion(), 1e-12 * kD) << "round " << round;
+            const auto ref = brute_force_next(e);
+            // The cell search sees only pairs in adjacent cells: never earlier than the brute
+            // force, and identical whenever the brute-force pair is within one cell width now.
+            const auto cells = e.next_pair_collision_cells();
+            ASSERT_GE(cells.t, ref.t);
+            Vec2 dr = e.position(ref.i) - e.position(ref.j);
+            if (periodic) {
+                dr.x -= l * std::round(dr.x / l);
+                dr.y -= l * std::round(dr.y / l);
+            }
+            if (std::fabs(dr.x) < l / e.cells_x() && std::fabs(dr.y) < l / e.cells_y()) {
+                ++adjacent;
+                ASSERT_EQ(cells.t, ref.t) << "round " << round << " ref " << ref.i << "," << ref.j << " cells " << cells.i << "," << cells.j
+                    << " pos " << e.position(ref.i).x / l * e.cells_x() << " " << e.position(ref.i).y / l * e.cells_y() << " / "
+                    << e.position(ref.j).x / l * e.cells_x() << " " << e.position(ref.j).y / l * e.cells_y() << " t=" << e.time();
+                ASSERT_EQ(cells.i, ref.i);
+                ASSERT_EQ(cells.j, ref.j);
+            }
+            // The engine's next executed particle-particle collision is that very pair.
+            CollisionRecord got;
+            e.run_collisions(1, [&](const CollisionRecord& r) { if (r.j >= 0) got = r; });
+            EXPECT_NEAR(got.t, ref.t, 1e-12 * (1 + ref.t));
+            EXPECT_EQ(std::min(got.i, got.j), ref.i);
+            EXPECT_EQ(std::max(got.i, got.j), ref.j);
+            e.run_collisions(37); // move on to a different state
+        }
+        EXPECT_GT(adjacent, 20);
+    }
+}
+
+TYPED_TEST(EdEngineImpl, ElasticGasConservesEnergyAndMomentum) {
+    auto e = random_gas<TypeParam>(2000, 0.25, 7);
+    const double k0 = e.kinetic_energy().total();
+    const Vec2 p0 = e.total_momentum();
+    const double pscale = kM * 1.0 * std::sqrt(2000.0);
+    e.run_collisions(100 * 2000 / 2); // 100 collisions per particle
+    const double k1 = e.kinetic_energy().total();
+    const Vec2 p1 = e.total_momentum();
+    EXPECT_NEAR(k1 / k0, 1.0, 1e-11);
+    EXPECT_NEAR(p1.x, p0.x, 1e-12 * pscale);
+    EXPECT_NEAR(p1.y, p0.y, 1e-12 * pscale);
+    EXPECT_LT(e.max_overlap(), 1e-9 * kD);
+    EXPECT_LT(e.current_max_overlap(), 1e-9 * kD);
+    EXPECT_EQ(e.elastic_collisions(), 0u);
+    std::uint64_t sum = 0;
+    for (auto c : e.collision_counts()) sum += c;
+    EXPECT_EQ(sum, 2 * e.total_collisions());
+}
+
+TEST(EdEngine, RoughElasticDisksConserveEnergyWithRotation) {
+    // r = 1, beta0 = 1 and large mu: every contact sticks with beta = 1, which conserves
+    // translational + rotational energy while exchanging them.
+    EdConfig cfg;
+    cfg.law = RoughDiskCollision{1.0, 1e6, 1.0, 0.5};
+    auto e = random_gas<EdEngine>(1000, 0.3, 3, cfg);
+    const double k0 = e.kinetic_energy().total();
+    e.run_collisions(20000);
+    const auto k = e.kinetic_energy();
+    EXPECT_NEAR(k.total() / k0, 1.0, 1e-11);
+    EXPECT_GT(k.krot / k0, 0.05); // rotation really got excited
+    EXPECT_LT(e.max_overlap(), 1e-9 * kD);
+}
+
+TEST(EdEngine, InelasticPairLossMatchesOperator) {
+    // Sum of analytic per-collision losses (smooth: (1-r^2)/2 m12 v_n^2) equals K0 - K.
+    EdConfig cfg;
+    cfg.law.r = 0.7;
+    auto e = random_gas<EdEngine>(500, 0.2, 5, cfg);
+    const double k0 = e.kinetic_energy().total();
+    double loss = 0.0;
+    e.run_collisions(3000, [&](const CollisionRecord& r) {
+        // |dP| = m12 (1+r) |v_n|  =>  loss = (1-r)/(1+r) |dP|^2 / (2 m12), m12 = m/2
+        const double dp2 = norm2(r.dP);
+        loss += (1.0 - 0.7) / (1.0 + 0.7) * dp2 / (2.0 * 0.5 * kM);
+    });
+    EXPECT_NEAR((k0 - e.kinetic_energy().total()) / k0, loss / k0, 1e-10);
+}
+
+TEST(EdEngine, TcModelMakesQuickRepeatCollisionsElastic) {
+    EdConfig cfg;
+    cfg.law.r = 0.5;
+    cfg.t_c = 1e30; // every collision after a particle's first one is elastic (Eq. 7)
+    auto e = random_gas<EdEngine>(400, 0.3, 9, cfg);
+    std::vector<int> seen(400, 0);
+    std::uint64_t expected_elastic = 0, inelastic_loss_events = 0;
+    double k_before = e.kinetic_energy().total();
+    e.run_collisions(4000, [&](const CollisionRecord& r) {
+        const bool el = seen[r.i] > 0 || seen[r.j] > 0;
+        EXPECT_EQ(r.elastic, el);
+        if (el) ++expected_elastic; else ++inelastic_loss_events;
+        ++seen[r.i];
+        ++seen[r.j];
+    });
+    EXPECT_EQ(e.elastic_collisions(), expected_elastic);
+    EXPECT_GT(expected_elastic, 3000u);
+    // Only the first collisions dissipated; the rest conserved energy: K stays bounded below.
+    EXPECT_LT(e.kinetic_energy().total(), k_before);
+    EXPECT_LE(inelastic_loss_events, 200u);
+    // t_c = 0 is plain ED: no elastic collisions.
+    EdConfig plain;
+    plain.law.r = 0.5;
+    auto f = random_gas<EdEngine>(400, 0.3, 9, plain);
+    f.run_collisions(2000);
+    EXPECT_EQ(f.elastic_collisions(), 0u);
+}
+
+TEST(EdEngine, InelasticCollapseThrowsClearMessage) {
+    // A disk bouncing on an inelastic floor under gravity performs infinitely many bounces in
+    // finite time (t_c = 0): the engine must stop with an exception, not hang.
+    EdConfig cfg;
+    cfg.lx = 10 * kD;
+    cfg.ly = 100 * kD;
+    cfg.periodic_y = false;
+    cfg.gravity = {0.0, -9.81};
+    cfg.walls = {EdWall{1, 0.0, +1, 0.5}};
+    EdEngine e(cfg, {{5 * kD, 10 * kD}}, {{0.0, 0.0}}, {0.5 * kD}, {kM});
+    try {
+        e.run_until(10.0);
+        FAIL() << "no exception";
+    } catch (const std::runtime_error& ex) {
+        EXPECT_NE(std::string(ex.what()).find("collapse"), std::string::npos) << ex.what();
+    }
+    // With the TC model the same setup runs on.
+    cfg.t_c = 1e-4;
+    EdEngine f(cfg, {{5 * kD, 10 * kD}}, {{0.0, 0.0}}, {0.5 * kD}, {kM});
+    EXPECT_NO_THROW(f.run_until(2.0));
+    EXPECT_GT(f.elastic_collisions(), 0u);
+}
+
+TEST(EdEngine, DenseInelasticGasCollapseThrows) {
+    EdConfig cfg;
+    cfg.law.r = 0.1;
+    auto e = random_gas<EdEngine>(300, 0.45, 21, cfg);
+    try {
+        e.run_collisions(50'000'000);
+        FAIL() << "no exception";
+    } catch (const std::runtime_error& ex) {
+        EXPECT_NE(std::string(ex.what()).find("collapse"), std::string::npos) << ex.what();
+    }
+}
+
+TEST(EdEngine, RemovingTheFloorLetsDisksFall) {
+    EdConfig cfg;
+    cfg.lx = 12 * kD;
+    cfg.ly = 60 * kD;
+    cfg.periodic_x = false;
+    cfg.periodic_y = false;
+    cfg.gravity = {0.0, -9.81};
+    cfg.walls = {EdWall{0, 0.0, +1}, EdWall{0, 12 * kD, -1}, EdWall{1, 0.0, +1}};
+    const auto pos = triangular_lattice_positions(60, 0.5 * kD, 11.5 * kD, 0.6 * kD, 1.01 * kD);
+    RngStream rng(1, 0);
+    const std::vector<double> rad(pos.size(), 0.5 * kD), mass(pos.size(), kM);
+    auto vel = uniform_velocities(pos.size(), 0.05, rng);
+    EdEngine e(cfg, pos, vel, rad, mass);
+    e.run_until(0.02);
+    for (const Vec2& p : e.positions()) EXPECT_GT(p.y, 0.5 * kD * (1 - 1e-9));
+    e.set_wall_enabled(2, false);
+    e.run_until(0.2); // free fall 0.5 g t^2 ~ 0.16 m >> pile
+    for (const Vec2& p : e.positions()) EXPECT_LT(p.y, 0.0);
+    EXPECT_LT(e.max_overlap(), 1e-9 * kD);
+}
+
+TYPED_TEST(EdEngineImpl, CheckpointRestartIsBitIdentical) {
+    // Rough, inelastic with TC, gravity and walls: all code paths.
+    EdConfig cfg;
+    cfg.periodic_y = false;
+    cfg.gravity = {0.0, -9.81};
+    cfg.law = RoughDiskCollision{0.8, 0.5, 0.2, 0.5};
+    cfg.t_c = 1e-5;
+    const double l = box_for(400, 0.3);
+    cfg.walls = {EdWall{1, 0.0, +1, 0.9, 0.5, 0.2}, EdWall{1, l, -1}};
+    auto a = random_gas<TypeParam>(400, 0.3, 11, cfg);
+    a.run_until(0.01);
+    const EdState mid = a.save_state();
+    a.run_until(0.03);
+    a.synchronize();
+    TypeParam b(mid);
+    b.run_until(0.03);
+    b.synchronize();
+    const EdState sa = a.save_state(), sb = b.save_state();
+    EXPECT_GT(sa.pair_collisions, mid.pair_collisions + 1000);
+    EXPECT_EQ(sa.x, sb.x);
+    EXPECT_EQ(sa.y, sb.y);
+    EXPECT_EQ(sa.vx, sb.vx);
+    EXPECT_EQ(sa.vy, sb.vy);
+    EXPECT_EQ(sa.spin, sb.spin);
+    EXPECT_EQ(sa.collision_count, sb.collision_count);
+    EXPECT_EQ(sa.predicted_time, sb.predicted_time);
+    EXPECT_EQ(sa.pair_collisions, sb.pair_collisions);
+    EXPECT_EQ(sa.elastic_collisions, sb.elastic_collisions);
+    EXPECT_EQ(sa.time, sb.time);
+}
+
+TEST(EdEngine, InitialStatesAndVelocityScaling) {
+    RngStream rng(5, 1);
+    const std::vector<double> mass(1000, kM);
+    auto v = maxwellian_velocities(mass, 0.2047, rng);
+    Vec2 p;
+    double k = 0;
+    for (const auto& u : v) { p += kM * u; k += 0.5 * kM * norm2(u); }
+    EXPECT_NEAR(p.x, 0.0, 1e-18);
+    EXPECT_NEAR(p.y, 0.0, 1e-18);
+    EXPECT_NEAR(std::sqrt(2 * k / (1000 * kM)), 0.2047, 1e-12);
+    const auto sq = square_lattice_positions(784, 50 * kD, 50 * kD);
+    EXPECT_EQ(sq.size(), 784u);
+    EXPECT_NEAR(sq[1].x - sq[0].x, 50 * kD / 28, 1e-15);
+    const auto tri = triangular_lattice_positions(1562, 0.5 * kD, 19.7 * kD, 0.5 * kD, 1.01 * kD);
+    EXPECT_EQ(tri.size(), 1562u);
+    EXPECT_NEAR(tri[20].y - tri[0].y, 1.01 * kD * std::sqrt(3.0) / 2, 1e-15);
+    EXPECT_THROW(random_positions(std::vector<double>(100, 0.5), 5.0, 5.0, true, true, rng, 1000), InputError);
+}
+
+TEST(EdEngine, RejectsBadInput) {
+    EdConfig cfg;
+    cfg.lx = cfg.ly = 2 * kD; // fewer than 3 cells in a periodic box
+    EXPECT_THROW(EdEngine(cfg, {{0.001, 0.001}}, {{0, 0}}, {0.5 * kD}, {kM}), InputError);
+    cfg.lx = cfg.ly = 10 * kD;
+    EXPECT_THROW(EdEngine(cfg, {{0.001, 0.001}, {0.0015, 0.001}}, {{0, 0}, {0, 0}}, {0.5 * kD, 0.5 * kD}, {kM, kM}), InputError);
+    cfg.law.r = 1.5;
+    EXPECT_THROW(EdEngine(cfg, {{0.001, 0.001}}, {{0, 0}}, {0.5 * kD}, {kM}), InputError);
+}
