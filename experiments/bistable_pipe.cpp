@@ -13,6 +13,7 @@
 #include "core/rng_stream.hpp"
 #include "engines/soft/pipe_engine.hpp"
 #include "experiments/impact_shot.hpp"
+#include "experiments/pipe_setup.hpp"
 #include "harness/experiment.hpp"
 #include "harness/parallel_sweep.hpp"
 #include "harness/sweep_checkpoint.hpp"
@@ -24,16 +25,6 @@ namespace granrepro::experiments {
 namespace {
 
 using Engine = PipeEngine<LinearSpringDashpot, CoulombShear>;
-
-struct PipeSpec {
-    PipeGeometry geo;
-    double d_mean, polydispersity, m_mean, phi, mu;
-    double k_N, e_N;
-    double v0, agitation; // start: mean downward speed and rms of the random velocities [m/s]
-    double steps_per_contact, skin;
-    double t_max, window, drift_tol, t_average, sample_dt, v_abort;
-    std::uint64_t seed, stream;
-};
 
 struct RunResult {
     bool steady = false;
@@ -63,54 +54,6 @@ struct RunResult {
     }
 };
 
-// Free-wall restitution e_N defines gamma_N, as for Figs. 3-5 (e_N = 0.70 <=> gamma_N = 1e4 1/s
-// at k_N = 2000 N/m and m = 1 mg).
-LinearSpringDashpot law_for(double k_N, double e_N, double m_mean) {
-    return LinearSpringDashpot::from_restitution(k_N, e_N, m_mean);
-}
-
-// Triangular lattice between the wall crests, N sites chosen at random; diameters uniform in
-// d_mean (1 ± polydispersity), masses ∝ d^2 (uniform areal density) with m(d_mean) = m_mean.
-Engine build(const PipeSpec& s) {
-    const LinearSpringDashpot law = law_for(s.k_N, s.e_N, s.m_mean);
-    const double d_min = s.d_mean * (1 - s.polydispersity), d_max = s.d_mean * (1 + s.polydispersity);
-    const double m_min = s.m_mean * (d_min / s.d_mean) * (d_min / s.d_mean);
-    const double dt = law.collision_time(0.5 * m_min) / s.steps_per_contact; // stiffest pair, Eq. (5)
-    Engine eng(law, CoulombShear{s.mu}, s.geo, dt, s.skin);
-    RngStream rng(s.seed, s.stream);
-    // Area fraction relative to the channel between the wall crests, (width - d_wall) x length.
-    const double area = (s.geo.width - 2 * s.geo.wall_radius) * s.geo.length;
-    const double mean_d2 = s.d_mean * s.d_mean * (1 + s.polydispersity * s.polydispersity / 3);
-    const long n = std::lround(s.phi * area / (M_PI / 4 * mean_d2));
-    const double x_lo = s.geo.wall_radius + 0.5 * d_max + 1e-6, x_hi = s.geo.width - x_lo;
-    std::vector<std::pair<double, double>> sites;
-    for (double a = std::sqrt(area / double(n) / (std::sqrt(3.0) / 2)); a >= d_max; a *= 0.995) {
-        sites.clear();
-        const int rows = int(s.geo.length / (a * std::sqrt(3.0) / 2));
-        const double row_h = s.geo.length / rows;
-        for (int r = 0; r < rows; ++r)
-            for (double x = x_lo + (r % 2) * 0.5 * a; x <= x_hi; x += a) sites.push_back({x, r * row_h});
-        if (long(sites.size()) >= n) break;
-    }
-    if (long(sites.size()) < n) throw std::runtime_error("area fraction too high for a lattice start");
-    for (std::size_t i = sites.size() - 1; i > 0; --i) std::swap(sites[i], sites[rng.index(i + 1)]);
-    sites.resize(std::size_t(n));
-    std::vector<double> vx(static_cast<std::size_t>(n)), vy(static_cast<std::size_t>(n));
-    for (long i = 0; i < n; ++i) {
-        vx[std::size_t(i)] = s.agitation * rng.normal();
-        vy[std::size_t(i)] = s.agitation * rng.normal();
-    }
-    const double mx = std::accumulate(vx.begin(), vx.end(), 0.0) / double(n);
-    const double my = std::accumulate(vy.begin(), vy.end(), 0.0) / double(n);
-    for (long i = 0; i < n; ++i) {
-        const double d = s.d_mean * (1 + s.polydispersity * rng.uniform(-1, 1));
-        eng.add_grain(sites[std::size_t(i)].first, sites[std::size_t(i)].second, vx[std::size_t(i)] - mx,
-                      vy[std::size_t(i)] - my - s.v0, 0.5 * d, s.m_mean * (d / s.d_mean) * (d / s.d_mean));
-    }
-    eng.finalize();
-    return eng;
-}
-
 double slope(const std::vector<double>& t, const std::vector<double>& v, std::size_t from) {
     double c0, c1, c00, c01, c11, ss;
     gsl_fit_linear(t.data() + from, 1, v.data() + from, 1, t.size() - from, &c0, &c1, &c00, &c01, &c11, &ss);
@@ -120,7 +63,7 @@ double slope(const std::vector<double>& t, const std::vector<double>& v, std::si
 // Runs one start to steady state (or t_max). Steady: over the trailing window the fitted slope of
 // the mean velocity is below drift_tol [m/s^2], i.e. braking balances gravity to that accuracy.
 RunResult run_pipe(const PipeSpec& s) {
-    Engine eng = build(s);
+    Engine eng = build_pipe(s);
     RunResult r;
     r.dt = eng.dt();
     r.grains = long(eng.size());
@@ -212,7 +155,7 @@ void validate(const ParameterSet& p) {
     if (p.real("wall_spacing") < p.real("d_wall") * (1 - 1e-12))
         p.reject("wall_spacing", "wall grains would overlap; must be at least d_wall");
     if (p.real("width") < 10 * p.real("d_mean")) p.reject("width", "must be at least 10 grain diameters");
-    for (double k : p.reals("kN_list")) (void)law_for(k, p.reals("eN_list").front(), p.real("m_mean"));
+    for (double k : p.reals("kN_list")) (void)pipe_law(k, p.reals("eN_list").front(), p.real("m_mean"));
 }
 
 std::string tag(double k, double e, const char* start) {
@@ -262,7 +205,7 @@ Result run(const RunContext& ctx) {
     r.scalar("resumed_points", double(checkpoint.resumed()), "1", "sweep points loaded from a checkpoint");
     const double m = p.real("m_mean");
     // The paper's t_col at k_N = 200000 N/m refers to e_N = 0.70 (gamma scaled with sqrt(k_N)).
-    r.scalar("t_col_k200000_e0.70", law_for(200000.0, 0.70, m).collision_time(m), "s",
+    r.scalar("t_col_k200000_e0.70", pipe_law(200000.0, 0.70, m).collision_time(m), "s",
              "free-wall contact duration at k_N = 2e5 N/m, e_N = 0.70 (Eq. 4)");
 
     const PipeSpec base = base_spec(p, &ctx);
@@ -299,7 +242,7 @@ Result run(const RunContext& ctx) {
                     is.x0 = 0.5 * (is.d_free + is.d_wall);
                     is.vx_toward = rr->vx_in;
                     is.vy = rr->vy_in;
-                    const LinearSpringDashpot law = law_for(ks[ki], es[ei], m);
+                    const LinearSpringDashpot law = pipe_law(ks[ki], es[ei], m);
                     is.dt = law.collision_time(m) / base.steps_per_contact;
                     double sum = 0;
                     const int npos = 10;

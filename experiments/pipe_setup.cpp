@@ -1,0 +1,56 @@
+#include "experiments/pipe_setup.hpp"
+
+#include <cmath>
+#include <numeric>
+#include <stdexcept>
+#include <vector>
+
+#include "core/rng_stream.hpp"
+
+namespace granrepro {
+
+LinearSpringDashpot pipe_law(double k_N, double e_N, double m_mean) {
+    return LinearSpringDashpot::from_restitution(k_N, e_N, m_mean);
+}
+
+PipeEngine<LinearSpringDashpot, CoulombShear> build_pipe(const PipeSpec& s) {
+    const LinearSpringDashpot law = pipe_law(s.k_N, s.e_N, s.m_mean);
+    const double d_min = s.d_mean * (1 - s.polydispersity), d_max = s.d_mean * (1 + s.polydispersity);
+    const double m_min = s.m_mean * (d_min / s.d_mean) * (d_min / s.d_mean);
+    const double dt = law.collision_time(0.5 * m_min) / s.steps_per_contact; // stiffest pair, Eq. (5)
+    PipeEngine<LinearSpringDashpot, CoulombShear> eng(law, CoulombShear{s.mu}, s.geo, dt, s.skin);
+    RngStream rng(s.seed, s.stream);
+    // Area fraction relative to the channel between the wall crests, (width - d_wall) x length.
+    const double area = (s.geo.width - 2 * s.geo.wall_radius) * s.geo.length;
+    const double mean_d2 = s.d_mean * s.d_mean * (1 + s.polydispersity * s.polydispersity / 3);
+    const long n = std::lround(s.phi * area / (M_PI / 4 * mean_d2));
+    const double x_lo = s.geo.wall_radius + 0.5 * d_max + 1e-6, x_hi = s.geo.width - x_lo;
+    std::vector<std::pair<double, double>> sites;
+    for (double a = std::sqrt(area / double(n) / (std::sqrt(3.0) / 2)); a >= d_max; a *= 0.995) {
+        sites.clear();
+        const int rows = int(s.geo.length / (a * std::sqrt(3.0) / 2));
+        const double row_h = s.geo.length / rows;
+        for (int r = 0; r < rows; ++r)
+            for (double x = x_lo + (r % 2) * 0.5 * a; x <= x_hi; x += a) sites.push_back({x, r * row_h});
+        if (long(sites.size()) >= n) break;
+    }
+    if (long(sites.size()) < n) throw std::runtime_error("area fraction too high for a lattice start");
+    for (std::size_t i = sites.size() - 1; i > 0; --i) std::swap(sites[i], sites[rng.index(i + 1)]);
+    sites.resize(std::size_t(n));
+    std::vector<double> vx(static_cast<std::size_t>(n)), vy(static_cast<std::size_t>(n));
+    for (long i = 0; i < n; ++i) {
+        vx[std::size_t(i)] = s.agitation * rng.normal();
+        vy[std::size_t(i)] = s.agitation * rng.normal();
+    }
+    const double mx = std::accumulate(vx.begin(), vx.end(), 0.0) / double(n);
+    const double my = std::accumulate(vy.begin(), vy.end(), 0.0) / double(n);
+    for (long i = 0; i < n; ++i) {
+        const double d = s.d_mean * (1 + s.polydispersity * rng.uniform(-1, 1));
+        eng.add_grain(sites[std::size_t(i)].first, sites[std::size_t(i)].second, vx[std::size_t(i)] - mx,
+                      vy[std::size_t(i)] - my - s.v0, 0.5 * d, s.m_mean * (d / s.d_mean) * (d / s.d_mean));
+    }
+    eng.finalize();
+    return eng;
+}
+
+} // namespace granrepro

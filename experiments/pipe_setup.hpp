@@ -1,0 +1,38 @@
+// The pipe of Schäfer & Wolf (1995) Fig. 6 as a ready engine: geometry, polydisperse grains on
+// a triangular lattice at the requested area fraction, random start velocities. Shared by the
+// bistable-pipe experiment and `granrepro bench soft`.
+#pragma once
+#include <cstdint>
+
+#include "engines/soft/pipe_engine.hpp"
+#include "models/coulomb_shear.hpp"
+#include "models/linear_spring_dashpot.hpp"
+
+namespace granrepro {
+
+struct PipeSpec {
+    PipeGeometry geo;
+    double d_mean = 1e-3;          // mean free-grain diameter [m]
+    double polydispersity = 0.1;   // diameters uniform in d_mean (1 ± this) [1]
+    double m_mean = 1e-6;          // mass at d_mean [kg]
+    double phi = 0.55;             // area fraction between the wall crests [1]
+    double mu = 0.5;               // Coulomb coefficient [1]
+    double k_N = 2000, e_N = 0.9;  // [N/m], free-wall restitution [1]
+    double v0 = 0, agitation = 1;  // start: mean downward speed, rms of random velocities [m/s]
+    double steps_per_contact = 50; // [1]
+    double skin = 0.1e-3;          // Verlet skin [m]
+    // Run control (used by the experiment): [s], [s], [m/s^2], [s], [s], [m/s]
+    double t_max = 1, window = 0.3, drift_tol = 0.3, t_average = 0.3, sample_dt = 0.005, v_abort = 40;
+    std::uint64_t seed = 1, stream = 0;
+};
+
+// Free-wall restitution e_N defines gamma_N, as for Figs. 3-5 (e_N = 0.70 <=> gamma_N = 1e4 1/s
+// at k_N = 2000 N/m and m = 1 mg).
+LinearSpringDashpot pipe_law(double k_N, double e_N, double m_mean);
+
+// Triangular lattice between the wall crests, N sites chosen at random; diameters uniform in
+// d_mean (1 ± polydispersity), masses ∝ d^2 (uniform areal density) with m(d_mean) = m_mean.
+// dt = t_col / steps_per_contact of the stiffest (lightest free-free) pair, Eq. (5).
+PipeEngine<LinearSpringDashpot, CoulombShear> build_pipe(const PipeSpec& s);
+
+} // namespace granrepro
