@@ -74,21 +74,12 @@ public:
         cfg_ = cfg;
         t_now_ = t0;
         p_.assign(n, Hot{});
-        w_.resize(n);
-        m_.assign(mass.begin(), mass.end());
-        last_t_.assign(n, -kInf);
-        burst_t0_.assign(n, -kInf);
-        ev_t_.assign(n, kInf);
-        col_t_.assign(n, kInf);
-        pcount_.assign(n, 0);
-        partner_.assign(n, -1);
-        kind_.assign(n, kNone);
-        arg_.assign(n, 0);
-        burst_n_.assign(n, 0);
+        mw_.assign(n, Mw{});
+        e_.assign(n, Book{});
         for (std::size_t i = 0; i < n; ++i) {
             if (!(radius[i] > 0.0) || !(mass[i] > 0.0)) throw InputError("ED: radius and mass must be > 0");
             p_[i] = Hot{pos[i].x, pos[i].y, vel[i].x, vel[i].y, t0, radius[i], 0, kNoPartner, -1};
-            w_[i] = spin.empty() ? 0.0 : spin[i];
+            mw_[i] = Mw{mass[i], spin.empty() ? 0.0 : spin[i]};
         }
         setup_geometry();
         for (std::size_t i = 0; i < n; ++i) {
@@ -136,7 +127,7 @@ public:
             throw InputError("ED: set_velocities size mismatch");
         synchronize();
         for (std::size_t i = 0; i < size(); ++i) {
-            if (!spin.empty()) w_[i] = spin[i];
+            if (!spin.empty()) mw_[i].w = spin[i];
         }
         // The "last partners cannot re-collide" shortcut assumed unchanged velocities.
         for (auto& h : p_) h.last_partner = kNoPartner;
@@ -164,20 +155,20 @@ public:
         const double dt = t_now_ - p_[i].tau;
         return {p_[i].vx + gx_ * dt, p_[i].vy + gy_ * dt};
     }
-    double spin(std::size_t i) const { return w_[i]; }
+    double spin(std::size_t i) const { return mw_[i].w; }
     double radius(std::size_t i) const { return p_[i].rad; }
-    double mass(std::size_t i) const { return m_[i]; }
-    double moment_of_inertia(std::size_t i) const { return cfg_.law.q * m_[i] * p_[i].rad * p_[i].rad; }
+    double mass(std::size_t i) const { return mw_[i].m; }
+    double moment_of_inertia(std::size_t i) const { return cfg_.law.q * mw_[i].m * p_[i].rad * p_[i].rad; }
     std::vector<Vec2> positions() const { return collect([this](std::size_t i) { return position(i); }); }
     std::vector<Vec2> velocities() const { return collect([this](std::size_t i) { return velocity(i); }); }
-    std::vector<double> spins() const { return {w_.begin(), w_.end()}; }
+    std::vector<double> spins() const { return gather(mw_, &Mw::w); }
     std::vector<double> radii() const { return gather(&Hot::rad); }
-    std::vector<double> masses() const { return {m_.begin(), m_.end()}; }
+    std::vector<double> masses() const { return gather(mw_, &Mw::m); }
     // Collisions (with particles and walls) each particle took part in.
     std::vector<std::uint64_t> collision_counts() const { return gather(&Hot::count); }
     std::uint64_t collision_count(std::size_t i) const { return p_[i].count; }
     int last_partner(std::size_t i) const { return p_[i].last_partner; }
-    double last_collision_time(std::size_t i) const { return last_t_[i]; }
+    double last_collision_time(std::size_t i) const { return e_[i].last_t; }
     std::uint64_t total_collisions() const { return pair_collisions_; } // particle-particle
     std::uint64_t wall_collisions() const { return wall_collisions_; }
     std::uint64_t elastic_collisions() const { return elastic_; }        // made elastic by TC
@@ -190,15 +181,15 @@ public:
         EdKineticEnergy k;
         for (std::size_t i = 0; i < size(); ++i) {
             const Vec2 v = velocity(i);
-            k.kx += 0.5 * m_[i] * v.x * v.x;
-            k.ky += 0.5 * m_[i] * v.y * v.y;
-            k.krot += 0.5 * moment_of_inertia(i) * w_[i] * w_[i];
+            k.kx += 0.5 * mw_[i].m * v.x * v.x;
+            k.ky += 0.5 * mw_[i].m * v.y * v.y;
+            k.krot += 0.5 * moment_of_inertia(i) * mw_[i].w * mw_[i].w;
         }
         return k;
     }
     Vec2 total_momentum() const {
         Vec2 p;
-        for (std::size_t i = 0; i < size(); ++i) p += m_[i] * velocity(i);
+        for (std::size_t i = 0; i < size(); ++i) p += mw_[i].m * velocity(i);
         return p;
     }
 
@@ -207,7 +198,7 @@ public:
         double worst = 0.0;
         for (std::size_t i = 0; i < size(); ++i) {
             const Vec2 pi = raw_position(static_cast<int>(i));
-            for_neighbour_cells(cell_[i], [&](int c) {
+            for_neighbour_cells(e_[i].cell, [&](int c) {
                 for (int j = head_[c]; j >= 0; j = p_[j].next) {
                     if (j <= static_cast<int>(i)) continue;
                     const Vec2 d = min_image(pi - raw_position(j));
@@ -230,7 +221,7 @@ public:
             const Probe p = probe(static_cast<int>(i), t_now_);
             double bt = kInf;
             int bj = -1;
-            for_neighbour_cells(cell_[i], [&](int c) { scan_cell(p, c, bt, bj); });
+            for_neighbour_cells(e_[i].cell, [&](int c) { scan_cell(p, c, bt, bj); });
             if (t_now_ + bt < best.t) best = {t_now_ + bt, static_cast<int>(i), bj};
         }
         if (best.i > best.j) std::swap(best.i, best.j);
@@ -239,8 +230,7 @@ public:
 
     std::size_t memory_bytes() const {
         auto b = [](const auto& v) { return v.capacity() * sizeof(typename std::decay_t<decltype(v)>::value_type); };
-        return b(p_) + b(w_) + b(m_) + b(last_t_) + b(burst_t0_) + b(ev_t_) + b(col_t_) + b(pcount_) +
-               b(partner_) + b(kind_) + b(arg_) + b(burst_n_) + b(cell_) + b(prev_) +
+        return b(p_) + b(mw_) + b(e_) +
                b(head_) + queue_.memory_bytes();
     }
 
@@ -250,12 +240,16 @@ public:
         s.config = cfg_;
         s.time = t_now_;
         s.x = gather(&Hot::x); s.y = gather(&Hot::y); s.vx = gather(&Hot::vx); s.vy = gather(&Hot::vy);
-        s.spin.assign(w_.begin(), w_.end()); s.local_time = gather(&Hot::tau); s.radius = gather(&Hot::rad); s.mass.assign(m_.begin(), m_.end());
-        s.last_collision_time.assign(last_t_.begin(), last_t_.end()); s.burst_start.assign(burst_t0_.begin(), burst_t0_.end()); s.predicted_time.assign(ev_t_.begin(), ev_t_.end());
-        s.collision_time.assign(col_t_.begin(), col_t_.end()); s.collision_count = gather(&Hot::count); s.partner_count.assign(pcount_.begin(), pcount_.end());
-        s.last_partner = gather(&Hot::last_partner); s.partner.assign(partner_.begin(), partner_.end());
-        s.event_kind.assign(kind_.begin(), kind_.end()); s.event_arg.assign(arg_.begin(), arg_.end()); s.burst_count.assign(burst_n_.begin(), burst_n_.end());
-        s.cell.assign(cell_.begin(), cell_.end()); s.cell_next = gather(&Hot::next); s.cell_prev.assign(prev_.begin(), prev_.end()); s.cell_head.assign(head_.begin(), head_.end());
+        s.spin = gather(mw_, &Mw::w); s.mass = gather(mw_, &Mw::m);
+        s.local_time = gather(&Hot::tau); s.radius = gather(&Hot::rad);
+        s.last_collision_time = gather(e_, &Book::last_t); s.burst_start = gather(e_, &Book::burst_t0);
+        s.predicted_time = gather(e_, &Book::ev_t); s.collision_time = gather(e_, &Book::col_t);
+        s.collision_count = gather(&Hot::count); s.partner_count = gather(e_, &Book::pcount);
+        s.last_partner = gather(&Hot::last_partner); s.partner = gather(e_, &Book::partner);
+        s.event_kind = gather(e_, &Book::kind); s.event_arg = gather(e_, &Book::arg);
+        s.burst_count = gather(e_, &Book::burst_n); s.cell = gather(e_, &Book::cell);
+        s.cell_next = gather(&Hot::next); s.cell_prev = gather(e_, &Book::prev);
+        s.cell_head.assign(head_.begin(), head_.end());
         s.pair_collisions = pair_collisions_; s.wall_collisions = wall_collisions_;
         s.elastic_collisions = elastic_; s.events = events_; s.crossings = crossings_;
         s.stale_events = stale_; s.max_overlap = max_overlap_;
@@ -279,18 +273,22 @@ public:
         for (std::size_t i = 0; i < n; ++i)
             p_[i] = Hot{s.x[i], s.y[i], s.vx[i], s.vy[i], s.local_time[i], s.radius[i],
                         s.collision_count[i], s.last_partner[i], s.cell_next[i]};
-        w_.assign(s.spin.begin(), s.spin.end()); m_.assign(s.mass.begin(), s.mass.end()); last_t_.assign(s.last_collision_time.begin(), s.last_collision_time.end()); burst_t0_.assign(s.burst_start.begin(), s.burst_start.end());
-        ev_t_.assign(s.predicted_time.begin(), s.predicted_time.end()); col_t_.assign(s.collision_time.begin(), s.collision_time.end());
-        pcount_.assign(s.partner_count.begin(), s.partner_count.end()); partner_.assign(s.partner.begin(), s.partner.end());
-        kind_.assign(s.event_kind.begin(), s.event_kind.end()); arg_.assign(s.event_arg.begin(), s.event_arg.end()); burst_n_.assign(s.burst_count.begin(), s.burst_count.end());
+        mw_.assign(n, Mw{});
+        e_.assign(n, Book{});
+        for (std::size_t i = 0; i < n; ++i) {
+            mw_[i] = Mw{s.mass[i], s.spin[i]};
+            e_[i] = Book{s.predicted_time[i], s.collision_time[i], s.partner_count[i], s.last_collision_time[i],
+                         s.burst_start[i], s.partner[i], s.cell[i], s.cell_prev[i], s.burst_count[i],
+                         s.event_kind[i], s.event_arg[i]};
+        }
         setup_geometry();
         if (s.cell_head.size() != static_cast<std::size_t>(ncx_) * static_cast<std::size_t>(ncy_))
             throw InputError("ED: EdState cell grid does not match its configuration");
-        cell_.assign(s.cell.begin(), s.cell.end()); prev_.assign(s.cell_prev.begin(), s.cell_prev.end()); head_.assign(s.cell_head.begin(), s.cell_head.end());
+        head_.assign(s.cell_head.begin(), s.cell_head.end());
         pair_collisions_ = s.pair_collisions; wall_collisions_ = s.wall_collisions;
         elastic_ = s.elastic_collisions; events_ = s.events; crossings_ = s.crossings;
         stale_ = s.stale_events; max_overlap_ = s.max_overlap;
-        queue_.rebuild(ev_t_);
+        queue_.rebuild(gather(e_, &Book::ev_t));
     }
 
     // Largest distance [m] by which any disk at time() lies outside its linked-list cell (0 when
@@ -299,7 +297,7 @@ public:
         double worst = 0.0;
         for (std::size_t i = 0; i < size(); ++i) {
             const Vec2 r = raw_position(static_cast<int>(i));
-            const int cx = cell_[i] % ncx_, cy = cell_[i] / ncx_;
+            const int cx = e_[i].cell % ncx_, cy = e_[i].cell / ncx_;
             const double lox = (cx == 0 && !cfg_.periodic_x) ? -kInf : cx * csx_;
             const double hix = (cx == ncx_ - 1 && !cfg_.periodic_x) ? kInf : (cx + 1) * csx_;
             const double loy = (cy == 0 && !cfg_.periodic_y) ? -kInf : cy * csy_;
@@ -403,21 +401,19 @@ private:
     void build_cells() {
         const std::size_t n = size();
         head_.assign(static_cast<std::size_t>(ncx_) * static_cast<std::size_t>(ncy_), -1);
-        cell_.assign(n, 0);
-        prev_.assign(n, -1);
         for (std::size_t i = 0; i < n; ++i) link(static_cast<int>(i), cell_of(p_[i].x, p_[i].y));
     }
     void link(int i, int c) {
-        cell_[i] = c;
-        prev_[i] = -1;
+        e_[i].cell = c;
+        e_[i].prev = -1;
         p_[i].next = head_[c];
-        if (head_[c] >= 0) prev_[head_[c]] = i;
+        if (head_[c] >= 0) e_[head_[c]].prev = i;
         head_[c] = i;
     }
     void unlink(int i) {
-        const int c = cell_[i];
-        if (prev_[i] >= 0) p_[prev_[i]].next = p_[i].next; else head_[c] = p_[i].next;
-        if (p_[i].next >= 0) prev_[p_[i].next] = prev_[i];
+        const int c = e_[i].cell;
+        if (e_[i].prev >= 0) p_[e_[i].prev].next = p_[i].next; else head_[c] = p_[i].next;
+        if (p_[i].next >= 0) e_[p_[i].next].prev = e_[i].prev;
     }
     // Calls f(cell) for the up to 9 cells around c (deduplicated: walled axes clip).
     template <class F>
@@ -485,29 +481,29 @@ private:
         const Probe p{i, p_[i].x, p_[i].y, p_[i].vx, p_[i].vy, p_[i].tau};
         double bt = kInf;
         int bj = -1;
-        for_neighbour_cells(cell_[i], [&](int c) { scan_cell(p, c, bt, bj); });
+        for_neighbour_cells(e_[i].cell, [&](int c) { scan_cell(p, c, bt, bj); });
         set_pair_prediction(i, bt, bj);
         schedule(i);
     }
     void set_pair_prediction(int i, double dt, int j) {
-        partner_[i] = j;
+        e_[i].partner = j;
         if (j >= 0) {
-            col_t_[i] = p_[i].tau + dt;
-            pcount_[i] = p_[j].count;
+            e_[i].col_t = p_[i].tau + dt;
+            e_[i].pcount = p_[j].count;
         } else {
-            col_t_[i] = kInf;
+            e_[i].col_t = kInf;
         }
     }
     // After entering a new cell along dir: scan only the newly adjacent cells.
     void predict_after_crossing(int i, int dir) {
-        if (partner_[i] >= 0 && p_[partner_[i]].count != pcount_[i]) {
+        if (e_[i].partner >= 0 && p_[e_[i].partner].count != e_[i].pcount) {
             predict_full(i);
             return;
         }
         const Probe p{i, p_[i].x, p_[i].y, p_[i].vx, p_[i].vy, p_[i].tau};
         double bt = kInf;
         int bj = -1;
-        const int cx = cell_[i] % ncx_, cy = cell_[i] / ncx_;
+        const int cx = e_[i].cell % ncx_, cy = e_[i].cell / ncx_;
         if (dir < 2) {
             int nx = cx + (dir == 1 ? 1 : -1);
             bool ok = true;
@@ -541,14 +537,14 @@ private:
                 }
             }
         }
-        if (bj >= 0 && p_[i].tau + bt < col_t_[i]) set_pair_prediction(i, bt, bj);
+        if (bj >= 0 && p_[i].tau + bt < e_[i].col_t) set_pair_prediction(i, bt, bj);
         schedule(i);
     }
 
     // Combine the stored pair prediction with wall and cell-exit times; queue the earliest.
     void schedule(int i) {
-        double best = col_t_[i];
-        std::uint8_t kind = partner_[i] >= 0 ? kCollision : kNone;
+        double best = e_[i].col_t;
+        std::uint8_t kind = e_[i].partner >= 0 ? kCollision : kNone;
         std::uint8_t arg = 0;
         const double t = p_[i].tau;
         const double a = p_[i].rad;
@@ -561,7 +557,7 @@ private:
             else tw = flight_roots::gap_closing_time(s * (p_[i].y - wl.position) - a, s * p_[i].vy, s * gy_);
             if (t + tw < best) { best = t + tw; kind = kWall; arg = static_cast<std::uint8_t>(w); }
         }
-        const int cx = cell_[i] % ncx_, cy = cell_[i] / ncx_;
+        const int cx = e_[i].cell % ncx_, cy = e_[i].cell / ncx_;
         // Cell boundaries; edge cells of walled axes extend to infinity.
         if (cfg_.periodic_x || cx > 0) {
             const double tc = flight_roots::gap_closing_time(p_[i].x - cx * csx_, p_[i].vx, gx_);
@@ -581,9 +577,9 @@ private:
             const double tc = flight_roots::gap_closing_time(hi - p_[i].y, -p_[i].vy, -gy_);
             if (t + tc < best) { best = t + tc; kind = kCross; arg = 3; }
         }
-        ev_t_[i] = best;
-        kind_[i] = kind;
-        arg_[i] = arg;
+        e_[i].ev_t = best;
+        e_[i].kind = kind;
+        e_[i].arg = arg;
         queue_.update(i, best);
     }
 
@@ -640,12 +636,12 @@ private:
                 t_last_event_ = t;
             }
             t_now_ = t;
-            switch (kind_[i]) {
+            switch (e_[i].kind) {
             case kCross: do_cross(i, t); break;
-            case kWall: do_wall<kRough>(i, arg_[i], t, obs); break;
+            case kWall: do_wall<kRough>(i, e_[i].arg, t, obs); break;
             case kCollision: {
-                const int j = partner_[i];
-                if (p_[j].count != pcount_[i]) {
+                const int j = e_[i].partner;
+                if (p_[j].count != e_[i].pcount) {
                     ++stale_;
                     advance(i, t);
                     predict_full(i);
@@ -668,11 +664,11 @@ private:
     }
     void note_collision(int i, double t) {
         ++p_[i].count;
-        if (t - burst_t0_[i] > window_) {
-            burst_t0_[i] = t;
-            burst_n_[i] = 0;
+        if (t - e_[i].burst_t0 > window_) {
+            e_[i].burst_t0 = t;
+            e_[i].burst_n = 0;
         }
-        if (++burst_n_[i] > cfg_.collapse_limit) {
+        if (++e_[i].burst_n > cfg_.collapse_limit) {
             std::ostringstream os;
             os << "ED: inelastic collapse: particle " << i << " took part in more than "
                << cfg_.collapse_limit << " collisions within " << window_ << " s (at t = " << t
@@ -680,16 +676,16 @@ private:
                << "or weaker dissipation.";
             throw std::runtime_error(os.str());
         }
-        last_t_[i] = t;
+        e_[i].last_t = t;
     }
-    bool tc_elastic(double t, int i) const { return cfg_.t_c > 0.0 && t - last_t_[i] <= cfg_.t_c; }
+    bool tc_elastic(double t, int i) const { return cfg_.t_c > 0.0 && t - e_[i].last_t <= cfg_.t_c; }
 
     void do_cross(int i, double t) {
         ++crossings_;
         advance(i, t);
         unlink(i);
-        const int dir = arg_[i];
-        int cx = cell_[i] % ncx_, cy = cell_[i] / ncx_;
+        const int dir = e_[i].arg;
+        int cx = e_[i].cell % ncx_, cy = e_[i].cell / ncx_;
         switch (dir) {
         case 0: if (--cx < 0) { cx += ncx_; p_[i].x += cfg_.lx; } break;
         case 1: if (++cx == ncx_) { cx = 0; p_[i].x -= cfg_.lx; } break;
@@ -713,14 +709,14 @@ private:
         const bool el = tc_elastic(t, i) || tc_elastic(t, j);
         const RoughDiskCollision& law = el ? law_tc_ : law_;
         const Vec2 vi{p_[i].vx, p_[i].vy}, vj{p_[j].vx, p_[j].vy};
-        const auto res = law.template collide<kRough>(vi, w_[i], m_[i], p_[i].rad, vj, w_[j], m_[j], p_[j].rad, n);
-        p_[i].vx += res.dP.x / m_[i];
-        p_[i].vy += res.dP.y / m_[i];
-        p_[j].vx -= res.dP.x / m_[j];
-        p_[j].vy -= res.dP.y / m_[j];
+        const auto res = law.template collide<kRough>(vi, mw_[i].w, mw_[i].m, p_[i].rad, vj, mw_[j].w, mw_[j].m, p_[j].rad, n);
+        p_[i].vx += res.dP.x / mw_[i].m;
+        p_[i].vy += res.dP.y / mw_[i].m;
+        p_[j].vx -= res.dP.x / mw_[j].m;
+        p_[j].vy -= res.dP.y / mw_[j].m;
         if constexpr (kRough) {
-            w_[i] += res.dw1;
-            w_[j] += res.dw2;
+            mw_[i].w += res.dw1;
+            mw_[j].w += res.dw2;
         }
         note_collision(i, t);
         note_collision(j, t);
@@ -757,10 +753,10 @@ private:
         const bool el = tc_elastic(t, i);
         const RoughDiskCollision& law = el ? wlaw_tc_[w] : wlaw_[w];
         const Vec2 vi{p_[i].vx, p_[i].vy};
-        const auto res = law.template collide<kRough>(vi, w_[i], m_[i], p_[i].rad, Vec2{}, 0.0, kInf, 0.0, n);
-        p_[i].vx += res.dP.x / m_[i];
-        p_[i].vy += res.dP.y / m_[i];
-        if constexpr (kRough) w_[i] += res.dw1;
+        const auto res = law.template collide<kRough>(vi, mw_[i].w, mw_[i].m, p_[i].rad, Vec2{}, 0.0, kInf, 0.0, n);
+        p_[i].vx += res.dP.x / mw_[i].m;
+        p_[i].vy += res.dP.y / mw_[i].m;
+        if constexpr (kRough) mw_[i].w += res.dw1;
         note_collision(i, t);
         ++wall_collisions_;
         if (el) ++elastic_;
@@ -814,12 +810,34 @@ private:
         return out;
     }
     HugeVector<Hot> p_;
-    HugeVector<double> w_, m_, last_t_, burst_t0_, ev_t_, col_t_;
-    HugeVector<std::uint64_t> pcount_;
-    HugeVector<std::int32_t> partner_;
-    HugeVector<std::uint8_t> kind_, arg_;
-    HugeVector<std::uint32_t> burst_n_;
-    HugeVector<std::int32_t> cell_, prev_, head_;
+    // Event bookkeeping of a particle, one cache line.
+    struct alignas(64) Book {
+        double ev_t = kInf;        // pending event time (the queue key) [s]
+        double col_t = kInf;       // best predicted pair collision [s]
+        std::uint64_t pcount = 0;  // partner's collision count at prediction
+        double last_t = -kInf;     // last collision [s] (TC model, Eq. 7)
+        double burst_t0 = -kInf;   // collapse-guard window start [s]
+        std::int32_t partner = -1; // predicted partner, -1 none
+        std::int32_t cell = 0;     // linked-list cell
+        std::int32_t prev = -1;    // previous particle in the cell list
+        std::uint32_t burst_n = 0; // collisions in the current guard window
+        std::uint8_t kind = kNone; // pending event type
+        std::uint8_t arg = 0;      // wall index or crossing direction
+    };
+    static_assert(sizeof(Book) == 64);
+    struct Mw {
+        double m = 0.0; // mass [kg]
+        double w = 0.0; // spin [1/s]
+    };
+    template <class S, class T>
+    static std::vector<T> gather(const HugeVector<S>& v, T S::*f) {
+        std::vector<T> out(v.size());
+        for (std::size_t i = 0; i < v.size(); ++i) out[i] = v[i].*f;
+        return out;
+    }
+    HugeVector<Book> e_;
+    HugeVector<Mw> mw_;
+    HugeVector<std::int32_t> head_;
     Queue queue_;
 
     std::uint64_t pair_collisions_ = 0, wall_collisions_ = 0, elastic_ = 0, events_ = 0,
