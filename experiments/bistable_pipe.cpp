@@ -283,6 +283,8 @@ Result run(const RunContext& ctx) {
                  "steady speed of the slow start at the largest e_N");
         r.scalar(std::string("v_fast_top_") + kt, top_fast.steady ? -top_fast.v_mean : NAN, "m/s",
                  "steady speed of the fast start at the largest e_N");
+        r.scalar(std::string("impact_link_top_") + kt, slow_link.back(), "1",
+                 "Fig. 4-type impact Δv_y at the measured impact velocities over the pipe's Δv_y (slow start, largest e_N)");
     }
     r.scalar("steady_runs", steady_count, "1", "runs that reached a steady state");
     r.scalar("eq9_worst_deviation", steady_count ? worst_balance : NAN, "1",
