@@ -15,6 +15,8 @@
 #include "core/input_error.hpp"
 #include "experiments/impact_shot.hpp"
 #include "experiments/pipe_setup.hpp"
+#include "engines/dsmc/dsmc_bench.hpp"
+#include "engines/ed/ed_bench.hpp"
 #include "models/linear_spring_dashpot.hpp"
 
 namespace granrepro {
@@ -133,16 +135,101 @@ double lammps_free_grain_rate(long steps) {
     return double(n_free) * double(steps) / loop;
 }
 
+double median(std::vector<double> v) {
+    std::sort(v.begin(), v.end());
+    return v[v.size() / 2];
+}
+
+// Median over opt.repeats runs of each quantity that `run` returns.
+template <class Run>
+std::vector<double> medians(int repeats, Run run) {
+    std::vector<std::vector<double>> samples;
+    for (int k = 0; k < repeats; ++k) {
+        const std::vector<double> q = run();
+        samples.resize(q.size());
+        for (std::size_t i = 0; i < q.size(); ++i) samples[i].push_back(q[i]);
+    }
+    std::vector<double> out;
+    for (auto& s : samples) out.push_back(median(s));
+    return out;
+}
+
+void report_simple(const char* name, const char* description, Measurement (*fn)(double), const BenchOptions& opt) {
+    std::vector<double> rates;
+    const char* unit = "";
+    for (int k = 0; k < opt.repeats; ++k) {
+        const Measurement m = fn(opt.seconds);
+        rates.push_back(m.rate);
+        unit = m.unit;
+    }
+    std::sort(rates.begin(), rates.end());
+    std::printf("bench %s: %s\n  median %.4g %s over %d runs (min %.4g, max %.4g)\n", name, description,
+                median(rates), unit, opt.repeats, rates.front(), rates.back());
+}
+
+void bench_impact_report(const BenchOptions& opt) {
+    report_simple("impact", "few-body soft-sphere impacts on a wall row (Schäfer-Wolf Fig. 4 set-up)", bench_impact, opt);
+}
+
+void bench_soft_report(const BenchOptions& opt) {
+    std::vector<double> ours;
+    for (int k = 0; k < opt.repeats; ++k) ours.push_back(bench_soft(opt.seconds).rate);
+    const double m = median(ours);
+    std::printf("bench soft: many-body soft-sphere pipe, ~1500 free grains (Schäfer-Wolf Fig. 6 set-up), one core\n"
+                "  granrepro: median %.4g free-grain steps/s over %d runs\n", m, opt.repeats);
+    std::vector<double> lmp;
+    for (int k = 0; k < opt.repeats; ++k) {
+        const double rate = lammps_free_grain_rate(std::max(2000L, long(m * opt.seconds / 1500.0 / 3)));
+        if (std::isnan(rate)) break;
+        lmp.push_back(rate);
+    }
+    if (lmp.empty()) {
+        std::printf("  LAMMPS: not installed (Debian package lammps) or failed; no comparison\n");
+        return;
+    }
+    std::printf("  LAMMPS (same pipe, gran/hooke): median %.4g free-grain steps/s over %zu runs\n"
+                "  ratio granrepro / LAMMPS = %.2f\n", median(lmp), lmp.size(), m / median(lmp));
+}
+
+// Elastic disks at rho = 0.25, periodic: events and collisions per CPU second from N = 1e3 to 1e6.
+void bench_ed_report(const BenchOptions& opt) {
+    std::printf("bench ed: elastic smooth disks, periodic box, rho = 0.25, one core; medians of %d runs\n", opt.repeats);
+    std::printf("  %9s %14s %14s %12s %14s\n", "N", "events/s", "collisions/s", "bytes/part.", "ns/event");
+    double ns_1e4 = NAN, ns_1e6 = NAN;
+    for (std::size_t n : {std::size_t(1000), std::size_t(10000), std::size_t(100000), std::size_t(1000000)}) {
+        const auto q = medians(opt.repeats, [&] {
+            const EdBenchResult r = run_ed_benchmark(n, 0.25, opt.seconds);
+            return std::vector<double>{r.events_per_second, r.collisions_per_second, r.bytes_per_particle};
+        });
+        const double ns = 1e9 / q[0];
+        if (n == 10000) ns_1e4 = ns;
+        if (n == 1000000) ns_1e6 = ns;
+        std::printf("  %9zu %14.4g %14.4g %12.0f %14.1f\n", n, q[0], q[1], q[2], ns);
+    }
+    std::printf("  per-event cost N = 1e6 over N = 1e4: %.2f\n", ns_1e6 / ns_1e4);
+}
+
+void bench_dsmc_report(const BenchOptions& opt) {
+    std::printf("bench dsmc: elastic smooth disks, periodic box, rho = 0.25, N = 1e5, one core; medians of %d runs\n",
+                opt.repeats);
+    const auto q = medians(opt.repeats, [&] {
+        const DsmcBenchResult r = run_dsmc_benchmark(100000, 0.25, opt.seconds);
+        return std::vector<double>{r.collisions_per_second, r.bytes_per_particle};
+    });
+    std::printf("  collisions/s %.4g, bytes/particle %.0f\n", q[0], q[1]);
+}
+
 struct Target {
     const char* name;
-    const char* description;
-    std::function<Measurement(double)> run;
+    void (*run)(const BenchOptions&);
 };
 
 const std::vector<Target>& targets() {
     static const std::vector<Target> t = {
-        {"impact", "few-body soft-sphere impacts on a wall row (Schäfer-Wolf Fig. 4 set-up)", bench_impact},
-        {"soft", "many-body soft-sphere pipe, ~1500 free grains (Schäfer-Wolf Fig. 6 set-up), one core", bench_soft},
+        {"impact", bench_impact_report},
+        {"soft", bench_soft_report},
+        {"ed", bench_ed_report},
+        {"dsmc", bench_dsmc_report},
     };
     return t;
 }
@@ -156,37 +243,11 @@ std::string bench_targets() {
 }
 
 int run_bench(const std::string& name, const BenchOptions& opt) {
-    for (const auto& t : targets()) {
-        if (name != t.name) continue;
-        std::vector<double> rates;
-        const char* unit = "";
-        for (int k = 0; k < opt.repeats; ++k) {
-            const Measurement m = t.run(opt.seconds);
-            rates.push_back(m.rate);
-            unit = m.unit;
+    for (const auto& t : targets())
+        if (name == t.name) {
+            t.run(opt);
+            return 0;
         }
-        std::sort(rates.begin(), rates.end());
-        const double median = rates[rates.size() / 2];
-        std::printf("bench %s: %s\n  median %.4g %s over %d runs (min %.4g, max %.4g)\n", t.name, t.description,
-                    median, unit, opt.repeats, rates.front(), rates.back());
-        if (name == "soft") {
-            std::vector<double> lmp;
-            for (int k = 0; k < opt.repeats; ++k) {
-                const double rate = lammps_free_grain_rate(std::max(2000L, long(median * opt.seconds / 1500.0 / 3)));
-                if (std::isnan(rate)) break;
-                lmp.push_back(rate);
-            }
-            if (lmp.empty()) {
-                std::printf("  LAMMPS: not installed (Debian package lammps) or failed; no comparison\n");
-            } else {
-                std::sort(lmp.begin(), lmp.end());
-                std::printf("  LAMMPS (same pipe, gran/hooke): median %.4g free-grain steps/s over %zu runs\n"
-                            "  ratio granrepro / LAMMPS = %.2f\n", lmp[lmp.size() / 2], lmp.size(),
-                            median / lmp[lmp.size() / 2]);
-            }
-        }
-        return 0;
-    }
     throw InputError("bench " + name + ": unknown target; known: " + bench_targets());
 }
 
