@@ -292,3 +292,36 @@ TEST(EdEngine, RejectsBadInput) {
     cfg.law.r = 1.5;
     EXPECT_THROW(EdEngine(cfg, {{0.001, 0.001}}, {{0, 0}}, {0.5 * kD}, {kM}), InputError);
 }
+
+TEST(EdEngine, PolydisperseGasMatchesBruteForceAndConserves) {
+    // Bidisperse disks (d and 0.7 d, masses ~ area) in a box with walls on x, periodic in y.
+    const std::size_t n = 500;
+    std::vector<double> rad(n), mass(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        rad[i] = (i % 2 ? 0.35 : 0.5) * kD;
+        mass[i] = kM * (rad[i] / (0.5 * kD)) * (rad[i] / (0.5 * kD));
+    }
+    const double l = 30 * kD;
+    EdConfig cfg;
+    cfg.lx = cfg.ly = l;
+    cfg.periodic_x = false;
+    cfg.walls = {EdWall{0, 0.0, +1}, EdWall{0, l, -1}};
+    RngStream rng(8, 8);
+    const auto pos = random_positions(rad, l, l, false, true, rng);
+    EdEngine e(cfg, pos, maxwellian_velocities(mass, 1.0, rng), rad, mass);
+    const double k0 = e.kinetic_energy().total();
+    for (int round = 0; round < 10; ++round) {
+        e.synchronize();
+        const auto ref = brute_force_next(e);
+        CollisionRecord got;
+        e.run_collisions(1, [&](const CollisionRecord& r) { if (r.j >= 0) got = r; });
+        EXPECT_NEAR(got.t, ref.t, 1e-12 * (1 + ref.t));
+        EXPECT_EQ(std::min(got.i, got.j), ref.i);
+        EXPECT_EQ(std::max(got.i, got.j), ref.j);
+        e.run_collisions(500);
+    }
+    EXPECT_NEAR(e.kinetic_energy().total() / k0, 1.0, 1e-11);
+    EXPECT_GT(e.wall_collisions(), 0u);
+    EXPECT_LT(e.max_overlap(), 1e-9 * kD);
+    EXPECT_LT(e.current_max_overlap(), 1e-9 * kD);
+}

@@ -1,5 +1,5 @@
 // Both event queues against a brute-force minimum over (time, id), in an ED-like access pattern.
-#include "engines/ed/binary_heap_queue.hpp"
+#include "engines/ed/dary_heap_queue.hpp"
 #include "engines/ed/calendar_queue.hpp"
 
 #include <cmath>
@@ -10,7 +10,7 @@
 
 template <class Q>
 class EdEventQueue : public ::testing::Test {};
-using QueueTypes = ::testing::Types<granrepro::BinaryHeapQueue, granrepro::CalendarQueue>;
+using QueueTypes = ::testing::Types<granrepro::BinaryHeapQueue, granrepro::QuaternaryHeapQueue, granrepro::CalendarQueue>;
 TYPED_TEST_SUITE(EdEventQueue, QueueTypes);
 
 TYPED_TEST(EdEventQueue, TopIsMinimumOverTimeAndId) {

@@ -45,6 +45,8 @@ public:
     std::int32_t top_id() { find_min(); return cache_; }
     double top_time() { find_min(); return t_[cache_]; }
     double time_of(std::int32_t id) const { return t_[id]; }
+    // No cheap guess of the next-but-one entry: no prefetching.
+    std::int32_t runner_up() const { return -1; }
 
     void update(std::int32_t id, double t) {
         remove(id);

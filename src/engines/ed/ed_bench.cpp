@@ -12,12 +12,13 @@ namespace granrepro {
 namespace {
 
 template <class Queue>
-EdBenchResult bench(std::size_t n, double density, double budget) {
+EdBenchResult bench(std::size_t n, double density, double budget, double csf) {
     if (n < 16 || !(density > 0.0) || !(density < 0.78)) throw InputError("bench ed: need N >= 16 and 0 < density < 0.78");
     const double d = 1e-3; // [m], the paper's diameter
     const double l = d * std::sqrt(static_cast<double>(n) * M_PI / (4.0 * density));
     EdConfig cfg;
     cfg.lx = cfg.ly = l;
+    cfg.cell_size_factor = csf;
     const std::vector<double> rad(n, 0.5 * d), mass(n, 1e-6);
     RngStream rng(12345, 0);
     const auto pos = square_lattice_positions(n, l, l);
@@ -48,9 +49,14 @@ EdBenchResult bench(std::size_t n, double density, double budget) {
 
 } // namespace
 
-EdBenchResult run_ed_benchmark(std::size_t n, double density, double seconds_budget, bool calendar) {
-    return calendar ? bench<CalendarQueue>(n, density, seconds_budget)
-                    : bench<BinaryHeapQueue>(n, density, seconds_budget);
+EdBenchResult run_ed_benchmark(std::size_t n, double density, double seconds_budget, int queue,
+                               double cell_size_factor) {
+    switch (queue) {
+    case 1: return bench<CalendarQueue>(n, density, seconds_budget, cell_size_factor);
+    case 2: return bench<BinaryHeapQueue>(n, density, seconds_budget, cell_size_factor);
+    case 4: return bench<QuaternaryHeapQueue>(n, density, seconds_budget, cell_size_factor);
+    default: return bench<EdEngine::QueueType>(n, density, seconds_budget, cell_size_factor);
+    }
 }
 
 } // namespace granrepro

@@ -18,7 +18,9 @@ struct EdBenchResult {
     double max_overlap_over_d = 0.0;   // [-]
 };
 
-// calendar = true uses CalendarQueue instead of the default BinaryHeapQueue.
-EdBenchResult run_ed_benchmark(std::size_t n, double density, double seconds_budget, bool calendar = false);
+// queue: 0 = engine default (EdEngine), 1 = CalendarQueue, 2 = BinaryHeapQueue, 4 = QuaternaryHeapQueue.
+// cell_size_factor: linked-cell edge in units of the diameter (>= 1; EdConfig::cell_size_factor).
+EdBenchResult run_ed_benchmark(std::size_t n, double density, double seconds_budget, int queue = 0,
+                               double cell_size_factor = 1.0);
 
 } // namespace granrepro

@@ -29,7 +29,7 @@
 #include "core/collision_record.hpp"
 #include "core/input_error.hpp"
 #include "core/vec2.hpp"
-#include "engines/ed/binary_heap_queue.hpp"
+#include "engines/ed/dary_heap_queue.hpp"
 #include "engines/ed/calendar_queue.hpp"
 #include "engines/ed/ed_config.hpp"
 #include "engines/ed/ed_kinetic_energy.hpp"
@@ -55,6 +55,7 @@ template <class Queue>
 class BasicEdEngine {
 public:
     using Observer = std::function<void(const CollisionRecord&)>;
+    using QueueType = Queue;
 
     // The earliest pair collision from a given state (used to test the cell search).
     struct PairEvent {
@@ -628,6 +629,12 @@ private:
             const double t = queue_.top_time();
             if (!(t <= t_end)) break;
             const int i = queue_.top_id();
+            // Start loading the probable next particle while this event is processed: at large
+            // N nearly every particle access is a cache miss.
+            if (const int nx = queue_.runner_up(); nx >= 0) {
+                __builtin_prefetch(&p_[nx]);
+                __builtin_prefetch(&e_[nx]);
+            }
             ++events_;
             if (t == t_last_event_) {
                 if (++zero_time_run_ > kZeroTimeLimit) fail_loop(i, t);
