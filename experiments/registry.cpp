@@ -9,6 +9,8 @@ namespace experiments {
 Experiment brake_failure();
 Experiment emergency_brake();
 Experiment bistable_pipe();
+Experiment impact_parameter();
+Experiment cooling();
 } // namespace experiments
 
 const std::vector<Experiment>& experiment_registry() {
@@ -16,6 +18,8 @@ const std::vector<Experiment>& experiment_registry() {
         experiments::brake_failure(),
         experiments::emergency_brake(),
         experiments::bistable_pipe(),
+        experiments::impact_parameter(),
+        experiments::cooling(),
     };
     return table;
 }

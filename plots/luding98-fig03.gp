@@ -1,0 +1,22 @@
+# Luding (1998) Fig. 3: normalised P(b/d) of the ED run of Fig. 2 in successive time windows
+# (columns P_t<start> of the table; the window starts are in the column names).
+# Variables set by granrepro: datadir, outbase.
+set datafile separator "\t"
+f = datadir.'/impact_parameter_ed.tsv'
+header = system("head -1 ".f)
+ncol = words(header)
+colors = "#0072B2 #D55E00 #009E73 #CC79A7 #E69F00 #56B4E9 #000000"
+do for [fmt in "png pdf"] {
+  if (fmt eq "png") { set terminal pngcairo size 800,600 enhanced font "Sans,11" }
+  else { set terminal pdfcairo size 5.5in,4.1in enhanced font "Sans,10" }
+  set output outbase.'.'.fmt
+  set xlabel "b/d"
+  set ylabel "P(b/d)"
+  set xrange [0:1]
+  set grid lc rgb "#dddddd"
+  set key top left box opaque
+  set title "impact parameter, ED, N = 316^2, ρ = 0.25, r = 0.8 (windows start at the given time)"
+  plot for [c=2:ncol:2] f using 1:c:(column(c+1)) skip 1 with yerrorlines lw 1.5 pt 7 ps 0.5 \
+       lc rgb word(colors, (c/2-1)%7+1) title sprintf("t ≥ %s s", substr(word(header, c), 4, 20))
+  unset output
+}
