@@ -109,10 +109,10 @@ std::string format_claim_table(const std::string& experiment, const std::vector<
         return s + std::string(w - s.size(), ' ');
     };
     os << "check " << experiment << "\n";
-    os << "  " << pad("claim", 30) << pad("paper / relation", 24) << pad("measured", 12) << pad("tolerance", 11)
+    os << "  " << pad("claim", 36) << pad("paper / relation", 24) << pad("measured", 12) << pad("tolerance", 11)
        << "verdict\n";
     for (const auto& r : results) {
-        os << "  " << pad(r.claim.id, 30) << pad(r.expected_text, 24)
+        os << "  " << pad(r.claim.id, 36) << pad(r.expected_text, 24)
            << pad(r.measured ? num(*r.measured) : "missing", 12) << pad(r.tolerance_text, 11)
            << to_string(r.verdict) << "\n";
         if (r.verdict == Verdict::KnownDeviation) os << "      known deviation: " << r.claim.known_deviation << "\n";
