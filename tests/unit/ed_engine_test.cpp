@@ -325,3 +325,48 @@ TEST(EdEngine, PolydisperseGasMatchesBruteForceAndConserves) {
     EXPECT_LT(e.max_overlap(), 1e-9 * kD);
     EXPECT_LT(e.current_max_overlap(), 1e-9 * kD);
 }
+
+TEST(EdEngine, TcElasticMeansEnergyConservingUnlessFrictionKept) {
+    for (bool keep : {false, true}) {
+        EdConfig cfg;
+        cfg.law = RoughDiskCollision{0.5, 0.5, 0.3, 0.5};
+        cfg.t_c = 1e30;
+        cfg.tc_keep_friction = keep;
+        auto e = random_gas<EdEngine>(100, 0.3, 13, cfg);
+        double k_prev = e.kinetic_energy().total();
+        int elastic = 0, lossy_elastic = 0;
+        e.run_collisions(300, [&](const CollisionRecord& r) {
+            const double k = e.kinetic_energy().total();
+            if (r.elastic) {
+                ++elastic;
+                if (k < k_prev * (1 - 1e-9)) ++lossy_elastic;
+                EXPECT_LE(k, k_prev * (1 + 1e-12)); // never gains energy
+            }
+            k_prev = k;
+        });
+        EXPECT_GT(elastic, 200);
+        if (keep) EXPECT_GT(lossy_elastic, 10); // r = 1 but friction still dissipates
+        else EXPECT_EQ(lossy_elastic, 0);       // r = 1, no tangential impulse: exactly elastic
+    }
+}
+
+TEST(EdEngine, CollisionRecordGeometry) {
+    EdConfig cfg;
+    cfg.law = RoughDiskCollision{0.9, 0.3, 0.2, 0.5};
+    auto e = random_gas<EdEngine>(400, 0.3, 17, cfg);
+    int n = 0;
+    e.run_collisions(2000, [&](const CollisionRecord& r) {
+        ASSERT_GE(r.j, 0);
+        ++n;
+        const Vec2 d = r.ri - r.rj;
+        EXPECT_NEAR(norm(d), kD, 1e-12 * kD);            // contact: |r_i - r_j| = (d_i + d_j)/2
+        EXPECT_NEAR(norm(r.n), 1.0, 1e-14);
+        EXPECT_NEAR(cross(d, r.n), 0.0, 1e-15 * kD);      // n along r_i - r_j ...
+        EXPECT_GT(dot(d, r.n), 0.0);                      // ... pointing from j to i
+        EXPECT_GT(dot(r.dP, r.n), 0.0);                   // repulsive normal impulse on i
+        EXPECT_GE(r.b_over_d, 0.0);
+        EXPECT_LE(r.b_over_d, 1.0);
+        EXPECT_NEAR(r.t, e.time(), 0.0);
+    });
+    EXPECT_EQ(n, 2000);
+}

@@ -190,3 +190,18 @@ TEST(EdCheckpoint, ResumedRunIsBitIdentical) {
     EXPECT_EQ(sa.collision_count, sb.collision_count);
     EXPECT_EQ(sa.events, sb.events);
 }
+
+// Molecular chaos in an elastic gas (Luding Sec. 3.2): P(b/d) = 1 on [0, 1] in 2D. Ten bins of
+// 2e5 collisions, each within 4.5 binomial sigma of 1/10.
+TEST(EdImpactParameter, UniformInElasticGas) {
+    const std::size_t n = 4096;
+    RngStream rng(9, 9);
+    const std::vector<double> mass(n, kM);
+    auto e = lattice_gas(n, 0.25, maxwellian_velocities(mass, 1.0, rng), 10.0);
+    std::vector<double> hist(10, 0.0);
+    const std::uint64_t m = 200000;
+    e.run_collisions(m, [&](const CollisionRecord& r) { hist[std::min<std::size_t>(9, static_cast<std::size_t>(r.b_over_d * 10))] += 1; });
+    const double p = 0.1, sigma = std::sqrt(static_cast<double>(m) * p * (1 - p));
+    for (std::size_t k = 0; k < hist.size(); ++k)
+        EXPECT_NEAR(hist[k], static_cast<double>(m) * p, 4.5 * sigma) << "bin " << k;
+}
