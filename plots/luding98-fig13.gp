@@ -14,7 +14,7 @@ do for [fmt in "png pdf"] {
   set palette defined (0 "black", 1 "white")
   set cbrange [0:1e4]
   set style fill solid 1.0 noborder
-  set object 1 rectangle from graph 0,0 to graph 1,1 behind fillcolor rgb "#5f87af" fillstyle solid 0.25
+  set object 1 rectangle from graph 0,0 to graph 1,1 behind fillcolor rgb "#6f93b8" fillstyle solid 0.6
   set size ratio -1
   set xrange [-0.5:20.7]
   set xtics 0,10,20
