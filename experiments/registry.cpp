@@ -11,6 +11,7 @@ Experiment emergency_brake();
 Experiment bistable_pipe();
 Experiment impact_parameter();
 Experiment cooling();
+Experiment pipe_arching();
 } // namespace experiments
 
 const std::vector<Experiment>& experiment_registry() {
@@ -20,6 +21,7 @@ const std::vector<Experiment>& experiment_registry() {
         experiments::bistable_pipe(),
         experiments::impact_parameter(),
         experiments::cooling(),
+        experiments::pipe_arching(),
     };
     return table;
 }
