@@ -1,0 +1,40 @@
+# Luding (1998) Fig. 12: P(N_c), the distribution of collisions per unit time over the last
+# Δt = t/2, at our instants nearest to the paper's C/N (fig12_selection.tsv: paper C/N, ours, t).
+# Symbols: measured (error bars: counting). Lines: fits by binned maximum likelihood of
+# Eq. (20) Poisson (dotted), Eq. (21) exponential (dashed), Eq. (22) power law (solid), same colour.
+# (a) homogeneous times; (b) clustering sets in; (c) late times. Variables: datadir, outbase.
+set datafile separator "\t"
+set datafile missing "NaN"
+sel = datadir.'/fig12_selection.tsv'
+n = int(system("awk 'END{print NR-1}' ".sel))
+cc(k) = system(sprintf("awk -F'\t' 'NR==%d{printf \"%%.0f\", $2}' ", k+2).sel)
+tt(k) = system(sprintf("awk -F'\t' 'NR==%d{printf \"%%.3g\", $3}' ", k+2).sel)
+lab(k) = sprintf("C/N = %s (t = %s s)", cc(k), tt(k))
+f(k) = datadir.'/pnc_'.k.'.tsv'
+colors = "#0072B2 #D55E00 #009E73 #CC79A7 #E69F00 #56B4E9 #000000"
+col(k) = word(colors, k%7+1)
+do for [fmt in "png pdf"] {
+  if (fmt eq "png") { set terminal pngcairo size 1500,520 enhanced font "Sans,11" }
+  else { set terminal pdfcairo size 11in,3.8in enhanced font "Sans,9" }
+  set output outbase.'.'.fmt
+  set multiplot layout 1,3
+  set grid lc rgb "#dddddd"
+  set logscale y
+  set format y "10^{%L}"
+  set xlabel "N_c [s^{-1}]"
+  set ylabel "P(N_c) [s]"
+  set key top right box opaque font ",9"
+  set title "(a) Poisson Eq. (20), exponential Eq. (21)"
+  plot for [k=0:1] f(k) using 1:2:3 skip 1 with yerrorbars pt 7 ps 0.6 lc rgb col(k) title lab(k), \
+       f(0) using 1:4 skip 1 with lines lw 1.5 dt 3 lc rgb col(0) title "Eq. (20)", \
+       f(1) using 1:5 skip 1 with lines lw 1.5 dt 2 lc rgb col(1) title "Eq. (21)"
+  set title "(b) exponential Eq. (21) (dashed), power law Eq. (22) (solid)"
+  plot for [k=2:3] f(k) using 1:2:3 skip 1 with yerrorbars pt 7 ps 0.6 lc rgb col(k) title lab(k), \
+       for [k=2:3] f(k) using 1:5 skip 1 with lines lw 1.2 dt 2 lc rgb col(k) notitle, \
+       for [k=2:3] f(k) using 1:6 skip 1 with lines lw 1.5 lc rgb col(k) notitle
+  set title "(c) late times, power law Eq. (22) (solid)"
+  plot for [k=4:n-1] f(k) using 1:2:3 skip 1 with yerrorbars pt 7 ps 0.6 lc rgb col(k) title lab(k), \
+       for [k=4:n-1] f(k) using 1:6 skip 1 with lines lw 1.5 lc rgb col(k) notitle
+  unset multiplot
+  unset output
+}
