@@ -12,6 +12,8 @@ Experiment bistable_pipe();
 Experiment impact_parameter();
 Experiment cooling();
 Experiment pipe_arching();
+Experiment parameter_study();
+Experiment cluster_growth();
 } // namespace experiments
 
 const std::vector<Experiment>& experiment_registry() {
@@ -22,6 +24,8 @@ const std::vector<Experiment>& experiment_registry() {
         experiments::impact_parameter(),
         experiments::cooling(),
         experiments::pipe_arching(),
+        experiments::parameter_study(),
+        experiments::cluster_growth(),
     };
     return table;
 }
