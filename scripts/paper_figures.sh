@@ -2,13 +2,16 @@
 # Regenerates paper_figures/ from paper-scale runs.
 #   scripts/paper_figures.sh                 run every experiment at paper scale, then collect
 #   scripts/paper_figures.sh cooling ...     run only these, then collect from all runs present
+#   scripts/paper_figures.sh --collect       run nothing, only collect the runs present
 # Runs go to $OUT (default out-paper/); each figure's PNG is copied to paper_figures/ and the check
 # table of all runs present is written to paper_figures/CHECK.md. Run after any physics change.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 out=${OUT:-out-paper}
 threads=$(nproc)
-if (($#)); then
+if [ "${1:-}" = "--collect" ]; then
+  :
+elif (($#)); then
   for e in "$@"; do ./build/granrepro "$e" --scale paper --threads "$threads" --out "$out" --quiet > /dev/null; done
 else
   ./build/granrepro all --scale paper --threads "$threads" --out "$out" --quiet > /dev/null || true
