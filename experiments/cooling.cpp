@@ -8,6 +8,7 @@
 // 2D cooling law dT/dt = -(1 - r^2) omega T / 2 give t0 = 4 / ((1 - r^2) omega_0)
 // = sqrt(2 pi) d s_* / (2 (1 - r^2) rho v̄), i.e. sqrt(2 pi). The paper's number 23.24 1/s is
 // the sqrt(2 pi) value; Fig. 2 is normalised by it.
+#include <chrono>
 #include <cmath>
 #include <gsl/gsl_fit.h>
 #include <string>
@@ -260,12 +261,16 @@ Result run(const RunContext& ctx) {
     Trace ed, ds;
     Progress progress("cooling", dsmc ? 2 : 1, ctx.quiet);
     parallel_sweep(dsmc ? 2 : 1, ctx.threads, &progress, [&](long which) {
-        if (which == 0) ed = run_ed(p, s);
-        else ds = run_dsmc(p, s, ctx.seed);
+        const auto start = std::chrono::steady_clock::now();
+        Trace& tr = which == 0 ? ed : ds;
+        tr = which == 0 ? run_ed(p, s) : run_dsmc(p, s, ctx.seed);
+        tr.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     });
 
     Result res;
     res.scalar("N", double(s.pos.size()), "1", "number of disks");
+    res.scalar("wall_time_ed", ed.wall_seconds, "s", "wall time of the ED run from t = 0 (with its observables)");
+    if (dsmc) res.scalar("wall_time_dsmc", ds.wall_seconds, "s", "wall time of the DSMC run from t = 0 (with its observables)");
     res.scalar("box", s.L, "m", "side of the periodic box");
     res.scalar("t0_inv_eq19_printed", 1 / t0_printed, "1/s", "1/t0 from Eq. (19) as printed (sqrt(pi))");
     res.scalar("t0_inv_kinetic_theory", 1 / t0_kinetic, "1/s", "1/t0 = (1-r^2) omega_E / 4 with Henderson's g(d): sqrt(2 pi)");
