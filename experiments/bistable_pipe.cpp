@@ -61,7 +61,8 @@ double slope(const std::vector<double>& t, const std::vector<double>& v, std::si
 }
 
 // Runs one start to steady state (or t_max). Steady: over the trailing window the fitted slope of
-// the mean velocity is below drift_tol [m/s^2], i.e. braking balances gravity to that accuracy.
+// the mean velocity is below drift_tol [m/s^2], i.e. braking balances gravity to that accuracy,
+// and stays below it over the following averaging window t_average.
 RunResult run_pipe(const PipeSpec& s) {
     Engine eng = build_pipe(s);
     RunResult r;
@@ -90,7 +91,14 @@ RunResult run_pipe(const PipeSpec& s) {
                 eng.reset_wall_stats(); // Eq. (9) is measured over the averaging window only
             }
         }
-        if (!std::isnan(steady_since) && eng.time() >= steady_since + s.t_average) break;
+        if (!std::isnan(steady_since) && eng.time() >= steady_since + s.t_average) {
+            // Confirm over the averaging window itself: a plateau that happened to fill the
+            // detection window but keeps drifting afterwards is not a steady state; search on.
+            std::size_t from = 0;
+            while (from < r.t.size() && r.t[from] <= steady_since) ++from;
+            if (r.t.size() - from >= 3 && std::abs(slope(r.t, r.v, from)) < s.drift_tol) break;
+            steady_since = NAN;
+        }
     }
     r.v_final = r.v.back();
     if (!std::isnan(steady_since) && eng.time() >= steady_since + s.t_average - 1e-12) {

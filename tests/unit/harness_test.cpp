@@ -166,6 +166,14 @@ scales = ["paper"]
     EXPECT_EQ(r[0].verdict, Verdict::Fail);
     EXPECT_EQ(r[1].verdict, Verdict::Pass);
     EXPECT_EQ(r[3].verdict, Verdict::Fail); // a missing measurement fails
+    // One grid step off counts as within abs_tol = one grid step, despite round-off ...
+    Claim step = claims[0];
+    step.rel_tol.reset();
+    step.paper = 0.7;
+    step.abs_tol = 0.1;
+    EXPECT_EQ(evaluate_claims({step}, {{"x", 0.8}}, Scale::Quick)[0].verdict, Verdict::Pass);
+    // ... but anything beyond it fails.
+    EXPECT_EQ(evaluate_claims({step}, {{"x", 0.80001}}, Scale::Quick)[0].verdict, Verdict::Fail);
     EXPECT_THROW(load_claims(f, "other"), InputError);
     EXPECT_THROW(load_claims(dir / "absent.toml", "e"), InputError);
     const fs::path bad = write(dir / "bad.toml", "experiment = \"e\"\n[[claim]]\nid = \"a\"\n");
