@@ -18,7 +18,9 @@ do for [fmt in "png pdf"] {
   set xrange [0.45:1.02]
   set yrange [0:*]
   colors = "#0072B2 #D55E00 #009E73"
-  plot for [i=1:words(files)] word(files, i) using "e_N":"v_slow" with linespoints pt 7 ps 1.2 lw 1.5 lc rgb word(colors, i) \
+  # The invisible point keeps gnuplot from aborting when no run reached a steady state.
+  plot '+' using (0.5):(0) every ::0::0 with dots lc rgb "white" notitle, \
+       for [i=1:words(files)] word(files, i) using "e_N":"v_slow" with linespoints pt 7 ps 1.2 lw 1.5 lc rgb word(colors, i) \
          title sprintf("k_N = %s N/m, slow start", system("basename ".word(files, i)." .tsv | sed 's/steady_k//'")), \
        for [i=1:words(files)] word(files, i) using "e_N":"v_fast" with linespoints pt 6 ps 1.4 lw 1.5 dt 2 lc rgb word(colors, i) \
          title sprintf("k_N = %s N/m, fast start", system("basename ".word(files, i)." .tsv | sed 's/steady_k//'"))
