@@ -14,7 +14,7 @@ do for [fmt in "png pdf"] {
   set ylabel "steady-state mean velocity  [m/s]"
   set title "vertical pipe, width 2 cm, φ = 0.55, μ = 0.5"
   set grid lc rgb "#dddddd"
-  set key top left box opaque
+  set key top right box opaque
   set xrange [0.45:1.02]
   set yrange [0:*]
   colors = "#0072B2 #D55E00 #009E73"
