@@ -16,10 +16,7 @@ namespace granrepro::experiments {
 namespace {
 
 void validate(const ParameterSet& p) {
-    const double m = p.real("m_free"), k = p.real("k_N"), g = p.real("gamma_N");
-    if (g * g / 4 >= k / m)
-        p.reject("gamma_N", "over-damped free-wall contact; must be below 2 sqrt(k_N/m_free) = " +
-                                std::to_string(2 * std::sqrt(k / m)) + " 1/s so that e_N is in (0, 1]");
+    validate_free_wall_law(p);
     const double reach = 0.5 * (p.real("d_free") + p.real("d_wall"));
     if (p.real("x_start") < reach)
         p.reject("x_start", "the free grain would start overlapping the wall grains; must be at least (d_free + d_wall)/2 = " +

@@ -2,7 +2,11 @@
 // row along y at x = 0), as in Schäfer & Wolf (1995) Figs. 2-5. Shared by the brake-failure and
 // emergency-brake experiments and by the pipe experiment's link to the impact curves.
 #pragma once
+#include <cmath>
+#include <string>
+
 #include "engines/soft/few_body_engine.hpp"
+#include "harness/parameter_set.hpp"
 #include "models/coulomb_shear.hpp"
 
 namespace granrepro {
@@ -25,6 +29,15 @@ struct ImpactOutcome {
     int wall_grains = 0;   // distinct wall grains touched
     bool completed = false;// the grain left the wall for good within max_steps
 };
+
+// The free-wall contact of Eq. (1) must rebound: gamma_N below 2 sqrt(k_N/m), i.e. e_N in (0, 1]
+// (Eq. 4). Shared parameter check of the impact experiments (parameters k_N, gamma_N, m_free).
+inline void validate_free_wall_law(const ParameterSet& p) {
+    const double m = p.real("m_free"), k = p.real("k_N"), g = p.real("gamma_N");
+    if (g * g / 4 >= k / m)
+        p.reject("gamma_N", "over-damped free-wall contact; must be below 2 sqrt(k_N/m_free) = " +
+                                std::to_string(2 * std::sqrt(k / m)) + " 1/s so that e_N is in (0, 1]");
+}
 
 template <class NormalLaw>
 ImpactOutcome shoot(const NormalLaw& law, const CoulombShear& shear, const ImpactSetup& s) {
