@@ -163,7 +163,6 @@ void validate(const ParameterSet& p) {
     if (p.real("wall_spacing") < p.real("d_wall") * (1 - 1e-12))
         p.reject("wall_spacing", "wall grains would overlap; must be at least d_wall");
     if (p.real("width") < 10 * p.real("d_mean")) p.reject("width", "must be at least 10 grain diameters");
-    for (double k : p.reals("kN_list")) (void)pipe_law(k, p.reals("eN_list").front(), p.real("m_mean"));
 }
 
 std::string tag(double k, double e, const char* start) {

@@ -41,33 +41,39 @@ Totals totals(const std::vector<SoftGrain>& g) {
     return t;
 }
 
-TEST(SoftEngine, ElasticFrictionlessClusterConservesEnergyAndMomentum) {
-    const LinearSpringDashpot law{2000.0, 0.0};
+// Runs the cluster with the linear law (k_N = 2000 N/m, gamma_N) and Coulomb mu for 4000 steps
+// of t_col/50; returns the totals before and after and the number of contact events.
+struct ClusterRun {
+    Totals before, after;
+    std::size_t events;
+    std::size_t active_at_end;
+};
+
+ClusterRun run_cluster(double gamma_N, double mu, std::uint64_t seed) {
+    const LinearSpringDashpot law{2000.0, gamma_N};
     const double dt = law.collision_time(0.5e-6) / 50;
-    FewBodyEngine<LinearSpringDashpot, CoulombShear> eng(law, CoulombShear{0.0}, dt);
-    add_cluster(eng, 3);
+    FewBodyEngine<LinearSpringDashpot, CoulombShear> eng(law, CoulombShear{mu}, dt);
+    add_cluster(eng, seed);
     const Totals before = totals(eng.grains());
     for (int s = 0; s < 4000; ++s) eng.step();
-    ASSERT_GE(eng.events().size(), 10u); // the grains did collide, several times
-    ASSERT_EQ(eng.active_contacts(), 0u);
-    const Totals after = totals(eng.grains());
-    EXPECT_NEAR(after.p.x, before.p.x, 1e-15);
-    EXPECT_NEAR(after.p.y, before.p.y, 1e-15);
-    EXPECT_NEAR(after.e / before.e, 1.0, 1e-6);
+    return {before, totals(eng.grains()), eng.events().size(), eng.active_contacts()};
+}
+
+TEST(SoftEngine, ElasticFrictionlessClusterConservesEnergyAndMomentum) {
+    const ClusterRun run = run_cluster(0.0, 0.0, 3);
+    ASSERT_GE(run.events, 10u); // the grains did collide, several times
+    ASSERT_EQ(run.active_at_end, 0u);
+    EXPECT_NEAR(run.after.p.x, run.before.p.x, 1e-15);
+    EXPECT_NEAR(run.after.p.y, run.before.p.y, 1e-15);
+    EXPECT_NEAR(run.after.e / run.before.e, 1.0, 1e-6);
 }
 
 TEST(SoftEngine, DampedFrictionalClusterConservesMomentumAndLosesEnergy) {
-    const LinearSpringDashpot law{2000.0, 1e4};
-    const double dt = law.collision_time(0.5e-6) / 50;
-    FewBodyEngine<LinearSpringDashpot, CoulombShear> eng(law, CoulombShear{0.5}, dt);
-    add_cluster(eng, 5);
-    const Totals before = totals(eng.grains());
-    for (int s = 0; s < 4000; ++s) eng.step();
-    ASSERT_GE(eng.events().size(), 10u);
-    const Totals after = totals(eng.grains());
-    EXPECT_NEAR(after.p.x, before.p.x, 1e-15);
-    EXPECT_NEAR(after.p.y, before.p.y, 1e-15);
-    EXPECT_LT(after.e, 0.9 * before.e);
+    const ClusterRun run = run_cluster(1e4, 0.5, 5);
+    ASSERT_GE(run.events, 10u);
+    EXPECT_NEAR(run.after.p.x, run.before.p.x, 1e-15);
+    EXPECT_NEAR(run.after.p.y, run.before.p.y, 1e-15);
+    EXPECT_LT(run.after.e, 0.9 * run.before.e);
 }
 
 } // namespace

@@ -67,15 +67,15 @@ public:
         for (int pass = 0; remaining > 0.0; ++pass) {
             if (pass > 1000) throw std::runtime_error("few-body engine: contact switching did not settle");
             collect_candidates(remaining);
-            std::vector<SoftGrain> trial = grains_;
-            rk4(trial, remaining);
+            trial_ = grains_;
+            rk4(trial_, remaining);
             ++substeps_;
             double first = remaining;
             int which = -1;
             for (std::size_t c = 0; c < candidates_.size(); ++c) {
                 const bool touching = is_active(candidates_[c]);
                 const Geometry a = geometry(grains_, candidates_[c]);
-                const Geometry b = geometry(trial, candidates_[c]);
+                const Geometry b = geometry(trial_, candidates_[c]);
                 const HermiteSegment seg{remaining, a.xi, a.xi_dot, b.xi, b.xi_dot};
                 const auto root = first_crossing(
                     seg, touching ? CrossingDirection::Downward : CrossingDirection::Upward);
@@ -85,7 +85,7 @@ public:
                 }
             }
             if (which < 0) {
-                grains_ = std::move(trial);
+                std::swap(grains_, trial_);
                 t_ += remaining;
                 remaining = 0.0;
                 break;
@@ -172,28 +172,28 @@ private:
         }
     }
 
-    // Classical RK4 for x' = v, v' = a(x, v) with the active contact set frozen.
+    // Classical RK4 for x' = v, v' = a(x, v) with the active contact set frozen. The stage
+    // buffers are members so that a step allocates nothing.
     void rk4(std::vector<SoftGrain>& g, double h) {
         const std::size_t n = g.size();
-        const std::vector<SoftGrain> g0 = g;
-        std::vector<SoftGrain> s = g;
-        std::vector<Vec2> a1, a2, a3, a4;
-        accelerations(s, a1);
-        for (std::size_t i = 0; i < n; ++i) { s[i].r = g0[i].r + 0.5 * h * g0[i].v; s[i].v = g0[i].v + 0.5 * h * a1[i]; }
-        std::vector<Vec2> v2(n);
-        for (std::size_t i = 0; i < n; ++i) v2[i] = s[i].v;
-        accelerations(s, a2);
-        for (std::size_t i = 0; i < n; ++i) { s[i].r = g0[i].r + 0.5 * h * v2[i]; s[i].v = g0[i].v + 0.5 * h * a2[i]; }
-        std::vector<Vec2> v3(n);
-        for (std::size_t i = 0; i < n; ++i) v3[i] = s[i].v;
-        accelerations(s, a3);
-        for (std::size_t i = 0; i < n; ++i) { s[i].r = g0[i].r + h * v3[i]; s[i].v = g0[i].v + h * a3[i]; }
-        std::vector<Vec2> v4(n);
-        for (std::size_t i = 0; i < n; ++i) v4[i] = s[i].v;
-        accelerations(s, a4);
+        g0_ = g;
+        s_ = g;
+        v2_.resize(n);
+        v3_.resize(n);
+        v4_.resize(n);
+        accelerations(s_, a1_);
+        for (std::size_t i = 0; i < n; ++i) { s_[i].r = g0_[i].r + 0.5 * h * g0_[i].v; s_[i].v = g0_[i].v + 0.5 * h * a1_[i]; }
+        for (std::size_t i = 0; i < n; ++i) v2_[i] = s_[i].v;
+        accelerations(s_, a2_);
+        for (std::size_t i = 0; i < n; ++i) { s_[i].r = g0_[i].r + 0.5 * h * v2_[i]; s_[i].v = g0_[i].v + 0.5 * h * a2_[i]; }
+        for (std::size_t i = 0; i < n; ++i) v3_[i] = s_[i].v;
+        accelerations(s_, a3_);
+        for (std::size_t i = 0; i < n; ++i) { s_[i].r = g0_[i].r + h * v3_[i]; s_[i].v = g0_[i].v + h * a3_[i]; }
+        for (std::size_t i = 0; i < n; ++i) v4_[i] = s_[i].v;
+        accelerations(s_, a4_);
         for (std::size_t i = 0; i < n; ++i) {
-            g[i].r = g0[i].r + (h / 6.0) * (g0[i].v + 2.0 * v2[i] + 2.0 * v3[i] + v4[i]);
-            g[i].v = g0[i].v + (h / 6.0) * (a1[i] + 2.0 * a2[i] + 2.0 * a3[i] + a4[i]);
+            g[i].r = g0_[i].r + (h / 6.0) * (g0_[i].v + 2.0 * v2_[i] + 2.0 * v3_[i] + v4_[i]);
+            g[i].v = g0_[i].v + (h / 6.0) * (a1_[i] + 2.0 * a2_[i] + 2.0 * a3_[i] + a4_[i]);
         }
     }
 
@@ -249,6 +249,8 @@ private:
     std::vector<Pair> active_;
     std::vector<Pair> candidates_;
     std::vector<ContactEvent> events_;
+    std::vector<SoftGrain> trial_, g0_, s_;   // scratch of step() and rk4()
+    std::vector<Vec2> a1_, a2_, a3_, a4_, v2_, v3_, v4_;
 };
 
 } // namespace granrepro

@@ -188,8 +188,12 @@ private:
         double rmax = 0;
         for (double r : rad_) rmax = std::max(rmax, r);
         const double range = 2 * rmax + skin_;
+        // Cells at least one interaction range wide, three or more along the periodic axis so
+        // that the rows iy-1, iy, iy+1 are distinct and no pair is listed twice.
+        if (geo_.length < 3 * range)
+            throw std::invalid_argument("pipe length must be at least 3 interaction ranges (2 r_max + skin)");
         const int cx = std::max(1, int(geo_.width / range));
-        const int cy = std::max(3, int(geo_.length / range));
+        const int cy = int(geo_.length / range);
         const double sx = geo_.width / cx, sy = geo_.length / cy;
         cell_start_.assign(std::size_t(cx * cy) + 1, 0);
         std::vector<int> cell_of(n);
@@ -226,9 +230,6 @@ private:
             }
             nb_start_[i + 1] = int(nb_.size());
         }
-        // cy >= 3 keeps the three rows of cells distinct; with cy == 3 and a short pipe a pair
-        // could still be listed twice through two periodic images, which cannot happen when
-        // length >= 3 * range (checked by the caller through the geometry).
         ++builds_;
     }
 
