@@ -4,6 +4,8 @@
 #include <chrono>
 #include <cstdio>
 #include <functional>
+#include <numeric>
+#include <random>
 #include <vector>
 #include <cmath>
 #include <cstdlib>
@@ -17,6 +19,7 @@
 #include "experiments/pipe_setup.hpp"
 #include "engines/dsmc/dsmc_bench.hpp"
 #include "engines/ed/ed_bench.hpp"
+#include "engines/ed/huge_page_allocator.hpp"
 #include "models/linear_spring_dashpot.hpp"
 
 namespace granrepro {
@@ -191,22 +194,51 @@ void bench_soft_report(const BenchOptions& opt) {
                 "  ratio granrepro / LAMMPS = %.2f\n", median(lmp), lmp.size(), m / median(lmp));
 }
 
+// Latency [ns] of one dependent load at a random cache line of a `bytes` large block, allocated
+// like the ED engine's arrays (huge pages): a pointer chase over a random cyclic permutation.
+// This is the price of a cache miss at a given working set, which is what bounds the ED engine
+// at large N (one event touches a random particle and its neighbours).
+double dependent_load_latency_ns(std::size_t bytes) {
+    constexpr std::size_t kLine = 64 / sizeof(std::size_t);
+    const std::size_t lines = std::max<std::size_t>(2, bytes / 64);
+    HugeVector<std::size_t> chain(lines * kLine);
+    std::vector<std::size_t> order(lines);
+    std::iota(order.begin(), order.end(), std::size_t{0});
+    std::shuffle(order.begin(), order.end(), std::mt19937_64(1));
+    for (std::size_t k = 0; k < lines; ++k) chain[order[k] * kLine] = order[(k + 1) % lines] * kLine;
+    std::size_t p = 0;
+    for (std::size_t k = 0; k < lines; ++k) p = chain[p]; // warm up: one full cycle
+    const long steps = 4'000'000;
+    const auto t0 = std::chrono::steady_clock::now();
+    for (long k = 0; k < steps; ++k) p = chain[p];
+    const double dt = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    if (p == std::size_t(-1)) std::printf(" "); // keep the chase from being optimised away
+    return dt / steps * 1e9;
+}
+
 // Elastic disks at rho = 0.25, periodic: events and collisions per CPU second from N = 1e3 to 1e6.
 void bench_ed_report(const BenchOptions& opt) {
     std::printf("bench ed: elastic smooth disks, periodic box, rho = 0.25, one core; medians of %d runs\n", opt.repeats);
     std::printf("  %9s %14s %14s %12s %14s\n", "N", "events/s", "collisions/s", "bytes/part.", "ns/event");
-    double ns_1e4 = NAN, ns_1e6 = NAN;
+    double ns_1e4 = NAN, ns_1e6 = NAN, bytes_1e4 = NAN, bytes_1e6 = NAN;
     for (std::size_t n : {std::size_t(1000), std::size_t(10000), std::size_t(100000), std::size_t(1000000)}) {
         const auto q = medians(opt.repeats, [&] {
             const EdBenchResult r = run_ed_benchmark(n, 0.25, opt.seconds);
             return std::vector<double>{r.events_per_second, r.collisions_per_second, r.bytes_per_particle};
         });
         const double ns = 1e9 / q[0];
-        if (n == 10000) ns_1e4 = ns;
-        if (n == 1000000) ns_1e6 = ns;
+        if (n == 10000) { ns_1e4 = ns; bytes_1e4 = q[2] * double(n); }
+        if (n == 1000000) { ns_1e6 = ns; bytes_1e6 = q[2] * double(n); }
         std::printf("  %9zu %14.4g %14.4g %12.0f %14.1f\n", n, q[0], q[1], q[2], ns);
     }
     std::printf("  per-event cost N = 1e6 over N = 1e4: %.2f\n", ns_1e6 / ns_1e4);
+    const auto lat = medians(opt.repeats, [&] {
+        return std::vector<double>{dependent_load_latency_ns(std::size_t(bytes_1e4)),
+                                   dependent_load_latency_ns(std::size_t(bytes_1e6))};
+    });
+    std::printf("  cache-miss price on this machine (dependent random load at the engine's working set):\n"
+                "    N = 1e4 (%.1f MB) %.1f ns, N = 1e6 (%.0f MB) %.1f ns, ratio %.1f\n",
+                bytes_1e4 / 1e6, lat[0], bytes_1e6 / 1e6, lat[1], lat[1] / lat[0]);
 }
 
 void bench_dsmc_report(const BenchOptions& opt) {
