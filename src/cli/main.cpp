@@ -20,6 +20,7 @@ struct CommonFlags {
     std::uint64_t seed = 1;
     int threads = 1;
     bool quiet = false;
+    double checkpoint_interval = 60.0;
     std::vector<std::string> sets;
 
     void add_to(CLI::App* app, bool with_sets = true) {
@@ -31,6 +32,11 @@ struct CommonFlags {
             ->capture_default_str()
             ->check(CLI::Range(1, 256));
         app->add_flag("--quiet", quiet, "no progress output on stderr");
+        app->add_option("--checkpoint-interval", checkpoint_interval,
+                        "seconds of wall time between mid-run checkpoints of long single runs [s]; "
+                        "rerunning the same command resumes from the last one")
+            ->capture_default_str()
+            ->check(CLI::NonNegativeNumber);
         if (with_sets)
             app->add_option("--set", sets, "override a parameter: --set name=value (repeatable)")
                 ->type_name("NAME=VALUE");
@@ -42,6 +48,7 @@ struct CommonFlags {
         o.seed = seed;
         o.threads = threads;
         o.quiet = quiet;
+        o.checkpoint_interval = checkpoint_interval;
         o.sets = sets;
         return o;
     }

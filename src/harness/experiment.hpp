@@ -18,6 +18,7 @@ struct RunContext {
     int threads;                    // independent sweep points may run concurrently
     bool quiet;                     // no progress output
     std::filesystem::path work_dir; // for checkpoints of long runs (survives an interrupted run)
+    double checkpoint_interval = 60.0; // [s] wall time between mid-run checkpoints (RunCheckpoint)
 };
 
 struct Experiment {

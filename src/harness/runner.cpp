@@ -72,7 +72,7 @@ int run_experiment(const std::string& name, const RunOptions& opt) {
     StagedDirectory stage(opt.out / name);
     const fs::path work_dir = opt.out / ("." + name + ".checkpoint");
     fs::create_directories(work_dir);
-    const RunContext ctx{params, opt.scale, opt.seed, opt.threads, opt.quiet, work_dir};
+    const RunContext ctx{params, opt.scale, opt.seed, opt.threads, opt.quiet, work_dir, opt.checkpoint_interval};
 
     const auto t0 = std::chrono::steady_clock::now();
     Result result = exp.run(ctx);

@@ -15,6 +15,7 @@ struct RunOptions {
     std::uint64_t seed = 1;
     int threads = 1;
     bool quiet = false;
+    double checkpoint_interval = 60.0;      // [s] wall time between mid-run checkpoints
     std::vector<std::string> sets;          // --set name=value
     std::vector<std::string> figures;       // empty: render all of the experiment's figures
 };

@@ -95,6 +95,71 @@ void H5Object::bytes(const std::string& name, const std::vector<unsigned char>& 
     check(e, "write " + name);
 }
 
+namespace {
+template <class T>
+hid_t native_type();
+template <> hid_t native_type<double>() { return H5T_NATIVE_DOUBLE; }
+template <> hid_t native_type<std::int32_t>() { return H5T_NATIVE_INT32; }
+template <> hid_t native_type<std::uint8_t>() { return H5T_NATIVE_UINT8; }
+template <> hid_t native_type<std::uint32_t>() { return H5T_NATIVE_UINT32; }
+template <> hid_t native_type<std::uint64_t>() { return H5T_NATIVE_UINT64; }
+} // namespace
+
+template <class T>
+void H5Object::array(const std::string& name, const std::vector<T>& v) const {
+    const hsize_t n = v.size();
+    const hid_t s = H5Screate_simple(1, &n, nullptr);
+    const hid_t d = check(H5Dcreate2(id_, name.c_str(), native_type<T>(), s, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
+                          "dataset " + name);
+    const herr_t e = n ? H5Dwrite(d, native_type<T>(), H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data()) : 0;
+    H5Sclose(s);
+    H5Dclose(d);
+    check(e, "write " + name);
+}
+
+template <class T>
+std::vector<T> H5Object::read_array(const std::string& name) const {
+    H5Object d(check(H5Dopen2(id_, name.c_str(), H5P_DEFAULT), "open " + name), &H5Dclose);
+    H5Object s(H5Dget_space(d.id()), &H5Sclose);
+    const hssize_t n = H5Sget_simple_extent_npoints(s.id());
+    std::vector<T> v(static_cast<std::size_t>(n));
+    if (n) check(H5Dread(d.id(), native_type<T>(), H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data()), "read " + name);
+    return v;
+}
+
+template void H5Object::array(const std::string&, const std::vector<double>&) const;
+template void H5Object::array(const std::string&, const std::vector<std::int32_t>&) const;
+template void H5Object::array(const std::string&, const std::vector<std::uint8_t>&) const;
+template void H5Object::array(const std::string&, const std::vector<std::uint32_t>&) const;
+template void H5Object::array(const std::string&, const std::vector<std::uint64_t>&) const;
+template std::vector<double> H5Object::read_array(const std::string&) const;
+template std::vector<std::int32_t> H5Object::read_array(const std::string&) const;
+template std::vector<std::uint8_t> H5Object::read_array(const std::string&) const;
+template std::vector<std::uint32_t> H5Object::read_array(const std::string&) const;
+template std::vector<std::uint64_t> H5Object::read_array(const std::string&) const;
+
+void H5Object::attr_u64(const std::string& name, std::uint64_t v) const {
+    const hid_t s = H5Screate(H5S_SCALAR);
+    write_attr(id_, name, H5T_NATIVE_UINT64, s, &v);
+    H5Sclose(s);
+}
+
+long H5Object::read_long_attr(const std::string& name) const {
+    H5Object a(check(H5Aopen(id_, name.c_str(), H5P_DEFAULT), "open attr " + name), &H5Aclose);
+    long v = 0;
+    check(H5Aread(a.id(), H5T_NATIVE_LONG, &v), "read attr " + name);
+    return v;
+}
+
+std::uint64_t H5Object::read_u64_attr(const std::string& name) const {
+    H5Object a(check(H5Aopen(id_, name.c_str(), H5P_DEFAULT), "open attr " + name), &H5Aclose);
+    std::uint64_t v = 0;
+    check(H5Aread(a.id(), H5T_NATIVE_UINT64, &v), "read attr " + name);
+    return v;
+}
+
+bool H5Object::has(const std::string& name) const { return H5Lexists(id_, name.c_str(), H5P_DEFAULT) > 0; }
+
 std::vector<double> H5Object::read_dataset(const std::string& name) const {
     H5Object d(check(H5Dopen2(id_, name.c_str(), H5P_DEFAULT), "open " + name), &H5Dclose);
     H5Object s(H5Dget_space(d.id()), &H5Sclose);

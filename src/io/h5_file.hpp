@@ -1,6 +1,7 @@
 // Thin RAII layer over the HDF5 C API: just what the result schema needs (groups, 1-D double
 // datasets, scalar and string attributes).
 #pragma once
+#include <cstdint>
 #include <hdf5.h>
 #include <string>
 #include <vector>
@@ -27,11 +28,20 @@ public:
     void dataset(const std::string& name, const std::vector<double>& v, const std::string& unit,
                  const std::string& description = {}) const;
     void bytes(const std::string& name, const std::vector<unsigned char>& v) const;
+    // A 1-D dataset stored bit for bit (checkpoints). T: double, int32, uint8, uint32, uint64.
+    template <class T>
+    void array(const std::string& name, const std::vector<T>& v) const;
+    void attr_u64(const std::string& name, std::uint64_t v) const;
 
     std::vector<double> read_dataset(const std::string& name) const;
     std::vector<unsigned char> read_bytes(const std::string& name) const;
     std::string read_string_attr(const std::string& name) const;
     double read_double_attr(const std::string& name) const;
+    long read_long_attr(const std::string& name) const;
+    std::uint64_t read_u64_attr(const std::string& name) const;
+    template <class T>
+    std::vector<T> read_array(const std::string& name) const;
+    bool has(const std::string& name) const; // a link (group or dataset) of that name exists
 
 private:
     hid_t id_ = -1;

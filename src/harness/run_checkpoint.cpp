@@ -1,0 +1,54 @@
+#include "harness/run_checkpoint.hpp"
+
+#include <cstdio>
+#include <unistd.h>
+
+namespace granrepro {
+
+namespace fs = std::filesystem;
+
+RunCheckpoint::RunCheckpoint(const RunContext& ctx, const std::string& name)
+    : interval_(ctx.checkpoint_interval), quiet_(ctx.quiet), last_(std::chrono::steady_clock::now()) {
+    const std::string fingerprint = ctx.params.to_json().dump() + to_string(ctx.scale) + std::to_string(ctx.seed);
+    const std::size_t h = std::hash<std::string>{}(fingerprint);
+    fs::create_directories(ctx.work_dir);
+    file_ = ctx.work_dir / ("run-" + std::to_string(h) + "-" + name + ".h5");
+}
+
+bool RunCheckpoint::due() const {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - last_).count() >= interval_;
+}
+
+void RunCheckpoint::save(const std::function<void(const H5Object&)>& fill) {
+    const fs::path tmp = file_.string() + ".partial-" + std::to_string(::getpid());
+    try {
+        {
+            const H5File f = H5File::create(tmp.string());
+            fill(f);
+        }
+        fs::rename(tmp, file_);
+    } catch (...) {
+        std::error_code ec;
+        fs::remove(tmp, ec);
+        throw;
+    }
+    ++saves_;
+    last_ = std::chrono::steady_clock::now();
+}
+
+bool RunCheckpoint::load(const std::function<void(const H5Object&)>& read) const {
+    std::error_code ec;
+    if (!fs::exists(file_, ec)) return false;
+    try {
+        const H5File f = H5File::open(file_.string());
+        read(f);
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "granrepro: ignoring unreadable checkpoint %s (%s); starting afresh\n",
+                     file_.c_str(), e.what());
+        return false;
+    }
+    if (!quiet_) std::fprintf(stderr, "granrepro: resuming from checkpoint %s\n", file_.c_str());
+    return true;
+}
+
+} // namespace granrepro

@@ -1,0 +1,45 @@
+// Mid-run checkpoints of single long runs (the counterpart of SweepCheckpoint, which saves whole
+// sweep points). An experiment offers a checkpoint at its natural pause points (sample times):
+// if at least ctx.checkpoint_interval wall seconds passed since the last save, it writes its
+// engine state(s) and everything its observables accumulated into one HDF5 file,
+// OUT/.<experiment>.checkpoint/run-<fingerprint>-<name>.h5, atomically (temporary file + rename).
+// Re-running the same command loads that file and continues from it; since engine states restore
+// bit for bit, the result equals an uninterrupted run's. The fingerprint covers the resolved
+// parameters, scale and seed, so changed inputs never resume a stale file. The runner removes
+// the directory once the results are written.
+#pragma once
+#include <chrono>
+#include <filesystem>
+#include <functional>
+#include <string>
+
+#include "harness/experiment.hpp"
+#include "io/h5_file.hpp"
+
+namespace granrepro {
+
+class RunCheckpoint {
+public:
+    // name distinguishes several runs of one experiment (e.g. "ed" and "dsmc").
+    RunCheckpoint(const RunContext& ctx, const std::string& name);
+
+    // True when the interval since the last save (or since construction) has passed.
+    bool due() const;
+    // Writes the file through fill(root group); resets the interval clock.
+    void save(const std::function<void(const H5Object&)>& fill);
+    // If a checkpoint file exists, calls read(root group) and returns true. A file that cannot be
+    // read (torn, other schema) is ignored with a warning on stderr and false is returned, so the
+    // run starts afresh.
+    bool load(const std::function<void(const H5Object&)>& read) const;
+    const std::filesystem::path& path() const { return file_; }
+    long saves() const { return saves_; }
+
+private:
+    std::filesystem::path file_;
+    double interval_ = 60.0;
+    bool quiet_ = false;
+    long saves_ = 0;
+    std::chrono::steady_clock::time_point last_;
+};
+
+} // namespace granrepro

@@ -1,0 +1,120 @@
+#include "io/dsmc_state_file.hpp"
+
+#include <stdexcept>
+#include <string>
+
+namespace granrepro {
+
+namespace {
+
+void write_config(const H5Object& g, const DsmcConfig& c) {
+    g.attr("lx", c.lx);
+    g.attr("ly", c.ly);
+    g.attr("r", c.r);
+    g.attr("q", c.q);
+    g.attr("t_c", c.t_c);
+    g.attr("step_factor", c.step_factor);
+    g.attr("resample_interval", long(c.resample_interval));
+    g.attr("min_cell_diameters", c.min_cell_diameters);
+    g.attr("free_volume", long(c.free_volume));
+    g.attr("rcp_fraction", c.rcp_fraction);
+    g.attr("free_volume_floor", c.free_volume_floor);
+    g.attr("displacement", long(c.displacement));
+    g.attr_u64("seed", c.seed);
+    g.attr_u64("stream", c.stream);
+}
+
+DsmcConfig read_config(const H5Object& g) {
+    DsmcConfig c;
+    c.lx = g.read_double_attr("lx");
+    c.ly = g.read_double_attr("ly");
+    c.r = g.read_double_attr("r");
+    c.q = g.read_double_attr("q");
+    c.t_c = g.read_double_attr("t_c");
+    c.step_factor = g.read_double_attr("step_factor");
+    c.resample_interval = static_cast<std::uint32_t>(g.read_long_attr("resample_interval"));
+    c.min_cell_diameters = g.read_double_attr("min_cell_diameters");
+    const long fv = g.read_long_attr("free_volume");
+    if (fv < 0 || fv > long(DsmcFreeVolume::mean)) throw std::runtime_error("DSMC state: unknown free_volume mode");
+    c.free_volume = static_cast<DsmcFreeVolume>(fv);
+    c.rcp_fraction = g.read_double_attr("rcp_fraction");
+    c.free_volume_floor = g.read_double_attr("free_volume_floor");
+    c.displacement = g.read_long_attr("displacement") != 0;
+    c.seed = g.read_u64_attr("seed");
+    c.stream = g.read_u64_attr("stream");
+    return c;
+}
+
+} // namespace
+
+void write_dsmc_state(const H5Object& g, const DsmcState& s) {
+    g.attr("schema", std::string(kDsmcStateSchema));
+    g.attr("schema_version", kDsmcStateSchemaVersion);
+    write_config(g, s.config);
+    g.attr("time", s.time);
+    g.attr("tau", s.tau);
+    g.attr("v_max", s.v_max);
+    g.attr_u64("steps", s.steps);
+    std::vector<double> x, y, vx, vy;
+    for (const Vec2& p : s.position) {
+        x.push_back(p.x);
+        y.push_back(p.y);
+    }
+    for (const Vec2& v : s.velocity) {
+        vx.push_back(v.x);
+        vy.push_back(v.y);
+    }
+    g.array("x", x);
+    g.array("y", y);
+    g.array("vx", vx);
+    g.array("vy", vy);
+    g.array("radius", s.radius);
+    g.array("mass", s.mass);
+    g.array("last_collision_time", s.last_collision_time);
+    g.array("collision_count", s.collision_count);
+    g.attr_u64("collisions", s.collisions);
+    g.attr_u64("elastic_collisions", s.elastic_collisions);
+    g.attr_u64("candidates", s.candidates);
+    g.attr_u64("vmax_raises", s.vmax_raises);
+    g.attr("exposure", s.exposure);
+    g.array("rng_state", s.rng_state);
+}
+
+DsmcState read_dsmc_state(const H5Object& g) {
+    std::string schema;
+    try {
+        schema = g.read_string_attr("schema");
+    } catch (const std::exception&) {
+    }
+    if (schema != kDsmcStateSchema) throw std::runtime_error("not a DSMC state (schema attribute is not granrepro-dsmc-state)");
+    if (g.read_long_attr("schema_version") != kDsmcStateSchemaVersion)
+        throw std::runtime_error("DSMC state: unsupported schema_version (this build reads " +
+                                 std::to_string(kDsmcStateSchemaVersion) + ")");
+    DsmcState s;
+    s.config = read_config(g);
+    s.time = g.read_double_attr("time");
+    s.tau = g.read_double_attr("tau");
+    s.v_max = g.read_double_attr("v_max");
+    s.steps = g.read_u64_attr("steps");
+    const auto x = g.read_array<double>("x"), y = g.read_array<double>("y");
+    const auto vx = g.read_array<double>("vx"), vy = g.read_array<double>("vy");
+    if (y.size() != x.size() || vx.size() != x.size() || vy.size() != x.size())
+        throw std::runtime_error("DSMC state: position and velocity arrays differ in length");
+    for (std::size_t i = 0; i < x.size(); ++i) {
+        s.position.push_back({x[i], y[i]});
+        s.velocity.push_back({vx[i], vy[i]});
+    }
+    s.radius = g.read_array<double>("radius");
+    s.mass = g.read_array<double>("mass");
+    s.last_collision_time = g.read_array<double>("last_collision_time");
+    s.collision_count = g.read_array<std::uint64_t>("collision_count");
+    s.collisions = g.read_u64_attr("collisions");
+    s.elastic_collisions = g.read_u64_attr("elastic_collisions");
+    s.candidates = g.read_u64_attr("candidates");
+    s.vmax_raises = g.read_u64_attr("vmax_raises");
+    s.exposure = g.read_double_attr("exposure");
+    s.rng_state = g.read_array<std::uint8_t>("rng_state");
+    return s;
+}
+
+} // namespace granrepro

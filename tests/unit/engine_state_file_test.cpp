@@ -1,0 +1,193 @@
+// Engine states through HDF5 files (schemas granrepro-ed-state / granrepro-dsmc-state) and the
+// mid-run RunCheckpoint: a run resumed from a file is bit-identical to an uninterrupted one.
+#include "engines/dsmc/dsmc_engine.hpp"
+#include "engines/ed/ed_engine.hpp"
+#include "engines/ed/ed_initial_states.hpp"
+#include "harness/run_checkpoint.hpp"
+#include "io/dsmc_state_file.hpp"
+#include "io/ed_state_file.hpp"
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+using namespace granrepro;
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr double kD = 1e-3; // diameter [m]
+constexpr double kM = 1e-6; // mass [kg]
+
+struct TempDir {
+    fs::path path;
+    TempDir() {
+        path = fs::temp_directory_path() / ("granrepro-state-test-" + std::to_string(::getpid()) + "-" +
+                                            ::testing::UnitTest::GetInstance()->current_test_info()->name());
+        fs::remove_all(path);
+        fs::create_directories(path);
+    }
+    ~TempDir() { fs::remove_all(path); }
+};
+
+// Rough, inelastic with TC, gravity, two walls (one disabled later): every EdConfig field differs
+// from its default, so a field the file forgets changes the resumed run.
+EdEngine rough_pipe() {
+    const std::size_t n = 300;
+    const double l = kD * std::sqrt(n * M_PI / (4.0 * 0.3));
+    EdConfig cfg;
+    cfg.lx = cfg.ly = l;
+    cfg.periodic_y = false;
+    cfg.gravity = {0.3, -9.81};
+    cfg.law = RoughDiskCollision{0.8, 0.5, 0.2, 0.5};
+    cfg.t_c = 1e-5;
+    cfg.tc_keep_friction = true;
+    cfg.cell_size_factor = 1.2;
+    cfg.collapse_limit = 5000;
+    cfg.collapse_window = 1e-9;
+    cfg.walls = {EdWall{1, 0.0, +1, 0.9, 0.4, 0.1, true}, EdWall{1, l, -1, 0.7, 0.0, -1.0, true}};
+    RngStream rng(3, 0);
+    const std::vector<double> rad(n, 0.5 * kD), mass(n, kM);
+    const auto pos = random_positions(rad, l, l, cfg.periodic_x, cfg.periodic_y, rng);
+    const auto vel = maxwellian_velocities(mass, 0.5, rng);
+    return EdEngine(cfg, pos, vel, rad, mass);
+}
+
+void expect_same(const EdState& a, const EdState& b) {
+    EXPECT_EQ(a.time, b.time);
+    EXPECT_EQ(a.x, b.x);
+    EXPECT_EQ(a.y, b.y);
+    EXPECT_EQ(a.vx, b.vx);
+    EXPECT_EQ(a.vy, b.vy);
+    EXPECT_EQ(a.spin, b.spin);
+    EXPECT_EQ(a.local_time, b.local_time);
+    EXPECT_EQ(a.last_collision_time, b.last_collision_time);
+    EXPECT_EQ(a.predicted_time, b.predicted_time);
+    EXPECT_EQ(a.collision_count, b.collision_count);
+    EXPECT_EQ(a.partner, b.partner);
+    EXPECT_EQ(a.cell_head, b.cell_head);
+    EXPECT_EQ(a.pair_collisions, b.pair_collisions);
+    EXPECT_EQ(a.wall_collisions, b.wall_collisions);
+    EXPECT_EQ(a.elastic_collisions, b.elastic_collisions);
+    EXPECT_EQ(a.events, b.events);
+    EXPECT_EQ(a.max_overlap, b.max_overlap);
+}
+
+} // namespace
+
+TEST(EdStateFile, ResumedFromFileIsBitIdentical) {
+    TempDir dir;
+    const fs::path file = dir.path / "ed.h5";
+    EdEngine whole = rough_pipe();
+    whole.run_until(0.01);
+    {
+        const H5File f = H5File::create(file.string());
+        write_ed_state(f.group("state"), whole.save_state());
+    }
+    whole.set_wall_enabled(0, false); // a run-time change after the checkpoint, replayed below
+    whole.run_until(0.03);
+
+    EdState read;
+    {
+        const H5File f = H5File::open(file.string());
+        read = read_ed_state(f.open_group("state"));
+    }
+    EXPECT_EQ(read.config.walls.size(), 2u);
+    EXPECT_EQ(read.config.walls[0].mu, 0.4);
+    EXPECT_EQ(read.config.gravity.x, 0.3);
+    EXPECT_TRUE(read.config.tc_keep_friction);
+    EXPECT_EQ(read.config.collapse_limit, 5000u);
+    EdEngine resumed(read);
+    resumed.set_wall_enabled(0, false);
+    resumed.run_until(0.03);
+    EXPECT_GT(whole.total_collisions(), 1000u);
+    EXPECT_GT(whole.elastic_collisions(), 0u);
+    expect_same(whole.save_state(), resumed.save_state());
+}
+
+TEST(EdStateFile, RejectsOtherGroups) {
+    TempDir dir;
+    const fs::path file = dir.path / "x.h5";
+    {
+        const H5File f = H5File::create(file.string());
+        f.group("empty");
+        const H5Object d = f.group("dsmc");
+        DsmcState s;
+        write_dsmc_state(d, s);
+    }
+    const H5File f = H5File::open(file.string());
+    EXPECT_THROW(read_ed_state(f.open_group("empty")), std::runtime_error);
+    EXPECT_THROW(read_ed_state(f.open_group("dsmc")), std::runtime_error);
+    EXPECT_THROW(read_dsmc_state(f.open_group("empty")), std::runtime_error);
+}
+
+TEST(DsmcStateFile, ResumedFromFileIsBitIdentical) {
+    const std::size_t n = 1500;
+    const double l = kD * std::sqrt(n * M_PI / (4.0 * 0.25));
+    DsmcConfig cfg;
+    cfg.lx = cfg.ly = l;
+    cfg.r = 0.8;
+    cfg.t_c = 2e-4;
+    cfg.seed = 77;
+    cfg.stream = 3;
+    cfg.free_volume = DsmcFreeVolume::cell;
+    cfg.displacement = true;
+    cfg.resample_interval = 7;
+    cfg.min_cell_diameters = 3.0;
+    RngStream rng(5, 5);
+    std::vector<Vec2> pos(n), vel(n);
+    for (auto& p : pos) p = {rng.uniform(0.0, l), rng.uniform(0.0, l)};
+    for (auto& v : vel) v = {rng.normal(), rng.normal()};
+    DsmcEngine whole(cfg, pos, vel, std::vector<double>(n, 0.5 * kD), std::vector<double>(n, kM));
+    whole.run_steps(93); // not a multiple of the re-sampling interval
+
+    TempDir dir;
+    const fs::path file = dir.path / "dsmc.h5";
+    {
+        const H5File f = H5File::create(file.string());
+        write_dsmc_state(f, whole.save_state());
+    }
+    whole.run_steps(107);
+    DsmcEngine resumed([&] {
+        const H5File f = H5File::open(file.string());
+        return read_dsmc_state(f);
+    }());
+    resumed.run_steps(107);
+    EXPECT_GT(whole.elastic_collisions(), 0u);
+    EXPECT_EQ(whole.time(), resumed.time());
+    EXPECT_EQ(whole.steps(), resumed.steps());
+    EXPECT_EQ(whole.v_max(), resumed.v_max());
+    EXPECT_EQ(whole.total_collisions(), resumed.total_collisions());
+    EXPECT_EQ(whole.exposure(), resumed.exposure());
+    EXPECT_TRUE(whole.positions() == resumed.positions());
+    EXPECT_TRUE(whole.velocities() == resumed.velocities());
+    EXPECT_TRUE(whole.collision_counts() == resumed.collision_counts());
+}
+
+TEST(RunCheckpoint, SavesLoadsAndIgnoresTornFiles) {
+    TempDir dir;
+    ParameterSet params;
+    RunContext ctx{params, Scale::Quick, 7, 1, true, dir.path, 0.0};
+    RunCheckpoint cp(ctx, "ed");
+    EXPECT_TRUE(cp.due()); // interval 0: every offer is taken
+    EXPECT_FALSE(cp.load([](const H5Object&) { FAIL() << "no file yet"; }));
+    cp.save([](const H5Object& root) { root.attr("answer", 42.0); });
+    EXPECT_EQ(cp.saves(), 1);
+    double answer = 0;
+    EXPECT_TRUE(cp.load([&](const H5Object& root) { answer = root.read_double_attr("answer"); }));
+    EXPECT_EQ(answer, 42.0);
+    // A checkpoint of another seed is a different file.
+    RunContext other{params, Scale::Quick, 8, 1, true, dir.path, 0.0};
+    EXPECT_NE(RunCheckpoint(other, "ed").path(), cp.path());
+    // A torn file is ignored: the run starts afresh.
+    {
+        std::ofstream out(cp.path(), std::ios::trunc);
+        out << "not hdf5";
+    }
+    EXPECT_FALSE(cp.load([](const H5Object&) {}));
+    // No temporary files are left behind.
+    for (const auto& e : fs::directory_iterator(dir.path))
+        EXPECT_EQ(e.path().filename().string().find(".partial"), std::string::npos);
+}
