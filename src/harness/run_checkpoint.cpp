@@ -1,6 +1,8 @@
 #include "harness/run_checkpoint.hpp"
 
 #include <cstdio>
+#include <cstdlib>
+#include <stdexcept>
 #include <unistd.h>
 
 namespace granrepro {
@@ -34,6 +36,9 @@ void RunCheckpoint::save(const std::function<void(const H5Object&)>& fill) {
     }
     ++saves_;
     last_ = std::chrono::steady_clock::now();
+    if (const char* k = std::getenv("GRANREPRO_INTERRUPT_AFTER_CHECKPOINTS"); k && std::atol(k) == saves_)
+        throw std::runtime_error("interrupted after checkpoint " + std::to_string(saves_) + " (" + file_.string() +
+                                 ") as GRANREPRO_INTERRUPT_AFTER_CHECKPOINTS asks");
 }
 
 bool RunCheckpoint::load(const std::function<void(const H5Object&)>& read) const {

@@ -7,6 +7,8 @@
 // bit for bit, the result equals an uninterrupted run's. The fingerprint covers the resolved
 // parameters, scale and seed, so changed inputs never resume a stale file. The runner removes
 // the directory once the results are written.
+// Testing hook: with GRANREPRO_INTERRUPT_AFTER_CHECKPOINTS=k in the environment, save() throws
+// after its k-th save, as if the run had been killed there (tests resume it and compare).
 #pragma once
 #include <chrono>
 #include <filesystem>
@@ -25,7 +27,8 @@ public:
 
     // True when the interval since the last save (or since construction) has passed.
     bool due() const;
-    // Writes the file through fill(root group); resets the interval clock.
+    // Writes the file through fill(root group); resets the interval clock. Call it at a point
+    // from which load() can continue, i.e. with everything up to here in the file.
     void save(const std::function<void(const H5Object&)>& fill);
     // If a checkpoint file exists, calls read(root group) and returns true. A file that cannot be
     // read (torn, other schema) is ignored with a warning on stderr and false is returned, so the
