@@ -28,6 +28,8 @@
 #include "engines/ed/ed_initial_states.hpp"
 #include "harness/experiment.hpp"
 #include "harness/progress.hpp"
+#include "harness/run_checkpoint.hpp"
+#include "io/ed_state_file.hpp"
 #include "observables/collision_rate_fit.hpp"
 #include "observables/rate_histogram.hpp"
 
@@ -85,6 +87,106 @@ std::string label(const char* prefix, double v) {
     return buf;
 }
 
+// The per-particle rates and counts of an instant fix everything else in it; the checkpoint
+// stores only those (and the positions), and a resumed run recomputes the rest identically.
+Instant make_instant(double t, double cn, double elastic_cn, std::vector<double> rate,
+                     const std::vector<std::uint64_t>& counts, std::vector<Vec2> pos, const ParameterSet& p) {
+    const std::size_t n = rate.size();
+    Instant in;
+    in.t = t;
+    in.window = t / 2;
+    in.cn = cn;
+    in.elastic_cn = elastic_cn;
+    in.rate = std::move(rate);
+    std::size_t tail = 0;
+    for (double r : in.rate)
+        if (r > p.real("tail_rate")) ++tail;
+    in.mean_rate = gsl_stats_mean(in.rate.data(), 1, n);
+    in.tail_fraction = double(tail) / double(n);
+    in.hist = histogram(in.rate, in.window, p);
+    in.poisson = fit(in.hist, CollisionRateFit::Model::Poisson);
+    in.expo = fit(in.hist, CollisionRateFit::Model::Exponential);
+    in.power = fit(in.hist, CollisionRateFit::Model::PowerLaw);
+    // The same Poisson fit with the counts since t = 0 (window t instead of t/2): the paper's
+    // chi = 6.5 at C/N = 8 is compared with both readings.
+    std::vector<double> full(n);
+    for (std::size_t i = 0; i < n; ++i) full[i] = double(counts[i]) / t;
+    in.poisson_full = fit(histogram(full, t, p), CollisionRateFit::Model::Poisson);
+    in.pos = std::move(pos);
+    return in;
+}
+
+// Everything the sampling loop carries from one sample to the next, besides the engine.
+struct LoopState {
+    int next_j = 0;                 // index of the next sample time t_base 2^(j/m)
+    double omega_eq = 0;            // elastic collision rate of the equilibration [1/s]
+    double wall_before = 0;         // wall seconds of earlier, interrupted parts [s]
+    std::vector<double> ts, ks, kxs, kys, cns, ecns;
+    std::vector<Instant> instants;
+    std::vector<std::vector<std::uint64_t>> instant_counts; // counts at each instant (for resume)
+    std::vector<std::uint64_t> prev_counts;                 // at the previous instant t/2
+};
+
+void save_loop(const H5Object& root, const LoopState& s, const EdEngine& eng, double wall_now) {
+    write_ed_state(root.group("engine"), eng.save_state());
+    const H5Object g = root.group("loop");
+    g.attr("next_j", long(s.next_j));
+    g.attr("omega_eq", s.omega_eq);
+    g.attr("wall_seconds", wall_now);
+    g.array("t", s.ts);
+    g.array("K", s.ks);
+    g.array("Kx", s.kxs);
+    g.array("Ky", s.kys);
+    g.array("C_over_N", s.cns);
+    g.array("elastic_C_over_N", s.ecns);
+    g.array("prev_counts", s.prev_counts);
+    g.attr("instants", long(s.instants.size()));
+    for (std::size_t k = 0; k < s.instants.size(); ++k) {
+        const Instant& in = s.instants[k];
+        const H5Object h = g.group("instant" + std::to_string(k));
+        h.attr("t", in.t);
+        h.attr("cn", in.cn);
+        h.attr("elastic_cn", in.elastic_cn);
+        h.array("rate", in.rate);
+        h.array("counts", s.instant_counts[k]);
+        std::vector<double> x, y;
+        for (const Vec2& r : in.pos) {
+            x.push_back(r.x);
+            y.push_back(r.y);
+        }
+        h.array("x", x);
+        h.array("y", y);
+    }
+}
+
+LoopState load_loop(const H5Object& root, const ParameterSet& p, EdState& engine) {
+    engine = read_ed_state(root.open_group("engine"));
+    const H5Object g = root.open_group("loop");
+    LoopState s;
+    s.next_j = int(g.read_long_attr("next_j"));
+    s.omega_eq = g.read_double_attr("omega_eq");
+    s.wall_before = g.read_double_attr("wall_seconds");
+    s.ts = g.read_array<double>("t");
+    s.ks = g.read_array<double>("K");
+    s.kxs = g.read_array<double>("Kx");
+    s.kys = g.read_array<double>("Ky");
+    s.cns = g.read_array<double>("C_over_N");
+    s.ecns = g.read_array<double>("elastic_C_over_N");
+    s.prev_counts = g.read_array<std::uint64_t>("prev_counts");
+    const long count = g.read_long_attr("instants");
+    for (long k = 0; k < count; ++k) {
+        const H5Object h = g.open_group("instant" + std::to_string(k));
+        const auto x = h.read_array<double>("x"), y = h.read_array<double>("y");
+        std::vector<Vec2> pos(x.size());
+        for (std::size_t i = 0; i < x.size(); ++i) pos[i] = {x[i], y[i]};
+        s.instant_counts.push_back(h.read_array<std::uint64_t>("counts"));
+        s.instants.push_back(make_instant(h.read_double_attr("t"), h.read_double_attr("cn"),
+                                          h.read_double_attr("elastic_cn"), h.read_array<double>("rate"),
+                                          s.instant_counts.back(), std::move(pos), p));
+    }
+    return s;
+}
+
 // Index of the instant whose C/N is nearest to cn in log; -1 if none.
 int nearest(const std::vector<Instant>& in, double cn) {
     int best = -1;
@@ -103,45 +205,60 @@ Result run(const RunContext& ctx) {
     const std::size_t n = std::size_t(ns * ns);
     const double d = p.real("d"), L = p.real("box_over_d") * d, r = p.real("r");
     const std::vector<double> rad(n, 0.5 * d), mass(n, p.real("mass"));
-    RngStream rng(ctx.seed, 0);
-    std::vector<Vec2> vel = maxwellian_velocities(mass, p.real("vbar"), rng);
-    zero_momentum_and_scale(vel, mass, p.real("vbar"));
-    EdConfig cfg;
-    cfg.lx = cfg.ly = L;
-    cfg.law.r = 1.0;
-    std::vector<Vec2> pos;
-    double omega_eq = 0;
-    {
-        EdEngine eq(cfg, square_lattice_positions(n, L, L), vel, rad, mass);
-        equilibrate(eq, p.real("equilibration"));
-        omega_eq = 2.0 * double(eq.total_collisions()) / double(n) / eq.time();
-        pos = eq.positions();
-        vel = eq.velocities();
-    }
-    zero_momentum_and_scale(vel, mass, p.real("vbar"));
-    cfg.law.r = r;
-    cfg.law.mu = p.real("mu");
-    cfg.law.beta0 = p.real("mu") > 0 ? 0.0 : -1.0;
-    cfg.t_c = p.real("t_c");
-    EdEngine eng(cfg, pos, vel, rad, mass);
-
-    // ---- the run ------------------------------------------------------------------------------
     const int m = int(p.integer("samples_per_octave"));
     const double t_base = p.real("t_base"), cn_end = p.real("cn_end"), t_max = p.real("t_max");
-    std::vector<double> ts{0.0}, ks, kxs, kys, cns{0.0}, ecns{0.0};
-    const EdKineticEnergy k0 = eng.kinetic_energy();
-    ks.push_back(k0.total());
-    kxs.push_back(k0.kx);
-    kys.push_back(k0.ky);
-    std::vector<Instant> instants;
-    std::vector<std::uint64_t> prev_counts; // at the previous instant t/2
+
+    // A resumed run continues from its last checkpoint; a fresh one equilibrates first.
+    RunCheckpoint checkpoint(ctx, "ed");
+    LoopState st;
+    EdState saved;
+    const bool resumed = checkpoint.load([&](const H5Object& root) { st = load_loop(root, p, saved); });
+    EdEngine eng = resumed ? EdEngine(saved) : [&] {
+        RngStream rng(ctx.seed, 0);
+        std::vector<Vec2> vel = maxwellian_velocities(mass, p.real("vbar"), rng);
+        zero_momentum_and_scale(vel, mass, p.real("vbar"));
+        EdConfig cfg;
+        cfg.lx = cfg.ly = L;
+        cfg.law.r = 1.0;
+        std::vector<Vec2> pos;
+        {
+            EdEngine eq(cfg, square_lattice_positions(n, L, L), vel, rad, mass);
+            equilibrate(eq, p.real("equilibration"));
+            st.omega_eq = 2.0 * double(eq.total_collisions()) / double(n) / eq.time();
+            pos = eq.positions();
+            vel = eq.velocities();
+        }
+        zero_momentum_and_scale(vel, mass, p.real("vbar"));
+        cfg.law.r = r;
+        cfg.law.mu = p.real("mu");
+        cfg.law.beta0 = p.real("mu") > 0 ? 0.0 : -1.0;
+        cfg.t_c = p.real("t_c");
+        EdEngine fresh(cfg, pos, vel, rad, mass);
+        const EdKineticEnergy k0 = fresh.kinetic_energy();
+        st.next_j = -3 * m;
+        st.ts = {0.0};
+        st.ks = {k0.total()};
+        st.kxs = {k0.kx};
+        st.kys = {k0.ky};
+        st.cns = {0.0};
+        st.ecns = {0.0};
+        return fresh;
+    }();
+    const double omega_eq = st.omega_eq;
+
+    // ---- the run ------------------------------------------------------------------------------
     std::string error;
     struct Silent {
         void operator()(const CollisionRecord&) const {}
     } silent;
     Progress progress("cluster-growth", long(std::ceil(std::log2(t_max / t_base))) + 4, ctx.quiet);
+    for (int j = -3 * m; j < st.next_j; ++j)
+        if (j % m == 0) progress.tick();
     const auto wall0 = std::chrono::steady_clock::now();
-    for (int j = -3 * m;; ++j) {
+    auto wall_now = [&] {
+        return st.wall_before + std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
+    };
+    for (int j = st.next_j;; ++j) {
         const double t = t_base * std::exp2(double(j) / m);
         try {
             eng.run_until(t, silent);
@@ -152,47 +269,35 @@ Result run(const RunContext& ctx) {
         }
         const EdKineticEnergy k = eng.kinetic_energy();
         const double cn = 2.0 * double(eng.total_collisions()) / double(n);
-        ts.push_back(t);
-        ks.push_back(k.total());
-        kxs.push_back(k.kx);
-        kys.push_back(k.ky);
-        cns.push_back(cn);
-        ecns.push_back(2.0 * double(eng.elastic_collisions()) / double(n));
-        if (j % m != 0) continue;
-        progress.tick();
-        std::vector<std::uint64_t> counts = eng.collision_counts();
-        if (!prev_counts.empty()) {
-            Instant in;
-            in.t = t;
-            in.window = t / 2;
-            in.cn = cn;
-            in.elastic_cn = ecns.back();
-            in.rate.resize(n);
-            std::size_t tail = 0;
-            for (std::size_t i = 0; i < n; ++i) {
-                in.rate[i] = double(counts[i] - prev_counts[i]) / in.window;
-                if (in.rate[i] > p.real("tail_rate")) ++tail;
+        st.ts.push_back(t);
+        st.ks.push_back(k.total());
+        st.kxs.push_back(k.kx);
+        st.kys.push_back(k.ky);
+        st.cns.push_back(cn);
+        st.ecns.push_back(2.0 * double(eng.elastic_collisions()) / double(n));
+        st.next_j = j + 1;
+        if (j % m == 0) {
+            progress.tick();
+            std::vector<std::uint64_t> counts = eng.collision_counts();
+            if (!st.prev_counts.empty()) {
+                std::vector<double> rate(n);
+                for (std::size_t i = 0; i < n; ++i) rate[i] = double(counts[i] - st.prev_counts[i]) / (t / 2);
+                st.instants.push_back(make_instant(t, cn, st.ecns.back(), std::move(rate), counts, eng.positions(), p));
+                st.instant_counts.push_back(counts);
             }
-            in.mean_rate = gsl_stats_mean(in.rate.data(), 1, n);
-            in.tail_fraction = double(tail) / double(n);
-            in.hist = histogram(in.rate, in.window, p);
-            in.poisson = fit(in.hist, CollisionRateFit::Model::Poisson);
-            in.expo = fit(in.hist, CollisionRateFit::Model::Exponential);
-            in.power = fit(in.hist, CollisionRateFit::Model::PowerLaw);
-            // The same Poisson fit with the counts since t = 0 (window t instead of t/2): the
-            // paper's chi = 6.5 at C/N = 8 is compared with both readings.
-            {
-                std::vector<double> full(n);
-                for (std::size_t i = 0; i < n; ++i) full[i] = double(counts[i]) / t;
-                in.poisson_full = fit(histogram(full, t, p), CollisionRateFit::Model::Poisson);
-            }
-            in.pos = eng.positions();
-            instants.push_back(std::move(in));
+            st.prev_counts = std::move(counts);
+            if (cn >= cn_end || t >= t_max) break;
         }
-        prev_counts = std::move(counts);
-        if (cn >= cn_end || t >= t_max) break;
+        if (checkpoint.due()) checkpoint.save([&](const H5Object& root) { save_loop(root, st, eng, wall_now()); });
     }
-    const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
+    const auto& ts = st.ts;
+    const auto& ks = st.ks;
+    const auto& kxs = st.kxs;
+    const auto& kys = st.kys;
+    const auto& cns = st.cns;
+    const auto& ecns = st.ecns;
+    const auto& instants = st.instants;
+    const double wall = wall_now();
 
     Result res;
     const double rho = M_PI / 4 * double(n) / (p.real("box_over_d") * p.real("box_over_d"));
