@@ -10,8 +10,11 @@
 // the sqrt(2 pi) value; Fig. 2 is normalised by it.
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <gsl/gsl_fit.h>
+#include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "core/rng_stream.hpp"
 #include "engines/dsmc/dsmc_engine.hpp"
@@ -19,6 +22,9 @@
 #include "engines/ed/ed_initial_states.hpp"
 #include "harness/experiment.hpp"
 #include "harness/parallel_sweep.hpp"
+#include "harness/run_checkpoint.hpp"
+#include "io/dsmc_state_file.hpp"
+#include "io/ed_state_file.hpp"
 #include "observables/impact_parameter_histogram.hpp"
 #include "observables/log_time_sampler.hpp"
 #include "observables/pair_correlation.hpp"
@@ -45,6 +51,7 @@ struct Trace {
     std::vector<double> g_r, S_k;
     std::vector<ImpactParameterHistogram::Window> pbd;
     std::vector<double> pbd_centres;
+    // While running: the seconds of the earlier parts of a resumed run; at the end, the total.
     double wall_seconds = 0;
 };
 
@@ -74,17 +81,108 @@ bool is_snapshot(const ParameterSet& p, double t) {
     return false;
 }
 
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point start) {
+    return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+// Mid-run checkpoint of one method: the engine state, the histogram counts and the trace up to a
+// sample time. prepare() is deterministic, so a resumed run redoes the equilibration instead of
+// storing the t = 0 state. P(b/d) enters the trace only at the end, so it lives in the counts.
+constexpr const char* kCoolingRunSchema = "granrepro-cooling-run";
+constexpr long kCoolingRunSchemaVersion = 1;
+
+void write_engine(const H5Object& g, const EdEngine& eng) {
+    write_ed_state(g, eng.save_state());
+}
+void write_engine(const H5Object& g, const DsmcEngine& eng) {
+    write_dsmc_state(g, eng.save_state());
+}
+void read_engine(const H5Object& g, EdState& state) {
+    state = read_ed_state(g);
+}
+void read_engine(const H5Object& g, DsmcState& state) {
+    state = read_dsmc_state(g);
+}
+
+void write_trace(const H5Object& g, const Trace& tr) {
+    g.array("t", tr.t);
+    g.array("kx", tr.kx);
+    g.array("ky", tr.ky);
+    g.array("krot", tr.krot);
+    g.array("cn", tr.cn);
+    g.array("elastic_cn", tr.elastic_cn);
+    g.array("g_r", tr.g_r);
+    g.array("S_k", tr.S_k);
+    g.attr("snapshots", long(tr.g.size()));
+    for (std::size_t i = 0; i < tr.g.size(); ++i) {
+        g.array("g_" + std::to_string(i), tr.g[i]);
+        g.array("S_" + std::to_string(i), tr.S[i]);
+    }
+}
+
+Trace read_trace(const H5Object& g) {
+    Trace tr;
+    tr.t = g.read_array<double>("t");
+    tr.kx = g.read_array<double>("kx");
+    tr.ky = g.read_array<double>("ky");
+    tr.krot = g.read_array<double>("krot");
+    tr.cn = g.read_array<double>("cn");
+    tr.elastic_cn = g.read_array<double>("elastic_cn");
+    tr.g_r = g.read_array<double>("g_r");
+    tr.S_k = g.read_array<double>("S_k");
+    const long snapshots = g.read_long_attr("snapshots");
+    for (long i = 0; i < snapshots; ++i) {
+        tr.g.push_back(g.read_array<double>("g_" + std::to_string(i)));
+        tr.S.push_back(g.read_array<double>("S_" + std::to_string(i)));
+    }
+    return tr;
+}
+
+// Runs eng through the sample times, continuing from the checkpoint if there is one. start is
+// when this process began the run (for the wall time stored in checkpoints).
 template <class Engine, class Sample>
-void observe(const ParameterSet& p, const Setup& s, Engine& eng, Trace& tr, Sample&& kinetic) {
+void observe(const ParameterSet& p, const Setup& s, Engine& eng, Trace& tr,
+             RunCheckpoint& checkpoint, Clock::time_point start, Sample&& kinetic) {
     const double d = p.real("d");
-    const std::size_t n = s.pos.size();
     ImpactParameterHistogram hist(20, [&] {
         std::vector<double> e;
         for (double w : p.reals("bd_windows")) e.push_back(w + s.t0_abs);
         return e;
     }());
+    const std::vector<double> times = sample_times(p);
+    std::size_t next = 0; // index of the next sample time
+    {
+        // Read into temporaries: a file that fails half-way must leave the fresh start intact.
+        decltype(eng.save_state()) state;
+        std::vector<std::vector<std::uint64_t>> counts;
+        Trace saved;
+        long saved_next = 0;
+        const bool resumed = checkpoint.load([&](const H5Object& root) {
+            if (root.read_string_attr("schema") != kCoolingRunSchema ||
+                root.read_long_attr("version") != kCoolingRunSchemaVersion)
+                throw std::runtime_error("not a cooling run checkpoint of this version");
+            saved_next = root.read_long_attr("next_sample");
+            if (saved_next < 0 || std::size_t(saved_next) > times.size())
+                throw std::runtime_error("next_sample out of range");
+            read_engine(root.open_group("engine"), state);
+            const H5Object h = root.open_group("impact_parameter");
+            for (std::size_t w = 0; w < hist.windows(); ++w)
+                counts.push_back(h.read_array<std::uint64_t>("window_" + std::to_string(w)));
+            saved = read_trace(root.open_group("trace"));
+            saved.wall_seconds = root.read_double_attr("wall_seconds");
+        });
+        if (resumed) {
+            eng.restore_state(state);
+            hist.set_counts(std::move(counts));
+            tr = std::move(saved);
+            next = std::size_t(saved_next);
+        }
+    }
     auto obs = [&hist](const CollisionRecord& c) { hist.add(c); };
-    for (double t : sample_times(p)) {
+    for (std::size_t i = next; i < times.size(); ++i) {
+        const double t = times[i];
         eng.run_until(s.t0_abs + t, obs);
         const auto k = kinetic(eng);
         tr.t.push_back(t);
@@ -107,8 +205,19 @@ void observe(const ParameterSet& p, const Setup& s, Engine& eng, Trace& tr, Samp
                 tr.S_k = shell.k;
             }
         }
+        if (checkpoint.due())
+            checkpoint.save([&](const H5Object& root) {
+                root.attr("schema", std::string(kCoolingRunSchema));
+                root.attr("version", kCoolingRunSchemaVersion);
+                root.attr("next_sample", long(i + 1));
+                root.attr("wall_seconds", tr.wall_seconds + seconds_since(start));
+                write_engine(root.group("engine"), eng);
+                const H5Object h = root.group("impact_parameter");
+                for (std::size_t w = 0; w < hist.windows(); ++w)
+                    h.array("window_" + std::to_string(w), hist.counts()[w]);
+                write_trace(root.group("trace"), tr);
+            });
     }
-    (void)n;
     tr.pbd_centres = hist.centres();
     for (std::size_t w = 0; w < hist.windows(); ++w) tr.pbd.push_back(hist.window(w));
 }
@@ -149,7 +258,8 @@ Setup prepare(const RunContext& ctx) {
     return s;
 }
 
-Trace run_ed(const ParameterSet& p, const Setup& s) {
+Trace run_ed(const RunContext& ctx, const Setup& s, Clock::time_point start) {
+    const ParameterSet& p = ctx.params;
     EdConfig cfg;
     cfg.lx = cfg.ly = s.L;
     cfg.law.r = p.real("r");
@@ -158,8 +268,9 @@ Trace run_ed(const ParameterSet& p, const Setup& s) {
     cfg.t_c = p.real("t_c");
     EdEngine eng(cfg, s.pos, s.vel, s.rad, s.mass);
     Trace tr;
+    RunCheckpoint checkpoint(ctx, "ed");
     const double n = double(s.pos.size());
-    observe(p, s, eng, tr, [n](const EdEngine& e) {
+    observe(p, s, eng, tr, checkpoint, start, [n](const EdEngine& e) {
         const EdKineticEnergy k = e.kinetic_energy();
         return std::array<double, 5>{k.kx, k.ky, k.krot, 2.0 * double(e.total_collisions()) / n,
                                      2.0 * double(e.elastic_collisions()) / n};
@@ -167,7 +278,8 @@ Trace run_ed(const ParameterSet& p, const Setup& s) {
     return tr;
 }
 
-Trace run_dsmc(const ParameterSet& p, const Setup& s, std::uint64_t seed) {
+Trace run_dsmc(const RunContext& ctx, const Setup& s, Clock::time_point start) {
+    const ParameterSet& p = ctx.params;
     DsmcConfig cfg;
     cfg.lx = cfg.ly = s.L;
     cfg.r = p.real("r");
@@ -177,12 +289,13 @@ Trace run_dsmc(const ParameterSet& p, const Setup& s, std::uint64_t seed) {
     const std::string fv = p.text("dsmc_free_volume");
     cfg.free_volume = fv == "cell" ? DsmcFreeVolume::cell : fv == "mean" ? DsmcFreeVolume::mean : DsmcFreeVolume::off;
     cfg.displacement = p.flag("dsmc_displacement");
-    cfg.seed = seed;
+    cfg.seed = ctx.seed;
     cfg.stream = 1;
     DsmcEngine eng(cfg, s.pos, s.vel, s.rad, s.mass);
     Trace tr;
+    RunCheckpoint checkpoint(ctx, "dsmc");
     const double n = double(s.pos.size());
-    observe(p, s, eng, tr, [n](const DsmcEngine& e) {
+    observe(p, s, eng, tr, checkpoint, start, [n](const DsmcEngine& e) {
         double kx = 0, ky = 0;
         for (std::size_t i = 0; i < e.size(); ++i) {
             kx += 0.5 * e.masses()[i] * e.velocities()[i].x * e.velocities()[i].x;
@@ -267,16 +380,21 @@ Result run(const RunContext& ctx) {
     Trace ed, ds;
     Progress progress("cooling", dsmc ? 2 : 1, ctx.quiet);
     parallel_sweep(dsmc ? 2 : 1, ctx.threads, &progress, [&](long which) {
-        const auto start = std::chrono::steady_clock::now();
+        const auto start = Clock::now();
         Trace& tr = which == 0 ? ed : ds;
-        tr = which == 0 ? run_ed(p, s) : run_dsmc(p, s, ctx.seed);
-        tr.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        tr = which == 0 ? run_ed(ctx, s, start) : run_dsmc(ctx, s, start);
+        tr.wall_seconds += seconds_since(start);
     });
 
     Result res;
     res.scalar("N", double(s.pos.size()), "1", "number of disks");
-    res.scalar("wall_time_ed", ed.wall_seconds, "s", "wall time of the ED run from t = 0 (with its observables)");
-    if (dsmc) res.scalar("wall_time_dsmc", ds.wall_seconds, "s", "wall time of the DSMC run from t = 0 (with its observables)");
+    res.scalar(
+        "wall_time_ed", ed.wall_seconds, "s",
+        "wall time of the ED run from t = 0 with its observables, summed over resumed parts");
+    if (dsmc)
+        res.scalar(
+            "wall_time_dsmc", ds.wall_seconds, "s",
+            "wall time of the DSMC run from t = 0 with its observables, summed over resumed parts");
     res.scalar("box", s.L, "m", "side of the periodic box");
     res.scalar("t0_inv_eq19_printed", 1 / t0_printed, "1/s", "1/t0 from Eq. (19) as printed (sqrt(pi))");
     res.scalar("t0_inv_kinetic_theory", 1 / t0_kinetic, "1/s", "1/t0 = (1-r^2) omega_E / 4 with Henderson's g(d): sqrt(2 pi)");

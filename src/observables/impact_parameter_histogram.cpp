@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <utility>
 
 namespace granrepro {
 
@@ -60,6 +61,17 @@ ImpactParameterHistogram::Window ImpactParameterHistogram::window(std::size_t w)
         out.error[k] = scale * std::sqrt(static_cast<double>(out.counts[k]));
     }
     return out;
+}
+
+void ImpactParameterHistogram::set_counts(std::vector<std::vector<std::uint64_t>> counts) {
+    if (counts.size() != counts_.size())
+        throw std::invalid_argument(
+            "ImpactParameterHistogram: counts for a different number of windows");
+    for (const auto& c : counts)
+        if (c.size() != static_cast<std::size_t>(n_bins_))
+            throw std::invalid_argument(
+                "ImpactParameterHistogram: counts for a different number of bins");
+    counts_ = std::move(counts);
 }
 
 } // namespace granrepro

@@ -40,6 +40,12 @@ public:
     // Normalised histogram of window w.
     Window window(std::size_t w) const;
 
+    // The accumulated state, counts[window][bin], so that a checkpointed run can continue
+    // accumulating where it stopped. set_counts throws std::invalid_argument unless the shape is
+    // windows() x bins().
+    const std::vector<std::vector<std::uint64_t>>& counts() const { return counts_; }
+    void set_counts(std::vector<std::vector<std::uint64_t>> counts);
+
 private:
     int n_bins_;
     bool count_walls_;

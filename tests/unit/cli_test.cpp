@@ -133,6 +133,41 @@ TEST(Cli, SameSeedGivesBitIdenticalDatasets) {
     fs::remove_all(b);
 }
 
+// A cooling run killed after its third mid-run checkpoint (both methods, on two threads) and
+// rerun resumes from the checkpoints; its datasets equal an uninterrupted run's bit for bit.
+TEST(Cli, CoolingResumesBitIdentical) {
+    const fs::path a = fresh("cool-a"), b = fresh("cool-b");
+    const std::string args = "cooling --scale quick --set n_side=30 ";
+    ASSERT_EQ(run(args + "--quiet --out " + a.string()).code, 0);
+    const Outcome killed =
+        run(args + "--quiet --checkpoint-interval 0 --threads 2 --out " + b.string(),
+            "GRANREPRO_INTERRUPT_AFTER_CHECKPOINTS=3");
+    EXPECT_NE(killed.code, 0) << killed.err;
+    EXPECT_FALSE(fs::exists(b / "cooling"));
+    int checkpoints = 0;
+    for (const auto& e : fs::directory_iterator(b / ".cooling.checkpoint"))
+        checkpoints += e.path().extension() == ".h5";
+    EXPECT_EQ(checkpoints, 2) << "one per method";
+    const Outcome resumed = run(args + "--checkpoint-interval 0 --out " + b.string());
+    ASSERT_EQ(resumed.code, 0) << resumed.err;
+    EXPECT_NE(resumed.err.find("resuming"), std::string::npos) << resumed.err;
+    EXPECT_FALSE(fs::exists(b / ".cooling.checkpoint"));
+    const H5File fa = H5File::open((a / "cooling" / "data.h5").string());
+    const H5File fb = H5File::open((b / "cooling" / "data.h5").string());
+    for (const char* ds :
+         {"tables/energy_ed/K_over_K0", "tables/energy_ed/C_over_N", "tables/energy_dsmc/K_over_K0",
+          "tables/energy_dsmc/C_over_N", "tables/impact_parameter_ed/P_t0",
+          "tables/impact_parameter_ed/P_t2", "tables/gr_ed/g_t0", "tables/gr_ed/g_t5",
+          "tables/sk_dsmc/S_t5", "scalars/ed_C_over_N_end", "scalars/pbd_collisions_first",
+          "scalars/dsmc_over_ed_end", "scalars/omega_equilibration_over_enskog"}) {
+        const auto va = fa.read_dataset(ds), vb = fb.read_dataset(ds);
+        ASSERT_EQ(va.size(), vb.size()) << ds;
+        EXPECT_EQ(0, std::memcmp(va.data(), vb.data(), va.size() * sizeof(double))) << ds;
+    }
+    fs::remove_all(a);
+    fs::remove_all(b);
+}
+
 TEST(Cli, ListNamesEveryFigure) {
     const fs::path out = fresh("list");
     const std::string cmd = std::string(GRANREPRO_BINARY) + " list > " + out.string();
