@@ -127,7 +127,11 @@ struct LoopState {
     std::vector<std::uint64_t> prev_counts;                 // at the previous instant t/2
 };
 
+constexpr const char* kRunSchema = "granrepro-cluster-growth-run";
+constexpr long kRunSchemaVersion = 1;
+
 void save_loop(const H5Object& root, const LoopState& s, const EdEngine& eng, double wall_now) {
+    root.stamp_schema(kRunSchema, kRunSchemaVersion);
     write_ed_state(root.group("engine"), eng.save_state());
     const H5Object g = root.group("loop");
     g.attr("next_j", long(s.next_j));
@@ -149,17 +153,12 @@ void save_loop(const H5Object& root, const LoopState& s, const EdEngine& eng, do
         h.attr("elastic_cn", in.elastic_cn);
         h.array("rate", in.rate);
         h.array("counts", s.instant_counts[k]);
-        std::vector<double> x, y;
-        for (const Vec2& r : in.pos) {
-            x.push_back(r.x);
-            y.push_back(r.y);
-        }
-        h.array("x", x);
-        h.array("y", y);
+        h.vec2_array("position", in.pos);
     }
 }
 
 LoopState load_loop(const H5Object& root, const ParameterSet& p, EdState& engine) {
+    root.require_schema(kRunSchema, kRunSchemaVersion);
     engine = read_ed_state(root.open_group("engine"));
     const H5Object g = root.open_group("loop");
     LoopState s;
@@ -176,9 +175,7 @@ LoopState load_loop(const H5Object& root, const ParameterSet& p, EdState& engine
     const long count = g.read_long_attr("instants");
     for (long k = 0; k < count; ++k) {
         const H5Object h = g.open_group("instant" + std::to_string(k));
-        const auto x = h.read_array<double>("x"), y = h.read_array<double>("y");
-        std::vector<Vec2> pos(x.size());
-        for (std::size_t i = 0; i < x.size(); ++i) pos[i] = {x[i], y[i]};
+        std::vector<Vec2> pos = h.read_vec2_array("position");
         s.instant_counts.push_back(h.read_array<std::uint64_t>("counts"));
         s.instants.push_back(make_instant(h.read_double_attr("t"), h.read_double_attr("cn"),
                                           h.read_double_attr("elastic_cn"), h.read_array<double>("rate"),
@@ -215,25 +212,15 @@ Result run(const RunContext& ctx) {
     const bool resumed = checkpoint.load([&](const H5Object& root) { st = load_loop(root, p, saved); });
     EdEngine eng = resumed ? EdEngine(saved) : [&] {
         RngStream rng(ctx.seed, 0);
-        std::vector<Vec2> vel = maxwellian_velocities(mass, p.real("vbar"), rng);
-        zero_momentum_and_scale(vel, mass, p.real("vbar"));
+        const EquilibratedGas gas = equilibrated_lattice_gas(L, rad, mass, p.real("vbar"), p.real("equilibration"), rng);
+        st.omega_eq = gas.collision_rate;
         EdConfig cfg;
         cfg.lx = cfg.ly = L;
-        cfg.law.r = 1.0;
-        std::vector<Vec2> pos;
-        {
-            EdEngine eq(cfg, square_lattice_positions(n, L, L), vel, rad, mass);
-            equilibrate(eq, p.real("equilibration"));
-            st.omega_eq = 2.0 * double(eq.total_collisions()) / double(n) / eq.time();
-            pos = eq.positions();
-            vel = eq.velocities();
-        }
-        zero_momentum_and_scale(vel, mass, p.real("vbar"));
         cfg.law.r = r;
         cfg.law.mu = p.real("mu");
         cfg.law.beta0 = p.real("mu") > 0 ? 0.0 : -1.0;
         cfg.t_c = p.real("t_c");
-        EdEngine fresh(cfg, pos, vel, rad, mass);
+        EdEngine fresh(cfg, gas.pos, gas.vel, rad, mass);
         const EdKineticEnergy k0 = fresh.kinetic_energy();
         st.next_j = -3 * m;
         st.ts = {0.0};

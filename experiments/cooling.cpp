@@ -160,9 +160,7 @@ void observe(const ParameterSet& p, const Setup& s, Engine& eng, Trace& tr,
         Trace saved;
         long saved_next = 0;
         const bool resumed = checkpoint.load([&](const H5Object& root) {
-            if (root.read_string_attr("schema") != kCoolingRunSchema ||
-                root.read_long_attr("version") != kCoolingRunSchemaVersion)
-                throw std::runtime_error("not a cooling run checkpoint of this version");
+            root.require_schema(kCoolingRunSchema, kCoolingRunSchemaVersion);
             saved_next = root.read_long_attr("next_sample");
             if (saved_next < 0 || std::size_t(saved_next) > times.size())
                 throw std::runtime_error("next_sample out of range");
@@ -207,8 +205,7 @@ void observe(const ParameterSet& p, const Setup& s, Engine& eng, Trace& tr,
         }
         if (checkpoint.due())
             checkpoint.save([&](const H5Object& root) {
-                root.attr("schema", std::string(kCoolingRunSchema));
-                root.attr("version", kCoolingRunSchemaVersion);
+                root.stamp_schema(kCoolingRunSchema, kCoolingRunSchemaVersion);
                 root.attr("next_sample", long(i + 1));
                 root.attr("wall_seconds", tr.wall_seconds + seconds_since(start));
                 write_engine(root.group("engine"), eng);

@@ -85,27 +85,15 @@ Trace run_point(const ParameterSet& p, const Point& pt, std::uint64_t seed, std:
     const double d = p.real("d"), L = p.real("box_over_d") * d;
     const std::vector<double> rad(n, 0.5 * d), mass(n, p.real("mass"));
     RngStream rng(seed, stream);
-    std::vector<Vec2> vel = maxwellian_velocities(mass, p.real("vbar"), rng);
-    zero_momentum_and_scale(vel, mass, p.real("vbar"));
+    const EquilibratedGas gas = equilibrated_lattice_gas(L, rad, mass, p.real("vbar"), p.real("equilibration"), rng);
 
     EdConfig cfg;
     cfg.lx = cfg.ly = L;
-    cfg.law.r = 1.0;
-    std::vector<Vec2> pos;
-    {
-        EdEngine eq(cfg, square_lattice_positions(n, L, L), vel, rad, mass);
-        equilibrate(eq, p.real("equilibration"));
-        pos = eq.positions();
-        vel = eq.velocities();
-    }
-    // Elastic equilibration conserves energy; the rescale only removes round-off.
-    zero_momentum_and_scale(vel, mass, p.real("vbar"));
-
     cfg.law.r = pt.r;
     cfg.law.mu = p.real("mu");
     cfg.law.beta0 = p.real("mu") > 0 ? 0.0 : -1.0;
     cfg.t_c = pt.t_c;
-    EdEngine eng(cfg, pos, vel, rad, mass); // t = 0: dissipation switched on
+    EdEngine eng(cfg, gas.pos, gas.vel, rad, mass); // t = 0: dissipation switched on
 
     Trace tr;
     auto sample = [&] {

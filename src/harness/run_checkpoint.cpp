@@ -2,12 +2,22 @@
 
 #include <cstdio>
 #include <cstdlib>
+#include <mutex>
 #include <stdexcept>
 #include <unistd.h>
 
 namespace granrepro {
 
 namespace fs = std::filesystem;
+
+namespace {
+// Runs of one process (e.g. cooling's ED and DSMC on two threads) may save at the same time; the
+// HDF5 C library is only safe for that when built thread-safe, which we do not rely on.
+std::mutex& h5_mutex() {
+    static std::mutex m;
+    return m;
+}
+} // namespace
 
 RunCheckpoint::RunCheckpoint(const RunContext& ctx, const std::string& name)
     : interval_(ctx.checkpoint_interval), quiet_(ctx.quiet), last_(std::chrono::steady_clock::now()) {
@@ -25,6 +35,7 @@ void RunCheckpoint::save(const std::function<void(const H5Object&)>& fill) {
     const fs::path tmp = file_.string() + ".partial-" + std::to_string(::getpid());
     try {
         {
+            const std::lock_guard<std::mutex> lock(h5_mutex());
             const H5File f = H5File::create(tmp.string());
             fill(f);
         }
@@ -45,6 +56,7 @@ bool RunCheckpoint::load(const std::function<void(const H5Object&)>& read) const
     std::error_code ec;
     if (!fs::exists(file_, ec)) return false;
     try {
+        const std::lock_guard<std::mutex> lock(h5_mutex());
         const H5File f = H5File::open(file_.string());
         read(f);
     } catch (const std::exception& e) {

@@ -48,26 +48,14 @@ DsmcConfig read_config(const H5Object& g) {
 } // namespace
 
 void write_dsmc_state(const H5Object& g, const DsmcState& s) {
-    g.attr("schema", std::string(kDsmcStateSchema));
-    g.attr("schema_version", kDsmcStateSchemaVersion);
+    g.stamp_schema(kDsmcStateSchema, kDsmcStateSchemaVersion);
     write_config(g, s.config);
     g.attr("time", s.time);
     g.attr("tau", s.tau);
     g.attr("v_max", s.v_max);
     g.attr_u64("steps", s.steps);
-    std::vector<double> x, y, vx, vy;
-    for (const Vec2& p : s.position) {
-        x.push_back(p.x);
-        y.push_back(p.y);
-    }
-    for (const Vec2& v : s.velocity) {
-        vx.push_back(v.x);
-        vy.push_back(v.y);
-    }
-    g.array("x", x);
-    g.array("y", y);
-    g.array("vx", vx);
-    g.array("vy", vy);
+    g.vec2_array("position", s.position);
+    g.vec2_array("velocity", s.velocity);
     g.array("radius", s.radius);
     g.array("mass", s.mass);
     g.array("last_collision_time", s.last_collision_time);
@@ -81,29 +69,17 @@ void write_dsmc_state(const H5Object& g, const DsmcState& s) {
 }
 
 DsmcState read_dsmc_state(const H5Object& g) {
-    std::string schema;
-    try {
-        schema = g.read_string_attr("schema");
-    } catch (const std::exception&) {
-    }
-    if (schema != kDsmcStateSchema) throw std::runtime_error("not a DSMC state (schema attribute is not granrepro-dsmc-state)");
-    if (g.read_long_attr("schema_version") != kDsmcStateSchemaVersion)
-        throw std::runtime_error("DSMC state: unsupported schema_version (this build reads " +
-                                 std::to_string(kDsmcStateSchemaVersion) + ")");
+    g.require_schema(kDsmcStateSchema, kDsmcStateSchemaVersion);
     DsmcState s;
     s.config = read_config(g);
     s.time = g.read_double_attr("time");
     s.tau = g.read_double_attr("tau");
     s.v_max = g.read_double_attr("v_max");
     s.steps = g.read_u64_attr("steps");
-    const auto x = g.read_array<double>("x"), y = g.read_array<double>("y");
-    const auto vx = g.read_array<double>("vx"), vy = g.read_array<double>("vy");
-    if (y.size() != x.size() || vx.size() != x.size() || vy.size() != x.size())
+    s.position = g.read_vec2_array("position");
+    s.velocity = g.read_vec2_array("velocity");
+    if (s.velocity.size() != s.position.size())
         throw std::runtime_error("DSMC state: position and velocity arrays differ in length");
-    for (std::size_t i = 0; i < x.size(); ++i) {
-        s.position.push_back({x[i], y[i]});
-        s.velocity.push_back({vx[i], vy[i]});
-    }
     s.radius = g.read_array<double>("radius");
     s.mass = g.read_array<double>("mass");
     s.last_collision_time = g.read_array<double>("last_collision_time");

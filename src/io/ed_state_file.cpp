@@ -88,8 +88,7 @@ EdConfig read_config(const H5Object& g) {
 } // namespace
 
 void write_ed_state(const H5Object& g, const EdState& s) {
-    g.attr("schema", std::string(kEdStateSchema));
-    g.attr("schema_version", kEdStateSchemaVersion);
+    g.stamp_schema(kEdStateSchema, kEdStateSchemaVersion);
     write_config(g, s.config);
     g.attr("time", s.time);
     g.array("x", s.x);
@@ -125,15 +124,7 @@ void write_ed_state(const H5Object& g, const EdState& s) {
 }
 
 EdState read_ed_state(const H5Object& g) {
-    std::string schema;
-    try {
-        schema = g.read_string_attr("schema");
-    } catch (const std::exception&) {
-    }
-    if (schema != kEdStateSchema) throw std::runtime_error("not an ED state (schema attribute is not granrepro-ed-state)");
-    if (g.read_long_attr("schema_version") != kEdStateSchemaVersion)
-        throw std::runtime_error("ED state: unsupported schema_version (this build reads " +
-                                 std::to_string(kEdStateSchemaVersion) + ")");
+    g.require_schema(kEdStateSchema, kEdStateSchemaVersion);
     EdState s;
     s.config = read_config(g);
     s.time = g.read_double_attr("time");

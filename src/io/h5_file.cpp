@@ -160,6 +160,40 @@ std::uint64_t H5Object::read_u64_attr(const std::string& name) const {
 
 bool H5Object::has(const std::string& name) const { return H5Lexists(id_, name.c_str(), H5P_DEFAULT) > 0; }
 
+void H5Object::vec2_array(const std::string& name, const std::vector<Vec2>& v) const {
+    std::vector<double> x(v.size()), y(v.size());
+    for (std::size_t i = 0; i < v.size(); ++i) {
+        x[i] = v[i].x;
+        y[i] = v[i].y;
+    }
+    array(name + "_x", x);
+    array(name + "_y", y);
+}
+
+std::vector<Vec2> H5Object::read_vec2_array(const std::string& name) const {
+    const auto x = read_array<double>(name + "_x"), y = read_array<double>(name + "_y");
+    if (x.size() != y.size()) throw std::runtime_error("HDF5: " + name + "_x and " + name + "_y differ in length");
+    std::vector<Vec2> v(x.size());
+    for (std::size_t i = 0; i < v.size(); ++i) v[i] = {x[i], y[i]};
+    return v;
+}
+
+void H5Object::stamp_schema(const std::string& schema, long version) const {
+    attr("schema", schema);
+    attr("schema_version", version);
+}
+
+void H5Object::require_schema(const std::string& schema, long version) const {
+    std::string found;
+    try {
+        found = read_string_attr("schema");
+    } catch (const std::exception&) {
+    }
+    if (found != schema) throw std::runtime_error("not a " + schema + " group (schema attribute: '" + found + "')");
+    if (read_long_attr("schema_version") != version)
+        throw std::runtime_error(schema + ": unsupported schema_version (this build reads " + std::to_string(version) + ")");
+}
+
 std::vector<double> H5Object::read_dataset(const std::string& name) const {
     H5Object d(check(H5Dopen2(id_, name.c_str(), H5P_DEFAULT), "open " + name), &H5Dclose);
     H5Object s(H5Dget_space(d.id()), &H5Sclose);

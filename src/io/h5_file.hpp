@@ -3,6 +3,8 @@
 #pragma once
 #include <cstdint>
 #include <hdf5.h>
+
+#include "core/vec2.hpp"
 #include <string>
 #include <vector>
 
@@ -42,6 +44,14 @@ public:
     template <class T>
     std::vector<T> read_array(const std::string& name) const;
     bool has(const std::string& name) const; // a link (group or dataset) of that name exists
+
+    // Vectors as two datasets <name>_x and <name>_y, bit for bit.
+    void vec2_array(const std::string& name, const std::vector<Vec2>& v) const;
+    std::vector<Vec2> read_vec2_array(const std::string& name) const;
+    // Attributes "schema" and "schema_version" name the layout of a group.
+    void stamp_schema(const std::string& schema, long version) const;
+    // Throws std::runtime_error unless the group carries exactly this schema and version.
+    void require_schema(const std::string& schema, long version) const;
 
 private:
     hid_t id_ = -1;

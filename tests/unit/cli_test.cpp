@@ -10,34 +10,17 @@
 #include <fstream>
 #include <sys/wait.h>
 
+#include "cli_support.hpp"
 #include "io/h5_file.hpp"
 
 namespace fs = std::filesystem;
 using granrepro::H5File;
 
+using cli_support::fresh;
+using cli_support::Outcome;
+using cli_support::run;
+
 namespace {
-
-struct Outcome {
-    int code;
-    std::string err;
-};
-
-// Runs granrepro with `args`, stderr captured; stdout discarded.
-Outcome run(const std::string& args, const std::string& env = "") {
-    const fs::path err = fs::temp_directory_path() / ("granrepro-cli-err-" + std::to_string(::getpid()));
-    const std::string cmd = env + " " + GRANREPRO_BINARY + " " + args + " > /dev/null 2> " + err.string();
-    const int status = std::system(cmd.c_str());
-    std::ifstream in(err);
-    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    fs::remove(err);
-    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, text};
-}
-
-fs::path fresh(const std::string& name) {
-    const fs::path p = fs::temp_directory_path() / ("granrepro-cli-" + name + "-" + std::to_string(::getpid()));
-    fs::remove_all(p);
-    return p;
-}
 
 int lines(const std::string& s) { return int(std::count(s.begin(), s.end(), '\n')); }
 
