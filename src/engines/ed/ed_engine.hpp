@@ -859,10 +859,24 @@ private:
 // collisions per CPU second at N = 1e4 / 1e5 / 1e6):
 //   binary heap 1.09e6 / 6.9e5 / 3.6e5,  4-ary heap 1.02e6 / 6.2e5 / 3.6e5,
 //   calendar    1.22e6 / 7.4e5 / 3.5e5,  (a heap + far-future buckets variant: 0.87e6 / 4.8e5 / 3.3e5).
-// At large N the loop is bound by cache misses on particle records, not by the queue, so the
-// queues tie there; the binary heap is kept as default because its O(log N) bound holds for any
-// distribution of event times (a clustering TC run spreads them over many decades, where a
-// calendar's bucket width can be badly off between re-estimates).
+// At large N the loop is bound by cache misses, so the queues tie there; the binary heap is kept
+// as default because its O(log N) bound holds for any distribution of event times (a clustering
+// TC run spreads them over many decades, where a calendar's bucket width can be badly off between
+// re-estimates).
+// Why the per-event cost still rises 3.3-3.5x from N = 1e4 to 1e6 (measured in session 2; none
+// of the following is kept, all changed the N = 1e6 cost by less than the run-to-run noise of
+// about 10 %):
+//   - a complete binary tournament tree (path prefetched, no position index), a two-level queue
+//     with lazy deletion (exact heap for the current window, append-only buckets), prefetching
+//     the records of the 7-31 heap slots nearest the top or the runner-up's neighbour cells;
+//   - random versus spatial order of the particle records (a shuffled lattice start costs the
+//     same as an ordered one: one record is one cache line, so neighbours are separate misses in
+//     either order; reordering by cell would not help);
+//   - larger cells (cell_size_factor 1.4 and 2: fewer crossings, more pairs; slower at all N).
+// The cause is the machine: `granrepro bench ed` also measures the latency of a dependent random
+// load at the engine's working set, 16 ns at N = 1e4 (1.8 MB, cache) against 160 ns at N = 1e6
+// (177 MB, DRAM) on this VM, whose caches stop helping beyond ~4 MB. A cost ratio of 1.5 would
+// need nearly every miss of an event hidden.
 using EdEngine = BasicEdEngine<BinaryHeapQueue>;
 
 } // namespace granrepro
