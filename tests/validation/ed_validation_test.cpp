@@ -34,6 +34,31 @@ EdEngine lattice_gas(std::size_t n, double rho, const std::vector<Vec2>& vel, do
     return e;
 }
 
+// Elastic gas of n disks at area fraction rho, Maxwellian start (RNG stream `seed`, substream
+// from rho), equilibrated for 30 collisions per particle.
+EdEngine equilibrium_gas(std::size_t n, double rho, std::uint64_t seed) {
+    RngStream rng(seed, static_cast<std::uint64_t>(rho * 1000));
+    const std::vector<double> mass(n, kM);
+    return lattice_gas(n, rho, maxwellian_velocities(mass, 1.0, rng), 30.0);
+}
+
+// Enskog collision frequency per unit contact value, omega_E / g(d) = 2 n d sqrt(pi T/m) [1/s],
+// T = K/N (see EdEnskogRate).
+double enskog_rate_over_g(const EdEngine& e) {
+    const double n = static_cast<double>(e.size());
+    const double temp = e.kinetic_energy().total() / n;
+    return 2.0 * n / (e.config().lx * e.config().ly) * kD * std::sqrt(M_PI * temp / kM);
+}
+
+// Mean of block averages and its standard error.
+std::pair<double, double> mean_and_error(const std::vector<double>& x) {
+    const double k = static_cast<double>(x.size());
+    double m = 0, v = 0;
+    for (double y : x) m += y / k;
+    for (double y : x) v += (y - m) * (y - m) / (k - 1);
+    return {m, std::sqrt(v / k)};
+}
+
 } // namespace
 
 // Enskog: per-particle collision frequency of hard disks in 2D,
@@ -47,24 +72,16 @@ class EdEnskogRate : public ::testing::TestWithParam<double> {};
 TEST_P(EdEnskogRate, CollisionFrequencyMatchesEnskogHenderson) {
     const double rho = GetParam();
     const std::size_t n = 4096;
-    RngStream rng(2024, static_cast<std::uint64_t>(rho * 1000));
-    const std::vector<double> mass(n, kM);
-    auto e = lattice_gas(n, rho, maxwellian_velocities(mass, 1.0, rng), 30.0);
-    const double temp = e.kinetic_energy().total() / static_cast<double>(n); // [J]
-    const double nd = static_cast<double>(n) / (e.config().lx * e.config().ly);
-    const double omega_e = 2.0 * nd * kD * henderson_g(rho) * std::sqrt(M_PI * temp / kM);
-    const int blocks = 20;
+    auto e = equilibrium_gas(n, rho, 2024);
+    const double omega_e = henderson_g(rho) * enskog_rate_over_g(e);
     std::vector<double> rate;
-    for (int b = 0; b < blocks; ++b) {
+    for (int b = 0; b < 20; ++b) {
         const double t0 = e.time();
         const auto c0 = e.total_collisions();
         e.run_collisions(10 * n / 2); // 10 collisions per particle per block
         rate.push_back(2.0 * static_cast<double>(e.total_collisions() - c0) / (static_cast<double>(n) * (e.time() - t0)));
     }
-    double mean = 0, var = 0;
-    for (double r : rate) mean += r / blocks;
-    for (double r : rate) var += (r - mean) * (r - mean) / (blocks - 1);
-    const double sigma = std::sqrt(var / blocks);
+    const auto [mean, sigma] = mean_and_error(rate);
     const double tol = 0.025 * omega_e + 4.0 * sigma;
     EXPECT_NEAR(mean, omega_e, tol) << "rho=" << rho << " sim/theory=" << mean / omega_e << " sigma/theory=" << sigma / omega_e;
     EXPECT_LT(e.max_overlap(), 1e-9 * kD);
@@ -86,13 +103,10 @@ class EdEnskogPressure : public ::testing::TestWithParam<double> {};
 TEST_P(EdEnskogPressure, VirialPressureMatchesEnskogHenderson) {
     const double rho = GetParam();
     const std::size_t n = 4096;
-    RngStream rng(2025, static_cast<std::uint64_t>(rho * 1000));
-    const std::vector<double> mass(n, kM);
-    auto e = lattice_gas(n, rho, maxwellian_velocities(mass, 1.0, rng), 30.0);
+    auto e = equilibrium_gas(n, rho, 2025);
     const double lx = e.config().lx, ly = e.config().ly;
-    const double temp = e.kinetic_energy().total() / static_cast<double>(n); // [J], constant (elastic)
-    const double nd = static_cast<double>(n) / (lx * ly);
-    const double p_ideal = nd * temp; // [N/m]
+    const double p_ideal = e.kinetic_energy().total() / (lx * ly); // n T [N/m], constant (elastic)
+    const double omega_over_g = enskog_rate_over_g(e);
     const int blocks = 20;
     std::vector<double> g_press, g_rate;
     for (int b = 0; b < blocks; ++b) {
@@ -117,18 +131,12 @@ TEST_P(EdEnskogPressure, VirialPressureMatchesEnskogHenderson) {
         EXPECT_NEAR(p_kin / p_ideal, 1.0, 1e-9); // elastic: K is exactly conserved
         g_press.push_back(p_coll / (p_ideal * 2.0 * rho));
         const double omega = 2.0 * static_cast<double>(e.total_collisions() - c0) / (static_cast<double>(n) * (t1 - t0));
-        g_rate.push_back(omega / (2.0 * nd * kD * std::sqrt(M_PI * temp / kM)));
+        g_rate.push_back(omega / omega_over_g);
     }
-    auto mean_sigma = [&](const std::vector<double>& x) {
-        double m = 0, v = 0;
-        for (double y : x) m += y / blocks;
-        for (double y : x) v += (y - m) * (y - m) / (blocks - 1);
-        return std::pair{m, std::sqrt(v / blocks)};
-    };
     std::vector<double> diff(blocks);
     for (int b = 0; b < blocks; ++b) diff[b] = g_press[b] - g_rate[b];
-    const auto [gp, sp] = mean_sigma(g_press);
-    const auto [dm, sd] = mean_sigma(diff);
+    const auto [gp, sp] = mean_and_error(g_press);
+    const auto [dm, sd] = mean_and_error(diff);
     const double gh = henderson_g(rho);
     const double z = 1.0 + 2.0 * rho * gp, zh = 1.0 + 2.0 * rho * gh;
     EXPECT_NEAR(z, zh, 0.025 * (zh - 1.0) + 4.0 * 2.0 * rho * sp) << "rho=" << rho << " g_press=" << gp << " g_H=" << gh;
