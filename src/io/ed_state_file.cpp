@@ -32,6 +32,7 @@ void write_config(const H5Object& g, const EdConfig& c) {
     write_law(g, "law_", c.law);
     g.attr("t_c", c.t_c);
     g.attr("tc_keep_friction", long(c.tc_keep_friction));
+    g.attr("tc_both", long(c.tc_both));
     g.attr("cell_size_factor", c.cell_size_factor);
     g.attr("collapse_limit", long(c.collapse_limit));
     g.attr("collapse_window", c.collapse_window);
@@ -66,6 +67,7 @@ EdConfig read_config(const H5Object& g) {
     c.law = read_law(g, "law_");
     c.t_c = g.read_double_attr("t_c");
     c.tc_keep_friction = g.read_long_attr("tc_keep_friction") != 0;
+    c.tc_both = g.read_long_attr("tc_both") != 0;
     c.cell_size_factor = g.read_double_attr("cell_size_factor");
     c.collapse_limit = static_cast<std::uint32_t>(g.read_long_attr("collapse_limit"));
     c.collapse_window = g.read_double_attr("collapse_window");

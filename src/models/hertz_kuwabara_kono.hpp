@@ -6,16 +6,19 @@
 #pragma once
 #include <cmath>
 
+#include "models/normal_force.hpp"
+
 namespace granrepro {
 
 struct HertzKuwabaraKono {
     double k = 0.0;     // [N / m^(3/2)]
     double gamma = 0.0; // [1 / (s m^(1/2))]
 
-    double normal_force(double xi, double xi_dot, double m_red) const {
+    NormalForce normal_force(double xi, double xi_dot, double m_red) const {
         // xi can be a round-off negative right at the contact boundary; the force is then zero.
         const double s = xi > 0.0 ? std::sqrt(xi) : 0.0;
-        return k * xi * s + gamma * m_red * s * xi_dot;
+        const double elastic = k * xi * s;
+        return {elastic + gamma * m_red * s * xi_dot, elastic};
     }
 
     // The HKK law whose stiffness and damping equal those of a linear law (k_N, gamma_N) at the

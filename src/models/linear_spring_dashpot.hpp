@@ -13,15 +13,18 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "models/normal_force.hpp"
+
 namespace granrepro {
 
 struct LinearSpringDashpot {
     double k_N = 0.0;     // normal spring constant [N/m]
     double gamma_N = 0.0; // damping rate per unit reduced mass [1/s]
 
-    // Magnitude of the repulsive force on either grain along the normal [N]; > 0 pushes apart.
-    double normal_force(double xi, double xi_dot, double m_red) const {
-        return k_N * xi + gamma_N * m_red * xi_dot;
+    // The repulsive force on either grain along the normal [N]; > 0 pushes apart.
+    NormalForce normal_force(double xi, double xi_dot, double m_red) const {
+        const double elastic = k_N * xi;
+        return {elastic + gamma_N * m_red * xi_dot, elastic};
     }
 
     // Eq. (4): contact duration [s] for a pair of reduced mass m_red [kg].

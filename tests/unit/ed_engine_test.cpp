@@ -350,6 +350,40 @@ TEST(EdEngine, TcElasticMeansEnergyConservingUnlessFrictionKept) {
     }
 }
 
+// Eq. (7) with either rule: a pair collision is elastic when one partner (tc_both = false) or
+// both partners (true) collided at most t_c before. Checked against our own bookkeeping of the
+// records; a particle's first collision is skipped (its earlier history is unknown here).
+TEST(EdEngine, TcRuleEitherOrBothPartners) {
+    for (bool both : {false, true}) {
+        EdConfig cfg;
+        cfg.law = RoughDiskCollision{0.5, 0.0, -1.0, 0.5};
+        auto probe = random_gas<EdEngine>(200, 0.3, 21, cfg);
+        probe.run_collisions(2000);
+        // t_c = the mean time between a particle's collisions, so that both outcomes are common.
+        const double tc = probe.time() / 2000.0 * 100.0;
+        cfg.tc_both = both;
+        cfg.t_c = tc;
+        auto f = random_gas<EdEngine>(200, 0.3, 21, cfg);
+        std::vector<double> last(200, -1.0);
+        int checked = 0, elastic = 0, mixed = 0;
+        f.run_collisions(20000, [&](const CollisionRecord& r) {
+            if (r.j < 0) return;
+            const auto i = std::size_t(r.i), j = std::size_t(r.j);
+            if (last[i] >= 0 && last[j] >= 0) {
+                const bool ti = r.t - last[i] <= tc, tj = r.t - last[j] <= tc;
+                EXPECT_EQ(r.elastic, both ? (ti && tj) : (ti || tj));
+                ++checked;
+                elastic += r.elastic;
+                mixed += ti != tj;
+            }
+            last[i] = last[j] = r.t;
+        });
+        EXPECT_GT(checked, 10000);
+        EXPECT_GT(elastic, 100);
+        EXPECT_GT(mixed, 100); // the two rules differ on these
+    }
+}
+
 TEST(EdEngine, CollisionRecordGeometry) {
     EdConfig cfg;
     cfg.law = RoughDiskCollision{0.9, 0.3, 0.2, 0.5};

@@ -42,8 +42,9 @@ EdEngine rough_pipe() {
     cfg.periodic_y = false;
     cfg.gravity = {0.3, -9.81};
     cfg.law = RoughDiskCollision{0.8, 0.5, 0.2, 0.5};
-    cfg.t_c = 1e-5;
+    cfg.t_c = 1e-3;
     cfg.tc_keep_friction = true;
+    cfg.tc_both = true;
     cfg.cell_size_factor = 1.2;
     cfg.collapse_limit = 5000;
     cfg.collapse_window = 1e-9;
@@ -98,6 +99,7 @@ TEST(EdStateFile, ResumedFromFileIsBitIdentical) {
     EXPECT_EQ(read.config.walls[0].mu, 0.4);
     EXPECT_EQ(read.config.gravity.x, 0.3);
     EXPECT_TRUE(read.config.tc_keep_friction);
+    EXPECT_TRUE(read.config.tc_both);
     EXPECT_EQ(read.config.collapse_limit, 5000u);
     EdEngine resumed(read);
     resumed.set_wall_enabled(0, false);

@@ -101,10 +101,31 @@ TEST(HertzKuwabaraKono, ElasticLimitConservesEnergyAndRestitutionFallsWithSpeed)
 
 TEST(CoulombShear, OpposesSlidingWithMuTimesNormalForce) {
     const CoulombShear s{0.5};
-    EXPECT_DOUBLE_EQ(s.shear_force(2.0, 3.0), -1.0);
-    EXPECT_DOUBLE_EQ(s.shear_force(2.0, -3.0), 1.0);
-    EXPECT_DOUBLE_EQ(s.shear_force(-2.0, 3.0), -1.0);
-    EXPECT_DOUBLE_EQ(s.shear_force(2.0, 0.0), 0.0);
+    EXPECT_DOUBLE_EQ(s.shear_force({2.0, 1.5}, 3.0), -1.0);
+    EXPECT_DOUBLE_EQ(s.shear_force({2.0, 1.5}, -3.0), 1.0);
+    EXPECT_DOUBLE_EQ(s.shear_force({-2.0, 1.5}, 3.0), -1.0);
+    EXPECT_DOUBLE_EQ(s.shear_force({2.0, 1.5}, 0.0), 0.0);
+    EXPECT_DOUBLE_EQ(s.applied_normal({-2.0, 1.5}), -2.0);
+}
+
+// The four readings of Eq. (2) on a pressed contact (F_N = 2 N, elastic part 1.5 N) and on the
+// attractive end of a contact (F_N = -0.4 N, elastic part 0.1 N), sliding with v_S > 0.
+TEST(CoulombShear, ReadingsOfTheNormalForce) {
+    const NormalForce pressed{2.0, 1.5}, pulling{-0.4, 0.1};
+    auto with = [](FrictionNormal r) { return CoulombShear{0.5, r}; };
+    EXPECT_DOUBLE_EQ(with(FrictionNormal::Magnitude).shear_force(pressed, 1.0), -1.0);
+    EXPECT_DOUBLE_EQ(with(FrictionNormal::Magnitude).shear_force(pulling, 1.0), -0.2);
+    EXPECT_DOUBLE_EQ(with(FrictionNormal::Clipped).shear_force(pressed, 1.0), -1.0);
+    EXPECT_DOUBLE_EQ(with(FrictionNormal::Clipped).shear_force(pulling, 1.0), 0.0);
+    EXPECT_DOUBLE_EQ(with(FrictionNormal::Clipped).applied_normal(pulling), 0.0);
+    EXPECT_DOUBLE_EQ(with(FrictionNormal::Clipped).applied_normal(pressed), 2.0);
+    EXPECT_DOUBLE_EQ(with(FrictionNormal::Elastic).shear_force(pressed, 1.0), -0.75);
+    EXPECT_DOUBLE_EQ(with(FrictionNormal::Elastic).shear_force(pulling, 1.0), -0.05);
+    EXPECT_DOUBLE_EQ(with(FrictionNormal::Signed).shear_force(pressed, 1.0), -1.0);
+    EXPECT_DOUBLE_EQ(with(FrictionNormal::Signed).shear_force(pulling, 1.0), 0.2);
+    for (auto r : {FrictionNormal::Magnitude, FrictionNormal::Clipped, FrictionNormal::Elastic, FrictionNormal::Signed})
+        EXPECT_EQ(parse_friction_normal(to_string(r)), r);
+    EXPECT_FALSE(parse_friction_normal("bogus"));
 }
 
 TEST(FewBodyEngine, GrazingFrictionBrakesTangentialMotion) {

@@ -19,6 +19,9 @@ struct EdConfig {
     // TC model, Luding Eq. (7): a collision is elastic when either partner's previous collision
     // happened at most t_c ago [s]; 0 = plain ED.
     double t_c = 0.0;
+    // How Eq. (7) combines the partners of a pair collision, which the paper leaves open:
+    // false (default): elastic when either partner collided within t_c; true: only when both did.
+    bool tc_both = false;
     // What "elastic" means for rough disks under TC. false (default): r = 1 and no tangential
     // impulse, so the collision conserves energy exactly, as the paper's wording ("assumed to be
     // elastic") requires. true: r = 1 but friction (mu, beta0) unchanged, which still dissipates.

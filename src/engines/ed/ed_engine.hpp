@@ -713,7 +713,7 @@ private:
         const double dist = std::sqrt(dx * dx + dy * dy);
         max_overlap_ = std::max(max_overlap_, p_[i].rad + p_[j].rad - dist);
         const Vec2 n{dx / dist, dy / dist};
-        const bool el = tc_elastic(t, i) || tc_elastic(t, j);
+        const bool el = cfg_.tc_both ? (tc_elastic(t, i) && tc_elastic(t, j)) : (tc_elastic(t, i) || tc_elastic(t, j));
         const RoughDiskCollision& law = el ? law_tc_ : law_;
         const Vec2 vi{p_[i].vx, p_[i].vy}, vj{p_[j].vx, p_[j].vy};
         const auto res = law.template collide<kRough>(vi, mw_[i].w, mw_[i].m, p_[i].rad, vj, mw_[j].w, mw_[j].m, p_[j].rad, n);

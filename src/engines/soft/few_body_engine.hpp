@@ -10,8 +10,9 @@
 // which is what makes Eq. (5)'s "1e-4 at dt = t_col/50" attainable. Every contact start and end is
 // logged with its time and normal velocity, so tests can read t_col and e_N off the log.
 //
-// Template parameters: NormalLaw has normal_force(xi, xi_dot, m_red); ShearLaw has
-// shear_force(F_N, v_S). Both are small value structs in src/models/.
+// Template parameters: NormalLaw has normal_force(xi, xi_dot, m_red) -> NormalForce; ShearLaw has
+// applied_normal(NormalForce) and shear_force(NormalForce, v_S). Both are small value structs in
+// src/models/.
 #pragma once
 #include <algorithm>
 #include <cmath>
@@ -21,6 +22,7 @@
 #include "core/vec2.hpp"
 #include "engines/soft/hermite_crossing.hpp"
 #include "engines/soft/soft_grain.hpp"
+#include "models/normal_force.hpp"
 
 namespace granrepro {
 
@@ -157,8 +159,9 @@ private:
     // Force on grain i of the pair, and the geometry it was computed from.
     std::pair<Vec2, Geometry> pair_force(const std::vector<SoftGrain>& g, const Pair& p) const {
         const Geometry geo = geometry(g, p);
-        const double fn = normal_.normal_force(geo.xi, geo.xi_dot, geo.m_red);
-        const double fs = shear_.shear_force(fn, geo.v_s);
+        const NormalForce f = normal_.normal_force(geo.xi, geo.xi_dot, geo.m_red);
+        const double fn = shear_.applied_normal(f);
+        const double fs = shear_.shear_force(f, geo.v_s);
         return {geo.n * fn + perp(geo.n) * fs, geo};
     }
 

@@ -12,13 +12,16 @@
 // are not stored: a grain near a wall tests the two or three wall grains at its height, found
 // from the row's spacing.
 //
-// Template parameters: NormalLaw::normal_force(xi, xi_dot, m_red), ShearLaw::shear_force(F_N, v_S).
+// Template parameters: NormalLaw::normal_force(xi, xi_dot, m_red) -> NormalForce;
+// ShearLaw::applied_normal(NormalForce) and ShearLaw::shear_force(NormalForce, v_S).
 #pragma once
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <stdexcept>
 #include <vector>
+
+#include "models/normal_force.hpp"
 
 namespace granrepro {
 
@@ -245,8 +248,9 @@ private:
                         double& fy) const {
         const double xi_dot = -(rvx * nx + rvy * ny);
         const double vs = -rvx * ny + rvy * nx; // along perp(n) = (-ny, nx)
-        const double fn = normal_.normal_force(xi, xi_dot, m_red);
-        const double fs = shear_.shear_force(fn, vs);
+        const NormalForce f = normal_.normal_force(xi, xi_dot, m_red);
+        const double fn = shear_.applied_normal(f);
+        const double fs = shear_.shear_force(f, vs);
         fx = fn * nx - fs * ny;
         fy = fn * ny + fs * nx;
     }
