@@ -1,15 +1,27 @@
 // bistable-pipe: Schäfer & Wolf (1995) Fig. 6. Grains fall through a vertical 2D pipe between two
 // rows of fixed wall grains; the steady-state mean velocity is recorded against e_N for three
-// k_N, from a slow start and from a fast start. A steady state is detected from the data (the
-// drift of the mean velocity over a trailing window), never assumed; a run that does not reach
-// one by t_max is reported as such. In steady states the braking balance of Eq. (9),
-// g = ṅ Δv_y, is measured, and Δv_y is compared with the impact curve of Fig. 4 evaluated at the
-// pipe's own wall geometry and measured impact velocities.
+// k_N, from a slow start and from a fast start.
+//
+// Run control. A steady state is detected from the data (the drift of the mean velocity over a
+// trailing window), never assumed, and a run stops as soon as it is confirmed. Each run has a time
+// budget in units of its own contact duration t_col(k_N, e_N) (Eq. 4), so every k_N gets the same
+// number of time steps; a run also stops when it falls freely (accelerating at g with no wall
+// impact over a whole window: a plug that no longer touches the walls never brakes again) or
+// passes v_abort. Every run ends with one of three outcomes (steady, free fall, unsettled) and its
+// last speed, and the figure marks the runs that did not settle instead of omitting them.
+//
+// In steady states the braking balance of Eq. (9), g = ṅ Δv_y, is measured, and the paper's
+// construction is repeated: the steady speed predicted by the impact curve Δv_y(v_y^i) of the
+// pipe's own wall at the measured v_x^i, where it equals g/ṅ. Over windows of every run, ṅ is set
+// against σ_vx and ṅ Δv_y against Δv_y (the crude estimates below Eq. 9).
+#include <algorithm>
 #include <cmath>
 #include <gsl/gsl_fit.h>
 #include <numeric>
 #include <string>
+#include <tuple>
 
+#include "analysis/curve_analysis.hpp"
 #include "core/rng_stream.hpp"
 #include "engines/soft/pipe_engine.hpp"
 #include "experiments/impact_shot.hpp"
@@ -26,30 +38,39 @@ namespace {
 
 using Engine = PipeEngine<LinearSpringDashpot, CoulombShear>;
 
+enum Outcome { kSteady = 0, kFreeFall = 1, kUnsettled = 2 };
+
 struct RunResult {
-    bool steady = false;
-    double t_steady = NAN, v_mean = NAN, v_std = NAN, v_final = NAN, sigma_vx = NAN;
-    double ndot = NAN, dvy = NAN, vx_in = NAN, vy_in = NAN, dt = NAN;
+    int outcome = kUnsettled;
+    double t_steady = NAN, v_mean = NAN, v_std = NAN, v_final = NAN, t_final = NAN, accel_final = NAN;
+    double sigma_vx = NAN, ndot = NAN, dvy = NAN, vx_in = NAN, vy_in = NAN, dt = NAN;
     long grains = 0;
-    std::vector<double> t, v, sx;
+    std::vector<double> t, v, sx;        // samples: time [s], mean v_y [m/s], rms v_x [m/s]
+    std::vector<double> w_ndot, w_dvy, w_sx, w_v; // windows (Eq. 9 estimates): ṅ, Δv_y, σ_vx, v
 
     nlohmann::json to_json() const {
-        return {{"steady", steady}, {"t_steady", t_steady}, {"v_mean", v_mean}, {"v_std", v_std},
-                {"v_final", v_final}, {"sigma_vx", sigma_vx}, {"ndot", ndot}, {"dvy", dvy},
-                {"vx_in", vx_in}, {"vy_in", vy_in}, {"dt", dt}, {"grains", grains},
-                {"t", t}, {"v", v}, {"sx", sx}};
+        return {{"outcome", outcome}, {"t_steady", t_steady}, {"v_mean", v_mean}, {"v_std", v_std},
+                {"v_final", v_final}, {"t_final", t_final}, {"accel_final", accel_final},
+                {"sigma_vx", sigma_vx}, {"ndot", ndot}, {"dvy", dvy}, {"vx_in", vx_in}, {"vy_in", vy_in},
+                {"dt", dt}, {"grains", grains}, {"t", t}, {"v", v}, {"sx", sx}, {"w_ndot", w_ndot},
+                {"w_dvy", w_dvy}, {"w_sx", w_sx}, {"w_v", w_v}};
     }
     static RunResult from_json(const nlohmann::json& j) {
         RunResult r;
         auto num = [&](const char* k) { return j.at(k).is_null() ? NAN : j.at(k).get<double>(); };
-        r.steady = j.at("steady");
+        auto vec = [&](const char* k) {
+            std::vector<double> out;
+            for (const auto& x : j.at(k)) out.push_back(x.is_null() ? NAN : x.get<double>());
+            return out;
+        };
+        r.outcome = j.at("outcome");
         r.t_steady = num("t_steady"); r.v_mean = num("v_mean"); r.v_std = num("v_std");
-        r.v_final = num("v_final"); r.sigma_vx = num("sigma_vx"); r.ndot = num("ndot");
-        r.dvy = num("dvy"); r.vx_in = num("vx_in"); r.vy_in = num("vy_in"); r.dt = num("dt");
+        r.v_final = num("v_final"); r.t_final = num("t_final"); r.accel_final = num("accel_final");
+        r.sigma_vx = num("sigma_vx"); r.ndot = num("ndot"); r.dvy = num("dvy");
+        r.vx_in = num("vx_in"); r.vy_in = num("vy_in"); r.dt = num("dt");
         r.grains = j.at("grains");
-        r.t = j.at("t").get<std::vector<double>>();
-        r.v = j.at("v").get<std::vector<double>>();
-        r.sx = j.at("sx").get<std::vector<double>>();
+        r.t = vec("t"); r.v = vec("v"); r.sx = vec("sx");
+        r.w_ndot = vec("w_ndot"); r.w_dvy = vec("w_dvy"); r.w_sx = vec("w_sx"); r.w_v = vec("w_v");
         return r;
     }
 };
@@ -60,19 +81,39 @@ double slope(const std::vector<double>& t, const std::vector<double>& v, std::si
     return c1;
 }
 
-// Runs one start to steady state (or t_max). Steady: over the trailing window the fitted slope of
-// the mean velocity is below drift_tol [m/s^2], i.e. braking balances gravity to that accuracy,
-// and stays below it over the following averaging window t_average.
-RunResult run_pipe(const PipeSpec& s) {
+// Wall impacts per sample interval, so that any span of samples can be summed.
+struct WallSamples {
+    std::vector<long> impacts, completed;
+    std::vector<double> sum_dvy, sum_vx, sum_vy;
+    void take(Engine& eng) {
+        const WallImpactStats& w = eng.wall_stats();
+        impacts.push_back(w.impacts);
+        completed.push_back(w.completed);
+        sum_dvy.push_back(w.sum_dvy);
+        sum_vx.push_back(w.sum_vx_in);
+        sum_vy.push_back(w.sum_vy_in);
+        eng.reset_wall_stats();
+    }
+    long impacts_in(std::size_t from, std::size_t to) const {
+        return std::accumulate(impacts.begin() + long(from), impacts.begin() + long(to), 0L);
+    }
+};
+
+// Runs one start until it is steady, falls freely, passes v_abort or exhausts its budget. Steady:
+// over the trailing window the fitted slope of the mean velocity is below drift_tol [m/s^2] (braking
+// balances gravity to that accuracy) and stays below it over the following averaging window.
+RunResult run_pipe(const PipeSpec& s, double t_budget, double eq9_window) {
     Engine eng = build_pipe(s);
     RunResult r;
     r.dt = eng.dt();
     r.grains = long(eng.size());
     const std::size_t n = eng.size();
-    const long per_window = std::lround(s.window / s.sample_dt);
+    const std::size_t per_window = std::size_t(std::max(3.0, std::round(s.window / s.sample_dt)));
+    WallSamples walls;
     double steady_since = NAN;
-    double next = 0;
-    while (eng.time() < s.t_max) {
+    double next = s.sample_dt;
+    bool free_fall = false;
+    while (eng.time() < t_budget) {
         eng.step();
         if (eng.time() + 0.5 * eng.dt() < next) continue;
         next += s.sample_dt;
@@ -84,50 +125,81 @@ RunResult run_pipe(const PipeSpec& s) {
         r.t.push_back(eng.time());
         r.v.push_back(v / double(n));
         r.sx.push_back(std::sqrt(sx / double(n)));
-        if (std::abs(r.v.back()) > s.v_abort) break; // far beyond the paper's range: free fall
-        if (std::isnan(steady_since) && long(r.t.size()) > per_window) {
-            if (std::abs(slope(r.t, r.v, r.t.size() - std::size_t(per_window))) < s.drift_tol) {
-                steady_since = eng.time();
-                eng.reset_wall_stats(); // Eq. (9) is measured over the averaging window only
-            }
+        walls.take(eng);
+        if (std::abs(r.v.back()) > s.v_abort) break;
+        const std::size_t m = r.t.size();
+        if (m <= per_window) continue;
+        const double drift = slope(r.t, r.v, m - per_window);
+        // A plug in free fall: accelerating at g and not one wall impact over the window.
+        if (std::abs(drift + s.geo.gravity) < s.drift_tol && walls.impacts_in(m - per_window, m) == 0) {
+            free_fall = true;
+            break;
         }
-        if (!std::isnan(steady_since) && eng.time() >= steady_since + s.t_average) {
+        if (std::isnan(steady_since)) {
+            if (std::abs(drift) < s.drift_tol) steady_since = eng.time();
+        } else if (eng.time() >= steady_since + s.t_average) {
             // Confirm over the averaging window itself: a plateau that happened to fill the
             // detection window but keeps drifting afterwards is not a steady state; search on.
             std::size_t from = 0;
-            while (from < r.t.size() && r.t[from] <= steady_since) ++from;
-            if (r.t.size() - from >= 3 && std::abs(slope(r.t, r.v, from)) < s.drift_tol) break;
+            while (from < m && r.t[from] <= steady_since) ++from;
+            if (m - from >= 3 && std::abs(slope(r.t, r.v, from)) < s.drift_tol) break;
             steady_since = NAN;
         }
     }
+    const std::size_t m = r.t.size();
     r.v_final = r.v.back();
-    if (!std::isnan(steady_since) && eng.time() >= steady_since + s.t_average - 1e-12) {
-        r.steady = true;
+    r.t_final = r.t.back();
+    r.accel_final = m > per_window ? slope(r.t, r.v, m - per_window) : NAN;
+    const bool steady = !std::isnan(steady_since) && eng.time() >= steady_since + s.t_average - 1e-12;
+    r.outcome = steady ? kSteady : (free_fall || r.accel_final < -(s.geo.gravity - s.drift_tol)) ? kFreeFall : kUnsettled;
+    if (steady) {
         r.t_steady = steady_since;
-        double sum = 0, sum2 = 0, sxs = 0;
-        long k = 0;
-        for (std::size_t i = 0; i < r.t.size(); ++i)
+        double sum = 0, sum2 = 0, sxs = 0, ws = 0, vxs = 0, vys = 0;
+        long k = 0, impacts = 0, completed = 0;
+        for (std::size_t i = 0; i < m; ++i)
             if (r.t[i] > steady_since) {
                 sum += r.v[i];
                 sum2 += r.v[i] * r.v[i];
                 sxs += r.sx[i];
+                impacts += walls.impacts[i];
+                completed += walls.completed[i];
+                ws += walls.sum_dvy[i];
+                vxs += walls.sum_vx[i];
+                vys += walls.sum_vy[i];
                 ++k;
             }
         r.v_mean = sum / double(k);
         r.v_std = std::sqrt(std::max(0.0, sum2 / double(k) - r.v_mean * r.v_mean));
         r.sigma_vx = sxs / double(k);
-        const WallImpactStats& w = eng.wall_stats();
-        r.ndot = double(w.impacts) / (w.time * double(n));
-        if (w.completed > 0) {
-            r.dvy = w.sum_dvy / double(w.completed);
-            r.vx_in = w.sum_vx_in / double(w.completed);
-            r.vy_in = w.sum_vy_in / double(w.completed);
+        r.ndot = double(impacts) / (double(k) * s.sample_dt * double(n));
+        if (completed > 0) {
+            r.dvy = ws / double(completed);
+            r.vx_in = vxs / double(completed);
+            r.vy_in = vys / double(completed);
         }
+    }
+    // Windows of eq9_window for the estimates below Eq. (9), skipping the first (the start).
+    const std::size_t per = std::size_t(std::max(1.0, std::round(eq9_window / s.sample_dt)));
+    for (std::size_t a = per; a + per <= m; a += per) {
+        long imp = 0, comp = 0;
+        double dv = 0, sx = 0, v = 0;
+        for (std::size_t i = a; i < a + per; ++i) {
+            imp += walls.impacts[i];
+            comp += walls.completed[i];
+            dv += walls.sum_dvy[i];
+            sx += r.sx[i];
+            v += r.v[i];
+        }
+        if (comp < 20) continue; // too few impacts for a mean Δv_y
+        r.w_ndot.push_back(double(imp) / (double(per) * s.sample_dt * double(n)));
+        r.w_dvy.push_back(dv / double(comp));
+        r.w_sx.push_back(sx / double(per));
+        r.w_v.push_back(-v / double(per));
     }
     return r;
 }
 
-PipeSpec base_spec(const ParameterSet& p, const RunContext* ctx) {
+PipeSpec base_spec(const ParameterSet& p, std::uint64_t seed) {
     PipeSpec s{};
     s.geo.width = p.real("width");
     s.geo.wall_radius = 0.5 * p.real("d_wall");
@@ -139,23 +211,36 @@ PipeSpec base_spec(const ParameterSet& p, const RunContext* ctx) {
     s.m_mean = p.real("m_mean");
     s.phi = p.real("phi");
     s.mu = p.real("mu");
+    s.friction_normal = *parse_friction_normal(p.text("friction_normal"));
     s.steps_per_contact = p.real("steps_per_contact");
     s.skin = p.real("skin");
-    s.t_max = p.real("t_max");
     s.window = p.real("window");
     s.drift_tol = p.real("drift_tol");
     s.t_average = p.real("t_average");
     s.sample_dt = p.real("sample_dt");
     s.v_abort = p.real("v_abort");
-    s.seed = ctx ? ctx->seed : 1;
+    s.agitation = p.real("agitation");
+    s.seed = seed;
     return s;
+}
+
+// The run's time budget: budget_tcol free-wall contact durations (Eq. 4) at its own k_N, e_N.
+double time_budget(const ParameterSet& p, double k, double e) {
+    const double m = p.real("m_mean");
+    return p.real("budget_tcol") * pipe_law(k, e, m).collision_time(m);
 }
 
 void validate(const ParameterSet& p) {
     for (double e : p.reals("eN_list"))
-        if (!(e > 0 && e <= 1)) p.reject("eN_list", "each e_N must be in (0, 1]");
-    if (p.real("window") + p.real("t_average") > p.real("t_max"))
-        p.reject("t_max", "must exceed window + t_average so that a steady state can be detected and averaged");
+        if (!(e > 0 && e < 1)) p.reject("eN_list", "each e_N must be in (0, 1): e_N = 1 has no dashpot and Eq. (4) no solution");
+    for (double k : p.reals("kN_list"))
+        for (double e : p.reals("eN_list"))
+            if (time_budget(p, k, e) < p.real("window") + p.real("t_average"))
+                p.reject("budget_tcol", "the budget of k_N = " + std::to_string(k) + " N/m, e_N = " + std::to_string(e) +
+                                            " is shorter than window + t_average: no steady state could be detected");
+    if (p.real("sample_dt") > p.real("window") / 3)
+        p.reject("sample_dt", "must be at most window / 3 so that a drift can be fitted");
+    if (p.real("eq9_window") < p.real("sample_dt")) p.reject("eq9_window", "must be at least sample_dt");
     const double range = p.real("d_mean") * (1 + p.real("polydispersity")) + p.real("skin");
     if (p.real("length") < 4 * range) p.reject("length", "must be at least 4 interaction ranges");
     if (p.real("length_check") > 0 && p.real("length_check") < 4 * range)
@@ -171,141 +256,271 @@ std::string tag(double k, double e, const char* start) {
     return buf;
 }
 
-Result run(const RunContext& ctx) {
-    const ParameterSet& p = ctx.params;
+// Mean Δv_y and wall grains touched of impacts on the pipe's wall row at (v_x^i, v_y^i), over 10
+// start positions (Figs. 4, 5).
+struct ImpactMean {
+    double dvy = 0, contacts = 0;
+};
+ImpactMean impact_mean(const PipeSpec& base, double k, double e, double vx, double vy) {
+    ImpactSetup is;
+    is.d_free = base.d_mean;
+    is.m_free = base.m_mean;
+    is.d_wall = 2 * base.geo.wall_radius;
+    is.wall_spacing = base.geo.wall_spacing;
+    is.x0 = 0.5 * (is.d_free + is.d_wall);
+    is.vx_toward = vx;
+    is.vy = vy;
+    const LinearSpringDashpot law = pipe_law(k, e, base.m_mean);
+    is.dt = law.collision_time(base.m_mean) / base.steps_per_contact;
+    ImpactMean mean;
+    const int npos = 10;
+    for (int j = 0; j < npos; ++j) {
+        is.y0 = is.wall_spacing * j / npos;
+        const ImpactOutcome o = shoot(law, CoulombShear{base.mu, base.friction_normal}, is);
+        mean.dvy += o.dvy / npos;
+        mean.contacts += double(o.wall_grains) / npos;
+    }
+    return mean;
+}
+
+// The paper's construction (text below Eq. 9): on the impact curve Δv_y(v) at the measured v_x^i,
+// the speed where Δv_y = g/ṅ with positive slope (a stable intersection) nearest to the measured
+// speed. Returns NaN if the curve has no such crossing below 3 v_meas.
+struct Construction {
+    double v = NAN;        // predicted steady speed [m/s]
+    double slope = NAN;    // d Δv_y / d v at the measured speed [s] (> 0: stable, Eq. 9 argument)
+    double contacts = NAN; // wall grains touched per impact at the measured impact velocities (Fig. 5)
+};
+Construction construct(const PipeSpec& base, double k, double e, const RunResult& rr) {
+    Construction c;
+    if (!(rr.outcome == kSteady && rr.ndot > 0 && rr.vx_in > 0)) return c;
+    const double v_meas = -rr.v_mean, need = base.geo.gravity / rr.ndot;
+    const auto grid = log_space(0.1 * v_meas, 3 * v_meas, 41);
+    std::vector<double> dv(grid.size());
+    for (std::size_t i = 0; i < grid.size(); ++i) dv[i] = impact_mean(base, k, e, rr.vx_in, grid[i]).dvy;
+    c.contacts = impact_mean(base, k, e, rr.vx_in, rr.vy_in).contacts;
+    double best = INFINITY;
+    for (std::size_t i = 1; i < grid.size(); ++i) {
+        const double a = dv[i - 1] - need, b = dv[i] - need;
+        if (!(a < 0 && b >= 0)) continue; // upward crossing = positive slope
+        const double x = std::exp(std::log(grid[i - 1]) + a / (a - b) * (std::log(grid[i]) - std::log(grid[i - 1])));
+        if (std::abs(std::log(x / v_meas)) < std::abs(std::log(best / v_meas))) best = x;
+    }
+    if (std::isfinite(best)) c.v = best;
+    std::size_t at = 0; // grid[at] <= v_meas < grid[at + 1]
+    while (at + 2 < grid.size() && grid[at + 1] <= v_meas) ++at;
+    c.slope = (dv[at + 1] - dv[at]) / (grid[at + 1] - grid[at]);
+    return c;
+}
+
+struct Task {
+    double k, e;
+    bool fast;
+    double length;
+};
+
+std::vector<Task> make_tasks(const ParameterSet& p) {
     const auto& ks = p.reals("kN_list");
     const auto& es = p.reals("eN_list");
-    struct Task {
-        double k, e;
-        bool fast;
-        double length;
-    };
     std::vector<Task> tasks;
     for (double k : ks)
         for (double e : es)
             for (bool fast : {false, true}) tasks.push_back({k, e, fast, p.real("length")});
-    // The length check: the first k_N at its largest e_N, slow start, at a second pipe length.
-    const bool length_check = p.real("length_check") > 0;
-    if (length_check) tasks.push_back({ks.size() > 1 ? ks[1] : ks[0], es.back(), false, p.real("length_check")});
+    // The length check: the second k_N at its largest e_N, slow start, at a second pipe length.
+    if (p.real("length_check") > 0) tasks.push_back({ks.size() > 1 ? ks[1] : ks[0], es.back(), false, p.real("length_check")});
+    return tasks;
+}
 
+std::vector<RunResult> run_sweep(const RunContext& ctx, const std::vector<Task>& tasks, long& resumed) {
+    const ParameterSet& p = ctx.params;
     std::vector<RunResult> results(tasks.size());
+    // Every budget is the same number of time steps, but runs that settle stop early: start the
+    // likely long ones first (fast starts, then nearly elastic grains, then longer pipes), so that
+    // the last point to start is a short one. Each point's random stream is its grid index.
+    std::vector<long> order(tasks.size());
+    std::iota(order.begin(), order.end(), 0L);
+    auto key = [&](long i) {
+        const Task& t = tasks[std::size_t(i)];
+        return std::make_tuple(t.fast, t.length, t.e, t.k);
+    };
+    std::stable_sort(order.begin(), order.end(), [&](long a, long b) { return key(a) > key(b); });
     SweepCheckpoint checkpoint(ctx);
     Progress progress("bistable-pipe", long(tasks.size()), ctx.quiet);
-    parallel_sweep(long(tasks.size()), ctx.threads, &progress, [&](long i) {
+    parallel_sweep(long(tasks.size()), ctx.threads, &progress, [&](long slot) {
+        const long i = order[std::size_t(slot)];
         if (auto saved = checkpoint.load(i)) {
             results[std::size_t(i)] = RunResult::from_json(*saved);
             return;
         }
         const Task& t = tasks[std::size_t(i)];
-        PipeSpec s = base_spec(p, &ctx);
+        PipeSpec s = base_spec(p, ctx.seed);
         s.k_N = t.k;
         s.e_N = t.e;
         s.geo.length = std::round(t.length / s.geo.wall_spacing) * s.geo.wall_spacing;
         s.v0 = t.fast ? p.real("fast_v0") : p.real("slow_v0");
-        s.agitation = p.real("agitation");
         s.stream = std::uint64_t(i);
-        results[std::size_t(i)] = run_pipe(s);
+        results[std::size_t(i)] = run_pipe(s, time_budget(p, t.k, t.e), p.real("eq9_window"));
         checkpoint.save(i, results[std::size_t(i)].to_json());
     });
+    resumed = checkpoint.resumed();
+    return results;
+}
+
+// One row of Fig. 6 per k_N: both starts against e_N, with outcomes, Eq. (9) and the construction.
+void report_k(Result& r, const ParameterSet& p, const PipeSpec& base, double k, std::size_t ki,
+              const std::vector<RunResult>& results, double& worst_balance, int& steady_count, double& min_slope) {
+    const auto& es = p.reals("eN_list");
+    char kt[32];
+    std::snprintf(kt, sizeof kt, "k%g", k);
+    Table& t = r.table(std::string("steady_") + kt, "steady-state mean velocity against e_N (NaN: no steady state)");
+    std::vector<double> cols[2][12];
+    double e_lowest_slow = NAN;
+    int fast_steady = 0;
+    for (std::size_t ei = 0; ei < es.size(); ++ei) {
+        for (int f = 0; f < 2; ++f) {
+            const RunResult& rr = results[(ki * es.size() + ei) * 2 + std::size_t(f)];
+            const bool ok = rr.outcome == kSteady;
+            const double bal = ok ? rr.ndot * rr.dvy / base.geo.gravity : NAN;
+            const Construction c = construct(base, k, es[ei], rr);
+            auto& col = cols[f];
+            col[0].push_back(ok ? -rr.v_mean : NAN);
+            col[1].push_back(-rr.v_final);
+            col[2].push_back(rr.outcome);
+            col[3].push_back(ok ? rr.t_steady : rr.t_final);
+            col[4].push_back(bal);
+            col[5].push_back(ok ? rr.sigma_vx : NAN);
+            col[6].push_back(ok ? rr.ndot : NAN);
+            col[7].push_back(ok ? rr.dvy : NAN);
+            col[8].push_back(c.v);
+            col[9].push_back(c.slope);
+            col[10].push_back(c.contacts);
+            col[11].push_back(ok ? rr.vy_in : NAN);
+            if (ok) {
+                ++steady_count;
+                worst_balance = std::max(worst_balance, std::abs(bal - 1));
+                if (std::isfinite(c.slope)) min_slope = std::min(min_slope, c.slope);
+            }
+        }
+        const RunResult& slow = results[(ki * es.size() + ei) * 2];
+        if (slow.outcome == kSteady) e_lowest_slow = std::isnan(e_lowest_slow) ? es[ei] : std::min(e_lowest_slow, es[ei]);
+        fast_steady += results[(ki * es.size() + ei) * 2 + 1].outcome == kSteady;
+    }
+    t.add("e_N", "1").values = es;
+    const char* names[12] = {"v", "v_last", "outcome", "t_end", "eq9_balance", "sigma_vx", "ndot", "dvy",
+                             "v_construction", "impact_slope", "impact_contacts", "vy_impact"};
+    const char* units[12] = {"m/s", "m/s", "1", "s", "1", "m/s", "1/s", "m/s", "m/s", "s", "1", "m/s"};
+    for (int f = 0; f < 2; ++f)
+        for (int c = 0; c < 12; ++c)
+            t.add(std::string(names[c]) + (f ? "_fast" : "_slow"), units[c]).values = cols[f][c];
+    r.scalar(std::string("slow_branch_lowest_eN_") + kt, e_lowest_slow, "1",
+             "smallest e_N whose slow start reached a steady state");
+    r.scalar(std::string("fast_branch_fraction_") + kt, double(fast_steady) / double(es.size()), "1",
+             "fraction of e_N values whose fast start reached a steady state");
+    r.scalar(std::string("v_slow_top_") + kt, cols[0][0].back(), "m/s", "steady speed of the slow start at the largest e_N");
+    r.scalar(std::string("v_fast_top_") + kt, cols[1][0].back(), "m/s", "steady speed of the fast start at the largest e_N");
+    // Bistability: e_N > 0.85 with a slow state in the normal regime and a fast state above it.
+    int bistable = 0;
+    double sx_ratio = NAN;
+    for (std::size_t ei = 0; ei < es.size(); ++ei) {
+        if (!(es[ei] > 0.85) || std::isnan(cols[0][0][ei]) || std::isnan(cols[1][0][ei])) continue;
+        if (cols[1][0][ei] < 2 * cols[0][0][ei]) continue; // the same state reached twice
+        ++bistable;
+        sx_ratio = cols[1][5][ei] / cols[0][5][ei];
+    }
+    // Which regime each branch is in: states faster than v_crit(k_N) (Fig. 3's maximum, scaled
+    // with sqrt(k_N) by Eq. 8) are counted as the fast branch whichever start reached them. Fig. 5
+    // says the fast branch is the emergency brake (>= 2 wall grains per impact), the slow one the
+    // normal regime. And the paper's construction against the measured speed, per branch.
+    const double v_crit = p.real("v_crit_2000") * std::sqrt(k / 2000.0);
+    for (int b = 0; b < 2; ++b) {
+        double contacts = 0, ratio = 0;
+        int nc = 0, nr = 0;
+        for (int f = 0; f < 2; ++f)
+            for (std::size_t ei = 0; ei < es.size(); ++ei) {
+                const double v = cols[f][0][ei];
+                if (std::isnan(v) || (v > v_crit) != (b == 1)) continue;
+                if (std::isfinite(cols[f][10][ei])) { contacts += cols[f][10][ei]; ++nc; }
+                if (std::isfinite(cols[f][8][ei])) { ratio += std::log(cols[f][8][ei] / v); ++nr; }
+            }
+        const std::string name = b ? "fast" : "slow";
+        r.scalar(name + "_branch_states_" + kt, nc, "1", "steady states on the " + name + " branch (either start)");
+        r.scalar(name + "_branch_contacts_" + kt, nc ? contacts / nc : NAN, "1",
+                 "mean wall grains touched per impact at the measured impact velocities, " + name + " branch");
+        r.scalar(name + "_branch_construction_ratio_" + kt, nr ? std::exp(ratio / nr) : NAN, "1",
+                 "geometric mean of the construction's speed over the measured one, " + name + " branch");
+    }
+    r.scalar(std::string("bistable_eN_count_") + kt, bistable, "1",
+             "e_N > 0.85 at which a slow and a fast (> 2x faster) steady state coexist");
+    r.scalar(std::string("bistable_sigma_vx_ratio_") + kt, sx_ratio, "1",
+             "σ_vx of the fast over the slow state at the largest bistable e_N");
+}
+
+Result run(const RunContext& ctx) {
+    const ParameterSet& p = ctx.params;
+    const auto& ks = p.reals("kN_list");
+    const auto& es = p.reals("eN_list");
+    const std::vector<Task> tasks = make_tasks(p);
+    long resumed = 0;
+    const std::vector<RunResult> results = run_sweep(ctx, tasks, resumed);
 
     Result r;
-    r.scalar("resumed_points", double(checkpoint.resumed()), "1", "sweep points loaded from a checkpoint");
+    r.scalar("resumed_points", double(resumed), "1", "sweep points loaded from a checkpoint");
     const double m = p.real("m_mean");
     // The paper's t_col at k_N = 200000 N/m refers to e_N = 0.70 (gamma scaled with sqrt(k_N)).
     r.scalar("t_col_k200000_e0.70", pipe_law(200000.0, 0.70, m).collision_time(m), "s",
              "free-wall contact duration at k_N = 2e5 N/m, e_N = 0.70 (Eq. 4)");
 
-    const PipeSpec base = base_spec(p, &ctx);
-    double worst_balance = 0;
+    const PipeSpec base = base_spec(p, ctx.seed);
+    double worst_balance = 0, min_slope = INFINITY;
     int steady_count = 0;
-    for (std::size_t ki = 0; ki < ks.size(); ++ki) {
-        char kt[32];
-        std::snprintf(kt, sizeof kt, "k%g", ks[ki]);
-        Table& t = r.table(std::string("steady_") + kt, "steady-state mean velocity against e_N (NaN: no steady state)");
-        std::vector<double> e_col, slow_v, fast_v, slow_final, fast_final, slow_t, fast_t, slow_bal, fast_bal,
-            slow_link, fast_link;
-        double e_lowest_slow = NAN;
-        int fast_steady = 0;
-        for (std::size_t ei = 0; ei < es.size(); ++ei) {
-            const RunResult& slow = results[(ki * es.size() + ei) * 2];
-            const RunResult& fast = results[(ki * es.size() + ei) * 2 + 1];
-            e_col.push_back(es[ei]);
-            slow_v.push_back(slow.steady ? -slow.v_mean : NAN);
-            fast_v.push_back(fast.steady ? -fast.v_mean : NAN);
-            slow_final.push_back(-slow.v_final);
-            fast_final.push_back(-fast.v_final);
-            slow_t.push_back(slow.t_steady);
-            fast_t.push_back(fast.t_steady);
-            for (const RunResult* rr : {&slow, &fast}) {
-                const double bal = rr->steady ? rr->ndot * rr->dvy / base.geo.gravity : NAN;
-                // Δv_y of an impact on the same wall row at the measured impact velocities (Fig. 4).
-                double link = NAN;
-                if (rr->steady && rr->vy_in > 0 && rr->vx_in > 0) {
-                    ImpactSetup is;
-                    is.d_free = base.d_mean;
-                    is.m_free = base.m_mean;
-                    is.d_wall = 2 * base.geo.wall_radius;
-                    is.wall_spacing = base.geo.wall_spacing;
-                    is.x0 = 0.5 * (is.d_free + is.d_wall);
-                    is.vx_toward = rr->vx_in;
-                    is.vy = rr->vy_in;
-                    const LinearSpringDashpot law = pipe_law(ks[ki], es[ei], m);
-                    is.dt = law.collision_time(m) / base.steps_per_contact;
-                    double sum = 0;
-                    const int npos = 10;
-                    for (int k = 0; k < npos; ++k) {
-                        is.y0 = is.wall_spacing * k / npos;
-                        sum += shoot(law, CoulombShear{base.mu}, is).dvy;
-                    }
-                    link = (sum / npos) / rr->dvy;
-                }
-                (rr == &slow ? slow_bal : fast_bal).push_back(bal);
-                (rr == &slow ? slow_link : fast_link).push_back(link);
-                if (rr->steady) {
-                    ++steady_count;
-                    worst_balance = std::max(worst_balance, std::abs(bal - 1));
-                }
-            }
-            if (slow.steady) e_lowest_slow = std::isnan(e_lowest_slow) ? es[ei] : std::min(e_lowest_slow, es[ei]);
-            fast_steady += fast.steady;
-        }
-        t.add("e_N", "1").values = e_col;
-        t.add("v_slow", "m/s").values = slow_v;
-        t.add("v_fast", "m/s").values = fast_v;
-        t.add("v_slow_final", "m/s").values = slow_final;
-        t.add("v_fast_final", "m/s").values = fast_final;
-        t.add("t_steady_slow", "s").values = slow_t;
-        t.add("t_steady_fast", "s").values = fast_t;
-        t.add("eq9_balance_slow", "1").values = slow_bal;
-        t.add("eq9_balance_fast", "1").values = fast_bal;
-        t.add("impact_link_slow", "1").values = slow_link;
-        t.add("impact_link_fast", "1").values = fast_link;
-        r.scalar(std::string("slow_branch_lowest_eN_") + kt, e_lowest_slow, "1",
-                 "smallest e_N whose slow start reached a steady state");
-        r.scalar(std::string("fast_branch_fraction_") + kt, double(fast_steady) / double(es.size()), "1",
-                 "fraction of e_N values whose fast start reached a steady state");
-        const RunResult& top_slow = results[(ki * es.size() + es.size() - 1) * 2];
-        const RunResult& top_fast = results[(ki * es.size() + es.size() - 1) * 2 + 1];
-        r.scalar(std::string("v_slow_top_") + kt, top_slow.steady ? -top_slow.v_mean : NAN, "m/s",
-                 "steady speed of the slow start at the largest e_N");
-        r.scalar(std::string("v_fast_top_") + kt, top_fast.steady ? -top_fast.v_mean : NAN, "m/s",
-                 "steady speed of the fast start at the largest e_N");
-        r.scalar(std::string("impact_link_top_") + kt, slow_link.back(), "1",
-                 "Fig. 4-type impact Δv_y at the measured impact velocities over the pipe's Δv_y (slow start, largest e_N)");
-    }
+    for (std::size_t ki = 0; ki < ks.size(); ++ki)
+        report_k(r, p, base, ks[ki], ki, results, worst_balance, steady_count, min_slope);
     r.scalar("steady_runs", steady_count, "1", "runs that reached a steady state");
     r.scalar("eq9_worst_deviation", steady_count ? worst_balance : NAN, "1",
              "largest |ṅ Δv_y / g - 1| over steady runs (Eq. 9)");
-    if (length_check) {
+    r.scalar("impact_slope_min", std::isfinite(min_slope) ? min_slope : NAN, "s",
+             "smallest slope dΔv_y/dv of the impact curve at a steady state's speed (Eq. 9 argument: > 0)");
+    if (p.real("length_check") > 0) {
         const RunResult& a = results[((ks.size() > 1 ? 1 : 0) * es.size() + es.size() - 1) * 2];
         const RunResult& b = results.back();
-        r.scalar("length_check_ratio", (a.steady && b.steady) ? b.v_mean / a.v_mean : NAN, "1",
+        r.scalar("length_check_ratio", (a.outcome == kSteady && b.outcome == kSteady) ? b.v_mean / a.v_mean : NAN, "1",
                  "steady speed at length_check over that at length (same k_N, e_N, slow start)");
     }
+    // The crude estimates below Eq. (9), over windows of every run: ṅ ∝ σ_vx, and ṅ Δv_y grows
+    // about quadratically with Δv_y.
+    Table& tw = r.table("eq9_windows", "ṅ, Δv_y, σ_vx and speed over windows of eq9_window, every run");
+    std::vector<double> wk, wn, wd, ws, wv;
+    for (std::size_t i = 0; i < tasks.size(); ++i)
+        for (std::size_t j = 0; j < results[i].w_ndot.size(); ++j) {
+            wk.push_back(tasks[i].k);
+            wn.push_back(results[i].w_ndot[j]);
+            wd.push_back(results[i].w_dvy[j]);
+            ws.push_back(results[i].w_sx[j]);
+            wv.push_back(results[i].w_v[j]);
+        }
+    tw.add("k_N", "N/m").values = wk;
+    tw.add("ndot", "1/s").values = wn;
+    tw.add("dvy", "m/s").values = wd;
+    tw.add("sigma_vx", "m/s").values = ws;
+    tw.add("v", "m/s").values = wv;
+    std::vector<double> lx, ly, ld, lnd;
+    for (std::size_t j = 0; j < wn.size(); ++j)
+        if (wn[j] > 0 && ws[j] > 0 && wd[j] > 0) {
+            lx.push_back(ws[j]);
+            ly.push_back(wn[j]);
+            ld.push_back(wd[j]);
+            lnd.push_back(wn[j] * wd[j]);
+        }
+    const auto a = lx.size() >= 10 ? fit_power_law(lx, ly, 0, INFINITY) : PowerLawFit{NAN, NAN, 0};
+    const auto b = ld.size() >= 10 ? fit_power_law(ld, lnd, 0, INFINITY) : PowerLawFit{NAN, NAN, 0};
+    r.scalar("ndot_vs_sigma_vx_exponent", a.exponent, "1", "exponent of ṅ ∝ σ_vx^a over all windows");
+    r.scalar("ndot_dvy_vs_dvy_exponent", b.exponent, "1", "exponent of ṅ Δv_y ∝ Δv_y^b over all windows");
+    r.scalar("eq9_windows", double(lx.size()), "1", "windows in those fits");
+
     for (std::size_t i = 0; i < tasks.size(); ++i) {
         const Task& tk = tasks[i];
         std::string name = "series_" + tag(tk.k, tk.e, tk.fast ? "fast" : "slow");
-        if (length_check && i + 1 == tasks.size()) name += "_length_check";
+        if (p.real("length_check") > 0 && i + 1 == tasks.size()) name += "_length_check";
         Table& ts = r.table(name, "mean velocity and rms v_x against time");
         ts.add("t", "s").values = results[i].t;
         std::vector<double> speed(results[i].v.size());

@@ -2,6 +2,7 @@
 // 0.82 mm from the centre of a single wall grain, and grazes it; Δv_y and Δv_x against v_y^i.
 // Besides the figure's curve it runs the paper's three robustness statements: the same curve with
 // dt/100, the √β collapse of k' = β k_N, and the Hertz-Kuwabara-Kono normal force.
+#include <array>
 #include <cmath>
 #include <string>
 
@@ -15,6 +16,9 @@
 namespace granrepro::experiments {
 
 namespace {
+
+constexpr std::array kReadings{FrictionNormal::Magnitude, FrictionNormal::Clipped, FrictionNormal::Elastic,
+                               FrictionNormal::Signed};
 
 void validate(const ParameterSet& p) {
     validate_free_wall_law(p);
@@ -41,20 +45,36 @@ ImpactSetup geometry(const ParameterSet& p, double vy, double dt) {
 }
 
 struct Curve {
-    std::vector<double> dvy, dvx;
+    std::vector<double> dvy, dvx, dvy_shear;
     std::vector<int> complete;
 };
 
-// Head-on free-wall collision at the run's time step: the measured t_col and e_N of Eq. (4).
-std::pair<double, double> measure_head_on(const LinearSpringDashpot& law, const ParameterSet& p, double dt) {
-    FewBodyEngine<LinearSpringDashpot, CoulombShear> eng(law, CoulombShear{p.real("mu")}, dt);
-    const double R = 0.5 * p.real("d_free"), r = 0.5 * p.real("d_wall");
-    eng.add_free({{R + r + 1e-6, 0.0}, {-1.0, 0.0}, R, p.real("m_free")});
-    eng.add_fixed({{0.0, 0.0}, r});
-    for (long s = 0; s < 10'000'000 && eng.events().size() < 2; ++s) eng.step();
+// Head-on collision at the run's time step, of the free grain with the wall grain or with a
+// free twin: the measured t_col and e_N of Eq. (4) and the largest overlap (text below Eq. 4).
+struct HeadOn {
+    double t_col = NAN, e_N = NAN, xi_max = NAN;
+};
+HeadOn measure_head_on(const LinearSpringDashpot& law, const ParameterSet& p, double dt, bool wall = true,
+                       double v0 = 1.0) {
+    FewBodyEngine<LinearSpringDashpot, CoulombShear> eng(law, coulomb_from(p), dt);
+    const double R = 0.5 * p.real("d_free"), r = wall ? 0.5 * p.real("d_wall") : R;
+    eng.add_free({{R + r + 1e-6, 0.0}, {-v0, 0.0}, R, p.real("m_free")});
+    if (wall) eng.add_fixed({{0.0, 0.0}, r});
+    else eng.add_free({{0.0, 0.0}, {0.0, 0.0}, R, p.real("m_free")});
+    HeadOn h;
+    double xi_max = 0;
+    for (long s = 0; s < 10'000'000 && eng.events().size() < 2; ++s) {
+        eng.step();
+        const auto& g = eng.grains();
+        const double other = wall ? 0.0 : g[1].r.x;
+        xi_max = std::max(xi_max, R + r - (g[0].r.x - other));
+    }
     const auto& ev = eng.events();
-    if (ev.size() < 2) return {NAN, NAN};
-    return {ev[1].t - ev[0].t, -ev[1].xi_dot / ev[0].xi_dot};
+    if (ev.size() < 2) return h;
+    h.t_col = ev[1].t - ev[0].t;
+    h.e_N = -ev[1].xi_dot / ev[0].xi_dot;
+    h.xi_max = xi_max;
+    return h;
 }
 
 Result run(const RunContext& ctx) {
@@ -63,17 +83,21 @@ Result run(const RunContext& ctx) {
     const LinearSpringDashpot law{p.real("k_N"), p.real("gamma_N")};
     const double t_col = law.collision_time(m);
     const double dt = t_col / p.real("steps_per_contact");
-    const CoulombShear shear{p.real("mu")};
+    const CoulombShear shear = coulomb_from(p);
     const auto vy = log_space(p.real("vy_min"), p.real("vy_max"), int(p.integer("n_vy")));
     const std::size_t n = vy.size();
     const auto& betas = p.reals("betas");
 
     // Curves: 0 = Fig. 3, 1 = dt / fine_factor, 2 = HKK, 3 = elastic limit (gamma_N = 0) and
-    // 4 = paper parameters, both on a grid extended to 10 vy_max, 5.. = k' = beta k_N.
-    const std::size_t n_curves = 5 + betas.size();
+    // 4 = paper parameters, both on a grid extended to 10 vy_max, 5.. = k' = beta k_N, then per
+    // reading of Eq. (2) (magnitude, clipped, elastic, signed) one curve on the figure's grid and
+    // one on the extended grid (the study of which F_N enters Coulomb's law, panel (b)).
+    const std::size_t n_betas = betas.size();
+    const std::size_t first_reading = 5 + n_betas;
+    const std::size_t n_curves = first_reading + 2 * kReadings.size();
     const auto vy_ext = log_space(p.real("vy_min"), 10 * p.real("vy_max"), int(n));
     const LinearSpringDashpot elastic{law.k_N, 0.0};
-    std::vector<Curve> curves(n_curves, Curve{std::vector<double>(n), std::vector<double>(n), std::vector<int>(n)});
+    std::vector<Curve> curves(n_curves, Curve{std::vector<double>(n), std::vector<double>(n), std::vector<double>(n), std::vector<int>(n)});
     const auto hkk = HertzKuwabaraKono::matched_at(law.k_N, law.gamma_N, p.real("hkk_xi_ref"));
 
     Progress progress("brake-failure", long(n * n_curves), ctx.quiet);
@@ -86,15 +110,21 @@ Result run(const RunContext& ctx) {
         // At 10 vy_max a grazing contact lasts less than one step of t_col/50: resolve it with dt/10.
         else if (c == 3) o = shoot(elastic, shear, geometry(p, vy_ext[i], dt / 10));
         else if (c == 4) o = shoot(law, shear, geometry(p, vy_ext[i], dt / 10));
-        else {
+        else if (c < first_reading) {
             // k' = beta k_N with gamma' = sqrt(beta) gamma_N: time scales by 1/sqrt(beta), lengths
             // are unchanged, so velocities scale by sqrt(beta).
             const double sb = std::sqrt(betas[c - 5]);
             const LinearSpringDashpot scaled{law.k_N * betas[c - 5], law.gamma_N * sb};
             o = shoot(scaled, shear, geometry(p, vy[i] * sb, dt / sb));
+        } else {
+            const std::size_t k = (c - first_reading) / 2;
+            const bool extended = (c - first_reading) % 2 == 1;
+            const CoulombShear reading{shear.mu, kReadings[k]};
+            o = extended ? shoot(law, reading, geometry(p, vy_ext[i], dt / 10)) : shoot(law, reading, geometry(p, vy[i], dt));
         }
         curves[c].dvy[i] = o.dvy;
         curves[c].dvx[i] = o.dvx;
+        curves[c].dvy_shear[i] = o.dvy_shear;
         curves[c].complete[i] = o.completed;
     });
 
@@ -138,7 +168,21 @@ Result run(const RunContext& ctx) {
     r.scalar("dvy_plateau_theory", plateau, "m/s", "high-v_y limit of Δv_y under Eqs. (1)-(2) (straight path)");
     r.scalar("dvy_far_over_plateau", curves[4].dvy.back() / plateau, "1", "Δv_y at 10 vy_max over that limit");
 
-    const auto [t_meas, e_meas] = measure_head_on(law, p, dt);
+    const HeadOn head_on = measure_head_on(law, p, dt);
+    const double t_meas = head_on.t_col, e_meas = head_on.e_N;
+    // Text below Eq. (4): xi_max <= v_N t_col / pi, with equality for gamma_N = 0; and the m_red
+    // in Eq. (1)'s dashpot makes free-wall collisions more dissipative than free-free ones.
+    // Overlaps are read at step ends, so they are resolved at dt/20 here.
+    const HeadOn fine = measure_head_on(law, p, dt / 20);
+    const LinearSpringDashpot undamped{law.k_N, 0.0};
+    const HeadOn fine_elastic = measure_head_on(undamped, p, undamped.collision_time(m) / 1000);
+    r.scalar("xi_max_over_vtcol_pi", fine.xi_max / (1.0 * t_col / M_PI), "1",
+             "head-on free-wall xi_max over v_N t_col / pi, paper parameters (v_N = 1 m/s)");
+    r.scalar("xi_max_over_vtcol_pi_elastic", fine_elastic.xi_max / (1.0 * undamped.collision_time(m) / M_PI), "1",
+             "the same for gamma_N = 0");
+    const HeadOn twin = measure_head_on(law, p, law.collision_time(0.5 * m) / p.real("steps_per_contact"), false);
+    r.scalar("e_N_free_free", twin.e_N, "1", "head-on restitution of two free grains at the same gamma_N");
+    r.scalar("e_N_wall_over_free", e_meas / twin.e_N, "1", "free-wall over free-free restitution (< 1: the wall dissipates more)");
     r.scalar("t_col_eq4", t_col, "s", "contact duration of a free-wall pair from Eq. (4)");
     r.scalar("e_N_eq4", law.restitution(m), "1", "e_N = exp(-gamma_N t_col/2)");
     r.scalar("t_col_measured", t_meas, "s", "head-on free-wall contact duration at the run's dt");
@@ -189,6 +233,49 @@ Result run(const RunContext& ctx) {
         r.scalar(std::string("v_crit_ratio_over_sqrt_") + label, pb.x / pk.x / sb, "1",
                  "v_crit(beta k_N) / v_crit(k_N) / √β (Eq. 8 predicts 1)");
     }
+
+    // The readings of Eq. (2) side by side: the figure's tail, its maximum, how far Δv_y has
+    // come back towards the abscissa at vy_max, and the asymptotic exponents beyond the figure.
+    Table& tr = r.table("readings", "Δv_y, Δv_x vs v_y^i per reading of F_N in Eq. (2), figure grid");
+    Table& trx = r.table("readings_extended", "the same up to 10 vy_max (dt/10)");
+    tr.add("vy_i", "m/s").values = vy;
+    trx.add("vy_i", "m/s").values = vy_ext;
+    for (std::size_t k = 0; k < kReadings.size(); ++k) {
+        const std::string name = to_string(kReadings[k]);
+        const Curve& c = curves[first_reading + 2 * k];
+        const Curve& ce = curves[first_reading + 2 * k + 1];
+        tr.add("dvy_" + name, "m/s").values = c.dvy;
+        tr.add("dvx_" + name, "m/s").values = c.dvx;
+        tr.add("dvy_shear_" + name, "m/s").values = c.dvy_shear;
+        trx.add("dvy_" + name, "m/s").values = ce.dvy;
+        trx.add("dvx_" + name, "m/s").values = ce.dvx;
+        trx.add("dvy_shear_" + name, "m/s").values = ce.dvy_shear;
+        const Peak pr = first_maximum(vy, c.dvy);
+        r.scalar("eq2_" + name + "_v_crit", pr.x, "m/s", "v_y^i at the maximum of Δv_y, reading " + name);
+        r.scalar("eq2_" + name + "_dvy_max", pr.y, "m/s", "maximum of Δv_y, reading " + name);
+        r.scalar("eq2_" + name + "_tail_exponent_dvy", fit_power_law(vy, c.dvy, vmax / 10, vmax).exponent, "1",
+                 "exponent of Δv_y over the last decade of the figure, reading " + name);
+        r.scalar("eq2_" + name + "_tail_exponent_dvy_shear", fit_power_law(vy, c.dvy_shear, vmax / 10, vmax).exponent, "1",
+                 "exponent of the shear part of Δv_y (Eq. 6) over the last decade of the figure, reading " + name);
+        r.scalar("eq2_" + name + "_far_exponent_dvy_shear", fit_power_law(vy_ext, ce.dvy_shear, vext / 10, vext).exponent, "1",
+                 "exponent of the shear part of Δv_y over [vy_max, 10 vy_max], reading " + name);
+        r.scalar("eq2_" + name + "_tail_exponent_dvx", fit_power_law(vy, c.dvx, vmax / 10, vmax).exponent, "1",
+                 "exponent of Δv_x over the last decade of the figure, reading " + name);
+        r.scalar("eq2_" + name + "_dvy_end_over_max", c.dvy.back() / pr.y, "1",
+                 "Δv_y at vy_max over its maximum (0: back at the abscissa), reading " + name);
+        r.scalar("eq2_" + name + "_far_exponent_dvy", fit_power_law(vy_ext, ce.dvy, vext / 10, vext).exponent, "1",
+                 "exponent of Δv_y over [vy_max, 10 vy_max], reading " + name);
+        r.scalar("eq2_" + name + "_far_exponent_dvx", fit_power_law(vy_ext, ce.dvx, vext / 10, vext).exponent, "1",
+                 "exponent of Δv_x over [vy_max, 10 vy_max], reading " + name);
+        r.scalar("eq2_" + name + "_far_dvy_over_plateau", ce.dvy.back() / plateau, "1",
+                 "Δv_y at 10 vy_max over the magnitude reading's straight-path limit, reading " + name);
+    }
+
+    double best = INFINITY;
+    for (auto reading : kReadings)
+        best = std::min(best, r.find_scalar("eq2_" + std::string(to_string(reading)) + "_tail_exponent_dvy")->value);
+    r.scalar("eq2_steepest_tail_exponent_dvy", best, "1",
+             "the steepest Δv_y tail over the figure's last decade among the readings of Eq. (2)");
 
     const Peak ph = first_maximum(vy, curves[2].dvy);
     r.scalar("hkk_v_crit", ph.x, "m/s", "v_crit with the Hertz-Kuwabara-Kono normal force");

@@ -2,6 +2,7 @@
 // touching wall grains with v_x^i towards the wall and v_y^i along it; each point is the mean
 // over start positions spaced equally over one wall wavelength. Far in the brake-failure regime
 // the grain ploughs through several wall grains and Δv_y rises again (the "emergency brake").
+#include <array>
 #include <cmath>
 #include <string>
 
@@ -26,8 +27,12 @@ void validate(const ParameterSet& p) {
 
 struct Point {
     double dvy = 0, dvy_sem = 0, contacts = 0, multi_fraction = 0;
+    double vx_return = 0; // mean v_x^f / v_x^i: how much of the speed towards the wall comes back
     int incomplete = 0;
 };
+
+constexpr std::array kReadings{FrictionNormal::Magnitude, FrictionNormal::Clipped, FrictionNormal::Elastic,
+                               FrictionNormal::Signed};
 
 std::string label(const char* prefix, double x) {
     char buf[48];
@@ -46,11 +51,32 @@ Result run(const RunContext& ctx) {
     const long npos = p.integer("n_positions");
     const std::size_t n = vy.size();
 
-    // Series: one per v_x^i at the experiment's k_N, then one per extra k_N at vx_list[0].
-    struct Series { double vx; LinearSpringDashpot law; };
+    // Series: one per v_x^i at the experiment's k_N (the figures), one per extra k_N at
+    // vx_list[0], one per v_x^i on the pipe's wall spacing (Fig. 6's construction needs the impact
+    // curves of the pipe's own wall), and one per other reading of Eq. (2) and v_x^i.
+    enum class Kind { Main, KScan, PipeWall, Reading };
+    struct Series {
+        Kind kind;
+        double vx;
+        LinearSpringDashpot law;
+        CoulombShear shear;
+        double spacing;
+        std::string tag;
+    };
+    const CoulombShear shear = coulomb_from(p);
+    const double spacing = p.real("wall_spacing"), pipe_spacing = p.real("pipe_wall_spacing");
     std::vector<Series> series;
-    for (double vx : vxs) series.push_back({vx, law});
-    for (double k : kscan) series.push_back({vxs.front(), LinearSpringDashpot::from_restitution(k, e_N, m)});
+    for (double vx : vxs) series.push_back({Kind::Main, vx, law, shear, spacing, label("vx", vx)});
+    for (double k : kscan)
+        series.push_back({Kind::KScan, vxs.front(), LinearSpringDashpot::from_restitution(k, e_N, m), shear, spacing,
+                          label("kN", k)});
+    if (pipe_spacing != spacing)
+        for (double vx : vxs) series.push_back({Kind::PipeWall, vx, law, shear, pipe_spacing, label("pipe_vx", vx)});
+    for (auto reading : kReadings)
+        if (reading != shear.reading)
+            for (double vx : vxs)
+                series.push_back({Kind::Reading, vx, law, CoulombShear{shear.mu, reading}, spacing,
+                                  std::string("eq2_") + to_string(reading) + label("_vx", vx)});
 
     std::vector<std::vector<Point>> pts(series.size(), std::vector<Point>(n));
     Progress progress("emergency-brake", long(series.size() * n), ctx.quiet);
@@ -61,20 +87,21 @@ Result run(const RunContext& ctx) {
         setup.d_free = p.real("d_free");
         setup.m_free = m;
         setup.d_wall = p.real("d_wall");
-        setup.wall_spacing = p.real("wall_spacing");
+        setup.wall_spacing = s.spacing;
         setup.x0 = p.real("x_start");
         setup.vx_toward = s.vx;
         setup.vy = vy[i];
         setup.dt = s.law.collision_time(m) / p.real("steps_per_contact");
-        double sum = 0, sum2 = 0, contacts = 0, multi = 0;
+        double sum = 0, sum2 = 0, contacts = 0, multi = 0, back = 0;
         Point& out = pts[std::size_t(task) / n][i];
         for (long k = 0; k < npos; ++k) {
             setup.y0 = setup.wall_spacing * double(k) / double(npos);
-            const ImpactOutcome o = shoot(s.law, CoulombShear{p.real("mu")}, setup);
+            const ImpactOutcome o = shoot(s.law, s.shear, setup);
             sum += o.dvy;
             sum2 += o.dvy * o.dvy;
             contacts += o.wall_grains;
             multi += o.wall_grains >= 2;
+            back += (o.dvx - s.vx) / s.vx;
             out.incomplete += !o.completed;
         }
         const double mean = sum / double(npos);
@@ -82,6 +109,7 @@ Result run(const RunContext& ctx) {
         out.dvy_sem = npos > 1 ? std::sqrt(std::max(0.0, sum2 / double(npos) - mean * mean) / double(npos - 1)) : 0.0;
         out.contacts = contacts / double(npos);
         out.multi_fraction = multi / double(npos);
+        out.vx_return = back / double(npos);
     });
 
     Result r;
@@ -93,22 +121,28 @@ Result run(const RunContext& ctx) {
     r.scalar("t_col", law.collision_time(m), "s", "free-wall contact duration, Eq. (4)");
 
     for (std::size_t si = 0; si < series.size(); ++si) {
-        const bool main = si < vxs.size();
-        const std::string tag = main ? label("vx", series[si].vx) : label("kN", series[si].law.k_N);
-        Table& t = r.table("impacts_" + tag, main ? "mean over start positions at v_x^i = " + label("", series[si].vx) + " m/s"
-                                                   : "k_N scan at the first v_x^i, e_N held fixed");
-        std::vector<double> dvy(n), sem(n), cont(n), multi(n);
+        const Series& se = series[si];
+        const bool main = se.kind != Kind::KScan;
+        const std::string& tag = se.tag;
+        const std::string at = "at v_x^i = " + label("", se.vx) + " m/s";
+        Table& t = r.table("impacts_" + tag, se.kind == Kind::Main       ? "mean over start positions " + at
+                                             : se.kind == Kind::KScan    ? "k_N scan at the first v_x^i, e_N held fixed"
+                                             : se.kind == Kind::PipeWall ? "on the pipe's wall spacing " + at
+                                                                         : std::string("reading ") + to_string(se.shear.reading) + " of Eq. (2) " + at);
+        std::vector<double> dvy(n), sem(n), cont(n), multi(n), back(n);
         for (std::size_t i = 0; i < n; ++i) {
             dvy[i] = pts[si][i].dvy;
             sem[i] = pts[si][i].dvy_sem;
             cont[i] = pts[si][i].contacts;
             multi[i] = pts[si][i].multi_fraction;
+            back[i] = pts[si][i].vx_return;
         }
         t.add("vy_i", "m/s").values = vy;
         t.add("dvy", "m/s").values = dvy;
         t.add("dvy_sem", "m/s").values = sem;
         t.add("contacts", "1").values = cont;
         t.add("multi_fraction", "1").values = multi;
+        t.add("vx_return", "1").values = back;
 
         // The first maximum (brake failure sets in), the minimum after it, and the rise to v_max.
         const Peak pk = first_maximum(vy, dvy);
@@ -125,6 +159,7 @@ Result run(const RunContext& ctx) {
         r.scalar("v_multi_onset_" + tag, onset, "m/s", "v_y^i at which the mean number of wall grains touched reaches 2");
         r.scalar("onset_over_vmin_" + tag, onset / vy[imin], "1", "multi-contact onset over the start of the Δv_y rise");
         r.scalar("contacts_at_vmax_" + tag, cont.back(), "1", "mean wall grains touched at vy_max");
+        r.scalar("vx_return_at_vmax_" + tag, back.back(), "1", "mean v_x^f / v_x^i at vy_max (the wall's return of the speed towards it)");
     }
     if (!kscan.empty()) {
         // v_crit and the peak height must grow with k_N (text below Fig. 5).

@@ -26,6 +26,7 @@ struct ImpactSetup {
 struct ImpactOutcome {
     double dvy = 0;        // v_y^i - v_y^f: speed lost along the wall [m/s] (> 0 is braking)
     double dvx = 0;        // gain of the wall-normal velocity away from the wall [m/s]
+    double dvy_shear = 0;  // the part of dvy caused by the shear (Coulomb) forces, Eq. (6) [m/s]
     int wall_grains = 0;   // distinct wall grains touched
     bool completed = false;// the grain left the wall for good within max_steps
 };
@@ -37,6 +38,11 @@ inline void validate_free_wall_law(const ParameterSet& p) {
     if (g * g / 4 >= k / m)
         p.reject("gamma_N", "over-damped free-wall contact; must be below 2 sqrt(k_N/m_free) = " +
                                 std::to_string(2 * std::sqrt(k / m)) + " 1/s so that e_N is in (0, 1]");
+}
+
+// Coulomb's law of Eq. (2) from the parameters mu and friction_normal (its reading).
+inline CoulombShear coulomb_from(const ParameterSet& p) {
+    return {p.real("mu"), *parse_friction_normal(p.text("friction_normal"))};
 }
 
 template <class NormalLaw>
@@ -62,6 +68,7 @@ ImpactOutcome shoot(const NormalLaw& law, const CoulombShear& shear, const Impac
     const SoftGrain& g = eng.grains()[0];
     out.dvy = s.vy - g.v.y;
     out.dvx = g.v.x + s.vx_toward;
+    out.dvy_shear = -eng.shear_dv(0).y;
     std::vector<Partner> seen;
     for (const auto& e : eng.events())
         if (e.begins && std::find(seen.begin(), seen.end(), e.partner) == seen.end()) seen.push_back(e.partner);

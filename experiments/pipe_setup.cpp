@@ -18,7 +18,7 @@ PipeEngine<LinearSpringDashpot, CoulombShear> build_pipe(const PipeSpec& s) {
     const double d_min = s.d_mean * (1 - s.polydispersity), d_max = s.d_mean * (1 + s.polydispersity);
     const double m_min = s.m_mean * (d_min / s.d_mean) * (d_min / s.d_mean);
     const double dt = law.collision_time(0.5 * m_min) / s.steps_per_contact; // stiffest pair, Eq. (5)
-    PipeEngine<LinearSpringDashpot, CoulombShear> eng(law, CoulombShear{s.mu}, s.geo, dt, s.skin);
+    PipeEngine<LinearSpringDashpot, CoulombShear> eng(law, CoulombShear{s.mu, s.friction_normal}, s.geo, dt, s.skin);
     RngStream rng(s.seed, s.stream);
     // Area fraction relative to the channel between the wall crests, (width - d_wall) x length.
     const double area = (s.geo.width - 2 * s.geo.wall_radius) * s.geo.length;

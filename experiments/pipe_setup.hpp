@@ -17,12 +17,13 @@ struct PipeSpec {
     double m_mean = 1e-6;          // mass at d_mean [kg]
     double phi = 0.55;             // area fraction between the wall crests [1]
     double mu = 0.5;               // Coulomb coefficient [1]
+    FrictionNormal friction_normal = FrictionNormal::Magnitude; // reading of Eq. (2)
     double k_N = 2000, e_N = 0.9;  // [N/m], free-wall restitution [1]
     double v0 = 0, agitation = 1;  // start: mean downward speed, rms of random velocities [m/s]
     double steps_per_contact = 50; // [1]
     double skin = 0.1e-3;          // Verlet skin [m]
-    // Run control (used by the experiment): [s], [s], [m/s^2], [s], [s], [m/s]
-    double t_max = 1, window = 0.3, drift_tol = 0.3, t_average = 0.3, sample_dt = 0.005, v_abort = 40;
+    // Run control (used by the experiment): [s], [m/s^2], [s], [s], [m/s]
+    double window = 0.3, drift_tol = 0.3, t_average = 0.3, sample_dt = 0.005, v_abort = 300;
     std::uint64_t seed = 1, stream = 0;
 };
 

@@ -1,28 +1,52 @@
-# Schäfer & Wolf (1995) Fig. 6: steady-state mean velocity in a vertical pipe against e_N, one
-# symbol per k_N; filled symbols: slow starts, open symbols: fast starts. Runs that reached no
-# steady state are not plotted (their final speeds are in the tables, columns *_final).
+# Schäfer & Wolf (1995) Fig. 6: steady-state mean velocity in a vertical pipe against e_N for each
+# k_N, from slow starts (filled symbols) and fast starts (open symbols, shifted right by 0.006 in
+# e_N so that coinciding states stay visible). A run that reached no steady state within its budget
+# is drawn as an arrow pointing up from its last speed (outcome 1: free fall, 2: still drifting).
+# The speed axis is logarithmic: the slow and fast branches differ by up to a factor 100.
 # Variables set by granrepro: datadir, outbase.
 set datafile separator "\t"
 set datafile missing "NaN"
-set key autotitle columnhead
-files = system("ls ".datadir."/steady_k*.tsv 2>/dev/null")
+files = system("ls ".datadir."/steady_k*.tsv 2>/dev/null | sort -t k -k3 -g")
+kname(i) = system("basename ".word(files, i)." .tsv | sed 's/steady_k//'")
+colors = "#0072B2 #D55E00 #009E73"
+filled = "7 5 9"
+open = "6 4 8"
+# A series with no row to draw (a column that is NaN throughout: NaN != NaN) is left out of the
+# plot command, instead of drawing nothing with a warning.
+cmd = "plot '+' using (0.5):(1) every ::0::0 with dots lc rgb 'white' notitle"
+do for [i=1:words(files)] {
+  f = word(files, i)
+  do for [s in "slow fast"] {
+    shift = (s eq "fast") ? "0.006" : "0"
+    style = sprintf("with linespoints pt %s ps %s lw 1.5 dt %s lc rgb '%s'", (s eq "slow") ? word(filled, i) : word(open, i), \
+      (s eq "slow") ? "1.3" : "1.5", (s eq "slow") ? "1" : "2", word(colors, i))
+    # Every series has its legend entry, whether or not it has a steady state to draw.
+    cmd = cmd.sprintf(", NaN %s title 'k_N = %s N/m, %s start'", style, kname(i), s)
+    stats f using (column("v_".s) == column("v_".s) ? 1 : 0) nooutput
+    if (STATS_sum > 0) {
+      cmd = cmd.sprintf(", '%s' using ($1 + %s):(column('v_%s')) %s notitle", f, shift, s, style)
+    }
+    stats f using (column("outcome_".s) > 0 ? 1 : 0) nooutput
+    if (STATS_sum > 0) {
+      cmd = cmd.sprintf(", '%s' using ($1 + %s):(column('outcome_%s') > 0 ? column('v_last_%s') : NaN):(0):(column('v_last_%s') * 0.6) with vectors head %s size screen 0.008,20 lw 1.5 lc rgb '%s' notitle", \
+        f, shift, s, s, s, (s eq "slow") ? "filled" : "empty", word(colors, i))
+    }
+  }
+}
+cmd = cmd.", NaN with vectors head filled lw 1.5 lc rgb 'black' title 'no steady state: arrow up from its last speed'"
 do for [fmt in "png pdf"] {
-  if (fmt eq "png") { set terminal pngcairo size 800,560 enhanced font "Sans,11" }
-  else { set terminal pdfcairo size 5.5in,3.9in enhanced font "Sans,10" }
+  if (fmt eq "png") { set terminal pngcairo size 1000,620 enhanced font "Sans,11" }
+  else { set terminal pdfcairo size 7in,4.3in enhanced font "Sans,10" }
   set output outbase.'.'.fmt
-  set xlabel "e_N"
-  set ylabel "steady-state mean velocity  [m/s]"
+  set xlabel "e_N (free grain on a wall grain)"
+  set ylabel "mean velocity  [m/s]"
   set title "vertical pipe, width 2 cm, φ = 0.55, μ = 0.5"
   set grid lc rgb "#dddddd"
-  set key top right box opaque
+  set logscale y
+  set format y "%g"
   set xrange [0.45:1.02]
-  set yrange [0:*]
-  colors = "#0072B2 #D55E00 #009E73"
-  # The invisible point keeps gnuplot from aborting when no run reached a steady state.
-  plot '+' using (0.5):(0) every ::0::0 with dots lc rgb "white" notitle, \
-       for [i=1:words(files)] word(files, i) using "e_N":"v_slow" with linespoints pt 7 ps 1.2 lw 1.5 lc rgb word(colors, i) \
-         title sprintf("k_N = %s N/m, slow start", system("basename ".word(files, i)." .tsv | sed 's/steady_k//'")), \
-       for [i=1:words(files)] word(files, i) using "e_N":"v_fast" with linespoints pt 6 ps 1.4 lw 1.5 dt 2 lc rgb word(colors, i) \
-         title sprintf("k_N = %s N/m, fast start", system("basename ".word(files, i)." .tsv | sed 's/steady_k//'"))
+  set yrange [0.3:400]
+  set key outside right top box Left reverse
+  eval cmd
   unset output
 }

@@ -143,4 +143,25 @@ TEST(FewBodyEngine, GrazingFrictionBrakesTangentialMotion) {
     EXPECT_LT(v.y, 1.0);          // braked
 }
 
+// The shear/normal split of the velocity change adds up, with gravity, to the whole change (RK4
+// weights and contact switching included), and the shear part vanishes without friction.
+TEST(FewBodyEngine, ShearAndNormalVelocityChangesAddUp) {
+    const LinearSpringDashpot law{2000.0, 1e4};
+    const double dt = law.collision_time(1e-6) / 50;
+    for (double mu : {0.0, 0.5}) {
+        FewBodyEngine<LinearSpringDashpot, CoulombShear> eng(law, CoulombShear{mu}, dt, Vec2{0.0, -10.0});
+        const Vec2 v0{-0.3, 2.0};
+        eng.add_free({{0.9e-3, -0.2e-3}, v0, 0.5e-3, 1e-6});
+        eng.add_row({0.0, 0.0, 0.66e-3, 0.33e-3});
+        for (int s = 0; s < 3000; ++s) eng.step();
+        ASSERT_GE(eng.events().size(), 2u);
+        const Vec2 dv = eng.grains()[0].v - v0;
+        const Vec2 sum = eng.shear_dv(0) + eng.normal_dv(0) + Vec2{0.0, -10.0} * eng.time();
+        EXPECT_NEAR(sum.x, dv.x, 1e-12);
+        EXPECT_NEAR(sum.y, dv.y, 1e-12);
+        if (mu == 0.0) EXPECT_EQ(norm(eng.shear_dv(0)), 0.0);
+        else EXPECT_LT(eng.shear_dv(0).y, -1e-3); // friction brakes the motion along the wall
+    }
+}
+
 } // namespace

@@ -59,6 +59,11 @@ public:
     const std::vector<SoftGrain>& grains() const { return grains_; }
     const std::vector<ContactEvent>& events() const { return events_; }
     std::size_t active_contacts() const { return active_.size(); }
+    // Velocity change of free grain i caused by shear forces alone and by normal forces alone
+    // since the start [m/s]: the RK4-weighted sums of the stage forces, so that together with
+    // gravity they add up to the grain's velocity change (Eq. (6) asks for the shear part).
+    Vec2 shear_dv(int i) const { return i < int(shear_dv_.size()) ? shear_dv_[std::size_t(i)] : Vec2{}; }
+    Vec2 normal_dv(int i) const { return i < int(normal_dv_.size()) ? normal_dv_[std::size_t(i)] : Vec2{}; }
     long substeps() const { return substeps_; }
 
     // Advance by one time step dt.
@@ -87,12 +92,14 @@ public:
                 }
             }
             if (which < 0) {
+                book_impulses(remaining); // the stage accelerations are still the trial's
                 std::swap(grains_, trial_);
                 t_ += remaining;
                 remaining = 0.0;
                 break;
             }
             rk4(grains_, first);
+            book_impulses(first);
             t_ += first;
             remaining -= first;
             toggle(candidates_[which]);
@@ -104,9 +111,9 @@ public:
     Vec2 contact_force_on(int i) const {
         Vec2 f{};
         for (const auto& p : active_) {
-            if (p.i == i) f += pair_force(grains_, p).first;
+            if (p.i == i) f += pair_force(grains_, p);
             else if (p.partner.kind == Partner::Kind::Free && p.partner.index == i)
-                f -= pair_force(grains_, p).first;
+                f -= pair_force(grains_, p);
         }
         return f;
     }
@@ -156,22 +163,32 @@ private:
         return {n, a.radius + partner_radius(p.partner) - dist, -dot(vrel, n), dot(vrel, perp(n)), m_red};
     }
 
-    // Force on grain i of the pair, and the geometry it was computed from.
-    std::pair<Vec2, Geometry> pair_force(const std::vector<SoftGrain>& g, const Pair& p) const {
+    // Normal and shear force on grain i of the pair [N].
+    std::pair<Vec2, Vec2> pair_forces(const std::vector<SoftGrain>& g, const Pair& p) const {
         const Geometry geo = geometry(g, p);
         const NormalForce f = normal_.normal_force(geo.xi, geo.xi_dot, geo.m_red);
         const double fn = shear_.applied_normal(f);
         const double fs = shear_.shear_force(f, geo.v_s);
-        return {geo.n * fn + perp(geo.n) * fs, geo};
+        return {geo.n * fn, perp(geo.n) * fs};
+    }
+    Vec2 pair_force(const std::vector<SoftGrain>& g, const Pair& p) const {
+        const auto [fn, fs] = pair_forces(g, p);
+        return fn + fs;
     }
 
-    void accelerations(const std::vector<SoftGrain>& g, std::vector<Vec2>& acc) const {
+    // Accelerations of all free grains; the shear part alone goes to shear_acc as well.
+    void accelerations(const std::vector<SoftGrain>& g, std::vector<Vec2>& acc, std::vector<Vec2>& shear_acc) const {
         acc.assign(g.size(), gravity_);
+        shear_acc.assign(g.size(), Vec2{});
         for (const auto& p : active_) {
-            const Vec2 f = pair_force(g, p).first;
+            const auto [fn, fs] = pair_forces(g, p);
+            const Vec2 f = fn + fs;
             acc[p.i] += f / g[p.i].mass;
-            if (p.partner.kind == Partner::Kind::Free)
+            shear_acc[p.i] += fs / g[p.i].mass;
+            if (p.partner.kind == Partner::Kind::Free) {
                 acc[p.partner.index] -= f / g[p.partner.index].mass;
+                shear_acc[p.partner.index] -= fs / g[p.partner.index].mass;
+            }
         }
     }
 
@@ -184,19 +201,32 @@ private:
         v2_.resize(n);
         v3_.resize(n);
         v4_.resize(n);
-        accelerations(s_, a1_);
+        accelerations(s_, a1_, b1_);
         for (std::size_t i = 0; i < n; ++i) { s_[i].r = g0_[i].r + 0.5 * h * g0_[i].v; s_[i].v = g0_[i].v + 0.5 * h * a1_[i]; }
         for (std::size_t i = 0; i < n; ++i) v2_[i] = s_[i].v;
-        accelerations(s_, a2_);
+        accelerations(s_, a2_, b2_);
         for (std::size_t i = 0; i < n; ++i) { s_[i].r = g0_[i].r + 0.5 * h * v2_[i]; s_[i].v = g0_[i].v + 0.5 * h * a2_[i]; }
         for (std::size_t i = 0; i < n; ++i) v3_[i] = s_[i].v;
-        accelerations(s_, a3_);
+        accelerations(s_, a3_, b3_);
         for (std::size_t i = 0; i < n; ++i) { s_[i].r = g0_[i].r + h * v3_[i]; s_[i].v = g0_[i].v + h * a3_[i]; }
         for (std::size_t i = 0; i < n; ++i) v4_[i] = s_[i].v;
-        accelerations(s_, a4_);
+        accelerations(s_, a4_, b4_);
         for (std::size_t i = 0; i < n; ++i) {
             g[i].r = g0_[i].r + (h / 6.0) * (g0_[i].v + 2.0 * v2_[i] + 2.0 * v3_[i] + v4_[i]);
             g[i].v = g0_[i].v + (h / 6.0) * (a1_[i] + 2.0 * a2_[i] + 2.0 * a3_[i] + a4_[i]);
+        }
+    }
+
+    // Adds the last rk4() call's velocity change, split into its shear and normal parts.
+    void book_impulses(double h) {
+        const std::size_t n = grains_.size();
+        shear_dv_.resize(n);
+        normal_dv_.resize(n);
+        for (std::size_t i = 0; i < n; ++i) {
+            const Vec2 total = (h / 6.0) * (a1_[i] + 2.0 * a2_[i] + 2.0 * a3_[i] + a4_[i]) - h * gravity_;
+            const Vec2 shear = (h / 6.0) * (b1_[i] + 2.0 * b2_[i] + 2.0 * b3_[i] + b4_[i]);
+            shear_dv_[i] += shear;
+            normal_dv_[i] += total - shear;
         }
     }
 
@@ -253,7 +283,8 @@ private:
     std::vector<Pair> candidates_;
     std::vector<ContactEvent> events_;
     std::vector<SoftGrain> trial_, g0_, s_;   // scratch of step() and rk4()
-    std::vector<Vec2> a1_, a2_, a3_, a4_, v2_, v3_, v4_;
+    std::vector<Vec2> a1_, a2_, a3_, a4_, b1_, b2_, b3_, b4_, v2_, v3_, v4_;
+    std::vector<Vec2> shear_dv_, normal_dv_;
 };
 
 } // namespace granrepro
