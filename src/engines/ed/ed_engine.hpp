@@ -41,7 +41,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <functional>
 #include <limits>
 #include <sstream>
 #include <stdexcept>
@@ -54,7 +53,6 @@ namespace granrepro {
 template <class Queue>
 class BasicEdEngine {
 public:
-    using Observer = std::function<void(const CollisionRecord&)>;
     using QueueType = Queue;
 
     // The earliest pair collision from a given state (used to test the cell search).
@@ -97,16 +95,14 @@ public:
 
     // ---- running ----------------------------------------------------------------------------
     // Process every event with time <= t_end [s]; afterwards time() == t_end.
-    void run_until(double t_end) { dispatch_stored(t_end, kMaxCount); }
+    void run_until(double t_end) { NoObserver none; run_impl(t_end, kMaxCount, none); }
     // Process events until n more particle-particle collisions happened (or no event is left).
-    void run_collisions(std::uint64_t n) { dispatch_stored(kInf, n); }
+    void run_collisions(std::uint64_t n) { NoObserver none; run_impl(kInf, n, none); }
     // Same, reporting each collision to obs (any callable taking const CollisionRecord&).
     template <class Obs>
     void run_until(double t_end, Obs&& obs) { run_impl(t_end, kMaxCount, obs); }
     template <class Obs>
     void run_collisions(std::uint64_t n, Obs&& obs) { run_impl(kInf, n, obs); }
-    // Observer used by the overloads without an explicit one; empty = none (zero cost).
-    void set_observer(Observer f) { observer_ = std::move(f); }
 
     // ---- run-time changes ---------------------------------------------------------------------
     void set_law(const RoughDiskCollision& law) { cfg_.law = law; setup_laws(); }
@@ -119,19 +115,6 @@ public:
     // Adding/removing a wall changes predictions: all particles are synchronised and re-predicted.
     void set_wall_enabled(std::size_t w, bool on) {
         cfg_.walls.at(w).enabled = on;
-        reset_predictions();
-    }
-    void set_gravity(Vec2 g) { cfg_.gravity = g; setup_geometry(); reset_predictions(); }
-    // Replace all velocities [m/s] (and spins [1/s] if non-empty) at time().
-    void set_velocities(const std::vector<Vec2>& vel, const std::vector<double>& spin = {}) {
-        if (vel.size() != size() || (!spin.empty() && spin.size() != size()))
-            throw InputError("ED: set_velocities size mismatch");
-        synchronize();
-        for (std::size_t i = 0; i < size(); ++i) {
-            if (!spin.empty()) mw_[i].w = spin[i];
-        }
-        // The "last partners cannot re-collide" shortcut assumed unchanged velocities.
-        for (auto& h : p_) h.last_partner = kNoPartner;
         reset_predictions();
     }
     const EdConfig& config() const { return cfg_; }
@@ -594,13 +577,6 @@ private:
     }
 
     // ---- execution --------------------------------------------------------------------------
-    void dispatch_stored(double t_end, std::uint64_t n) {
-        if (observer_) run_impl(t_end, n, observer_);
-        else {
-            NoObserver none;
-            run_impl(t_end, n, none);
-        }
-    }
     template <class Obs>
     void run_impl(double t_end, std::uint64_t n, Obs& obs) {
         start_run();
@@ -852,7 +828,6 @@ private:
     std::uint64_t pair_collisions_ = 0, wall_collisions_ = 0, elastic_ = 0, events_ = 0,
                   crossings_ = 0, stale_ = 0;
     double max_overlap_ = 0.0;
-    Observer observer_;
 };
 
 // Queue choice, measured with run_ed_benchmark (elastic, rho = 0.25, periodic, this 2-core EPYC,
