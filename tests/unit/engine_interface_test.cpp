@@ -1,4 +1,5 @@
-// The engine interface (HardParticleEngine): ED and DSMC run through one generic function.
+// The engine interface (HardParticleEngine): ED and DSMC run through one generic function, and
+// the ED engine uses the collision operator it is instantiated with.
 #include "engines/dsmc/dsmc_engine.hpp"
 #include "engines/ed/ed_engine.hpp"
 #include "engines/ed/ed_initial_states.hpp"
@@ -55,6 +56,19 @@ Gas gas(std::size_t n, double rho) {
     return g;
 }
 
+// Perfectly plastic in the normal direction, whatever restitution the configuration names.
+struct PlasticCollision {
+    RoughDiskCollision wb;
+    PlasticCollision() = default;
+    explicit PlasticCollision(RoughDiskCollision p) : wb(p) { wb.r = 0.0; }
+    bool frictional() const { return wb.frictional(); }
+    template <bool kFrictional>
+    RoughDiskCollision::Result collide(const Vec2& v1, double w1, double m1, double a1, const Vec2& v2, double w2,
+                                       double m2, double a2, const Vec2& n) const {
+        return wb.collide<kFrictional>(v1, w1, m1, a1, v2, w2, m2, a2, n);
+    }
+};
+
 } // namespace
 
 TEST(EngineInterface, EdAndDsmcMeetTheContract) {
@@ -67,4 +81,22 @@ TEST(EngineInterface, EdAndDsmcMeetTheContract) {
     ds.lx = ds.ly = g.l;
     DsmcEngine d(ds, g.pos, g.vel, g.rad, g.mass);
     check_contract(d, 5e-3);
+}
+
+// A head-on pair of equal disks configured elastic: the default operator exchanges their
+// velocities, the plastic one stops both (momentum zero, r = 0).
+TEST(EngineInterface, EdEngineUsesItsCollisionOperator) {
+    EdConfig cfg;
+    cfg.lx = cfg.ly = 10 * kD;
+    const std::vector<Vec2> pos{{3 * kD, 5 * kD}, {6 * kD, 5 * kD}}, vel{{1.0, 0.0}, {-1.0, 0.0}};
+    const std::vector<double> rad(2, 0.5 * kD), mass(2, kM);
+    EdEngine elastic(cfg, pos, vel, rad, mass);
+    elastic.run_collisions(1);
+    EXPECT_NEAR(elastic.velocity(0).x, -1.0, 1e-12);
+    BasicEdEngine<BinaryHeapQueue, PlasticCollision> plastic(cfg, pos, vel, rad, mass);
+    plastic.run_collisions(1);
+    ASSERT_EQ(plastic.total_collisions(), 1u);
+    EXPECT_NEAR(plastic.velocity(0).x, 0.0, 1e-12);
+    EXPECT_NEAR(plastic.velocity(1).x, 0.0, 1e-12);
+    EXPECT_NEAR(total_kinetic_energy(plastic), 0.0, 1e-12 * kM);
 }

@@ -37,8 +37,8 @@ void zero_momentum_and_scale(std::vector<Vec2>& vel, const std::vector<double>& 
 // Run with perfectly elastic smooth particles and walls (r = r_w = 1, mu = mu_w = 0, t_c = 0)
 // until the mean number of collisions per particle, sum_i count_i / N, grew by
 // collisions_per_particle; then restore the laws. Observers are not called.
-template <class Queue>
-void equilibrate(BasicEdEngine<Queue>& engine, double collisions_per_particle) {
+template <class Queue, class Collision>
+void equilibrate(BasicEdEngine<Queue, Collision>& engine, double collisions_per_particle) {
     const EdConfig saved = engine.config();
     RoughDiskCollision elastic = saved.law;
     elastic.r = 1.0;
