@@ -48,10 +48,7 @@ void equilibrate(BasicEdEngine<Queue, Collision>& engine, double collisions_per_
     engine.set_tc(0.0);
     for (std::size_t w = 0; w < saved.walls.size(); ++w) engine.set_wall_law(w, 1.0, 0.0, -1.0);
     const auto pairs = static_cast<std::uint64_t>(collisions_per_particle * static_cast<double>(engine.size()) / 2.0 + 0.5);
-    struct Silent {
-        void operator()(const CollisionRecord&) const {}
-    } silent;
-    engine.run_collisions(pairs, silent);
+    engine.run_collisions(pairs);
     engine.set_law(saved.law);
     engine.set_tc(saved.t_c);
     for (std::size_t w = 0; w < saved.walls.size(); ++w)
