@@ -18,7 +18,7 @@
 #include "experiments/impact_shot.hpp"
 #include "experiments/pipe_setup.hpp"
 #include "engines/dsmc/dsmc_bench.hpp"
-#include "engines/ed/ed_bench.hpp"
+#include "bench/ed_bench.hpp"
 #include "engines/ed/huge_page_allocator.hpp"
 #include "models/linear_spring_dashpot.hpp"
 

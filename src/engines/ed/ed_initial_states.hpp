@@ -37,8 +37,8 @@ void zero_momentum_and_scale(std::vector<Vec2>& vel, const std::vector<double>& 
 // Run with perfectly elastic smooth particles and walls (r = r_w = 1, mu = mu_w = 0, t_c = 0)
 // until the mean number of collisions per particle, sum_i count_i / N, grew by
 // collisions_per_particle; then restore the laws. Observers are not called.
-template <class Queue>
-void equilibrate(BasicEdEngine<Queue>& engine, double collisions_per_particle) {
+template <class Queue, class Collision>
+void equilibrate(BasicEdEngine<Queue, Collision>& engine, double collisions_per_particle) {
     const EdConfig saved = engine.config();
     RoughDiskCollision elastic = saved.law;
     elastic.r = 1.0;
@@ -48,10 +48,7 @@ void equilibrate(BasicEdEngine<Queue>& engine, double collisions_per_particle) {
     engine.set_tc(0.0);
     for (std::size_t w = 0; w < saved.walls.size(); ++w) engine.set_wall_law(w, 1.0, 0.0, -1.0);
     const auto pairs = static_cast<std::uint64_t>(collisions_per_particle * static_cast<double>(engine.size()) / 2.0 + 0.5);
-    struct Silent {
-        void operator()(const CollisionRecord&) const {}
-    } silent;
-    engine.run_collisions(pairs, silent);
+    engine.run_collisions(pairs);
     engine.set_law(saved.law);
     engine.set_tc(saved.t_c);
     for (std::size_t w = 0; w < saved.walls.size(); ++w)

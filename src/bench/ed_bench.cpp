@@ -1,4 +1,4 @@
-#include "engines/ed/ed_bench.hpp"
+#include "bench/ed_bench.hpp"
 
 #include "core/input_error.hpp"
 #include "core/rng_stream.hpp"
