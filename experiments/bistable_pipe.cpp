@@ -283,9 +283,9 @@ ImpactMean impact_mean(const PipeSpec& base, double k, double e, double vx, doub
     return mean;
 }
 
-// The paper's construction (text below Eq. 9): on the impact curve Δv_y(v) at the measured v_x^i,
-// the speed where Δv_y = g/ṅ with positive slope (a stable intersection) nearest to the measured
-// speed. Returns NaN if the curve has no such crossing below 3 v_meas.
+// The paper's construction (text below Eq. 9): on the impact curve Δv_y(v_y^i) of the wall at
+// v_x^i = σ_vx (the paper's association), the speed where Δv_y = g/ṅ with positive slope (a
+// stable intersection) nearest to the measured mean speed; NaN if there is none in 0.1-3 times it.
 struct Construction {
     double v = NAN;        // predicted steady speed [m/s]
     double slope = NAN;    // d Δv_y / d v at the measured speed [s] (> 0: stable, Eq. 9 argument)
@@ -293,11 +293,11 @@ struct Construction {
 };
 Construction construct(const PipeSpec& base, double k, double e, const RunResult& rr) {
     Construction c;
-    if (!(rr.outcome == kSteady && rr.ndot > 0 && rr.vx_in > 0)) return c;
+    if (!(rr.outcome == kSteady && rr.ndot > 0 && rr.vx_in > 0 && rr.sigma_vx > 0)) return c;
     const double v_meas = -rr.v_mean, need = base.geo.gravity / rr.ndot;
     const auto grid = log_space(0.1 * v_meas, 3 * v_meas, 41);
     std::vector<double> dv(grid.size());
-    for (std::size_t i = 0; i < grid.size(); ++i) dv[i] = impact_mean(base, k, e, rr.vx_in, grid[i]).dvy;
+    for (std::size_t i = 0; i < grid.size(); ++i) dv[i] = impact_mean(base, k, e, rr.sigma_vx, grid[i]).dvy;
     c.contacts = impact_mean(base, k, e, rr.vx_in, rr.vy_in).contacts;
     double best = INFINITY;
     for (std::size_t i = 1; i < grid.size(); ++i) {
@@ -443,6 +443,21 @@ void report_k(Result& r, const ParameterSet& p, const PipeSpec& base, double k, 
                 if (std::isfinite(cols[f][8][ei])) { ratio += std::log(cols[f][8][ei] / v); ++nr; }
             }
         const std::string name = b ? "fast" : "slow";
+        if (b == 1) {
+            // The fast branch's speed against 1/|ln e_N| ∝ 1/gamma_N: how much of its braking is
+            // the dashpot's speed-independent friction impulse (brake-failure's high_v_plateau).
+            std::vector<double> a;
+            for (int f = 0; f < 2; ++f)
+                for (std::size_t ei = 0; ei < es.size(); ++ei)
+                    if (cols[f][0][ei] > v_crit) a.push_back(cols[f][0][ei] * std::abs(std::log(es[ei])));
+            double mean = 0, sd = 0;
+            for (double x : a) mean += x / double(a.size());
+            for (double x : a) sd += (x - mean) * (x - mean) / double(std::max<std::size_t>(1, a.size() - 1));
+            r.scalar("fast_branch_v_ln_eN_" + std::string(kt), a.empty() ? NAN : mean, "m/s",
+                     "mean of v |ln e_N| over the fast branch's states (constant if v ∝ 1/gamma_N)");
+            r.scalar("fast_branch_v_ln_eN_cv_" + std::string(kt), a.size() > 1 ? std::sqrt(sd) / mean : NAN, "1",
+                     "its coefficient of variation over the states");
+        }
         r.scalar(name + "_branch_states_" + kt, nc, "1", "steady states on the " + name + " branch (either start)");
         r.scalar(name + "_branch_contacts_" + kt, nc ? contacts / nc : NAN, "1",
                  "mean wall grains touched per impact at the measured impact velocities, " + name + " branch");
