@@ -207,6 +207,35 @@ int main(int argc, char** argv) {
         }
     });
 
+    std::string export_name;
+    bool export_every = false;
+    std::string export_to;
+    std::size_t export_max = 50000;
+    CLI::App* exp_cmd = app.add_subcommand(
+        "export", "copy results (summary.json and a compact data.h5 without snapshots) to another directory");
+    exp_cmd->footer(kExitCodes);
+    exp_cmd->add_option("experiment", export_name, "experiment to export");
+    exp_cmd->add_flag("--all", export_every, "every experiment that has results in --out");
+    exp_cmd->add_option("--out", common.out, "output directory of the runs")->capture_default_str();
+    exp_cmd->add_option("--to", export_to, "destination, e.g. paper_figures (files go to TO/<experiment>/)")->required();
+    exp_cmd->add_option("--max-table-values", export_max, "tables with more values in all are left out (snapshots)")
+        ->capture_default_str()
+        ->check(CLI::Range(std::size_t(1), std::size_t(1) << 40));
+    exp_cmd->callback([&] {
+        if (export_every == !export_name.empty()) throw InputError("export: give one experiment or --all");
+        if (!export_every) {
+            rc = export_experiment(export_name, common.out, export_to, export_max);
+            return;
+        }
+        std::string missing;
+        for (const auto& e : experiment_registry()) {
+            if (has_results(e.name, common.out)) rc |= export_experiment(e.name, common.out, export_to, export_max);
+            else missing += (missing.empty() ? "" : ", ") + e.name;
+        }
+        if (!missing.empty())
+            std::fprintf(stderr, "granrepro: export --all: no results in %s for: %s\n", common.out.c_str(), missing.c_str());
+    });
+
     CLI::App* all = app.add_subcommand("all", "run every experiment, render every figure, check every claim");
     common.add_to(all, false);
     all->footer(kExitCodes);

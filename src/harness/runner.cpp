@@ -158,6 +158,32 @@ int check_all(const fs::path& out, const CheckOptions& opt) {
     return rc;
 }
 
+int export_experiment(const std::string& name, const fs::path& out, const fs::path& to, std::size_t max_values) {
+    find_experiment(name);
+    const fs::path from = out / name;
+    if (!fs::exists(from / "summary.json") || !fs::exists(from / "data.h5"))
+        throw InputError("export " + name + ": no results in " + from.string() + "; run `granrepro " + name + "` first");
+    ensure_writable_directory(to, "--to");
+    const fs::path dest = to / name;
+    fs::create_directories(dest);
+    const fs::path tmp = dest / ".data.h5.partial";
+    std::vector<std::string> omitted;
+    try {
+        omitted = write_compact_result_h5(from / "data.h5", tmp, max_values);
+    } catch (const std::exception& e) {
+        std::error_code ec;
+        fs::remove(tmp, ec);
+        throw InputError("export " + name + ": " + (from / "data.h5").string() + ": " + e.what());
+    }
+    fs::rename(tmp, dest / "data.h5");
+    write_file_atomically(dest / "summary.json", read_text(from / "summary.json"));
+    std::string list;
+    for (const auto& o : omitted) list += (list.empty() ? "" : ", ") + o;
+    std::printf("export %s: %s -> %s (%.0f kB data.h5%s%s)\n", name.c_str(), from.c_str(), dest.c_str(),
+                double(fs::file_size(dest / "data.h5")) / 1024.0, omitted.empty() ? "" : "; left out: ", list.c_str());
+    return 0;
+}
+
 int plot_experiment(const std::string& name, const fs::path& out, const std::vector<std::string>& figures,
                     bool strict) {
     const ExperimentInfo info = experiment_info(name);

@@ -47,6 +47,10 @@ int check_experiment(const std::string& name, const std::filesystem::path& out, 
 // Checks every experiment with results in OUT, prints one table each and the totals; lists the
 // experiments without results on stderr. 1 if a claim fails or (unless missing_ok) results are missing.
 int check_all(const std::filesystem::path& out, const CheckOptions& opt = {});
+// Copies OUT/<name>/summary.json and a compact data.h5 (tables of at most max_values values;
+// snapshots left out) to TO/<name>/, for committing paper-scale results (paper_figures/).
+int export_experiment(const std::string& name, const std::filesystem::path& out, const std::filesystem::path& to,
+                      std::size_t max_values);
 // Re-renders figures from an existing OUT/<name>/ (the `plot` subcommand). A figure the
 // experiment does not make is an input error. 1 if gnuplot fails, or (strict) if it warns.
 int plot_experiment(const std::string& name, const std::filesystem::path& out,

@@ -11,6 +11,7 @@
 #include "harness/claims.hpp"
 #include "harness/parameter_set.hpp"
 #include "io/h5_file.hpp"
+#include "io/result_writer.hpp"
 #include "io/staged_directory.hpp"
 
 using namespace granrepro;
@@ -353,6 +354,40 @@ TEST(H5File, RoundTripsDatasetsAndAttributes) {
     EXPECT_DOUBLE_EQ(f.read_double_attr("x"), 2.5);
     EXPECT_EQ(f.read_dataset("tables/v"), (std::vector<double>{1.0, 2.0, 3.5}));
     EXPECT_EQ(f.read_bytes("raw"), (std::vector<unsigned char>{1, 2, 3}));
+    fs::remove_all(dir);
+}
+
+// The compact copy committed to paper_figures/ keeps provenance, parameters, scalars and curves
+// bit for bit, and leaves out (and names) only the tables above the size limit.
+TEST(ResultExport, CompactCopyKeepsScalarsAndCurvesAndNamesWhatItLeavesOut) {
+    const fs::path dir = temp_dir("compact");
+    const ParameterSet params = ParameterSet::load(write(dir / "demo.toml", kExperiment), Scale::Paper);
+    Result result;
+    Table& curve = result.table("curve", "a small curve");
+    curve.add("t", "s").values = {0.0, 0.5, 1.0};
+    curve.add("K", "J").values = {1.0, 0.25, 1.0 / 3.0};
+    Table& snap = result.table("snapshot_0", "positions");
+    snap.add("x", "m").values = std::vector<double>(600, 0.1);
+    snap.add("y", "m").values = std::vector<double>(600, 0.2);
+    result.scalar("slope", -0.9731, "1", "fitted slope");
+    Provenance prov{"demo", "p", "file text", Scale::Paper, 7, 12.5, 2};
+    write_result_h5(dir / "data.h5", prov, params, result);
+    const auto omitted = write_compact_result_h5(dir / "data.h5", dir / "small.h5", 1000);
+    EXPECT_EQ(omitted, std::vector<std::string>{"snapshot_0"});
+    const H5File f = H5File::open((dir / "small.h5").string());
+    EXPECT_EQ(f.read_string_attr("experiment"), "demo");
+    EXPECT_EQ(f.read_string_attr("seed"), "7");
+    EXPECT_EQ(f.read_string_attr("scale"), "paper");
+    EXPECT_EQ(f.read_long_attr("schema_version"), 1);
+    EXPECT_DOUBLE_EQ(f.read_double_attr("wall_time_s"), 12.5);
+    EXPECT_EQ(f.read_dataset("scalars/slope"), std::vector<double>{-0.9731});
+    EXPECT_EQ(f.read_dataset("tables/curve/K"), (std::vector<double>{1.0, 0.25, 1.0 / 3.0}));
+    EXPECT_EQ(f.read_dataset("parameters/n"), std::vector<double>{100.0});
+    EXPECT_FALSE(f.has("tables/snapshot_0"));
+    EXPECT_NE(f.read_string_attr("omitted_tables").find("snapshot_0 (1200 values)"), std::string::npos);
+    const H5Object curve_group = f.open_group("tables").open_group("curve");
+    EXPECT_EQ(curve_group.read_string_attr("description"), "a small curve");
+    EXPECT_LT(fs::file_size(dir / "small.h5"), fs::file_size(dir / "data.h5"));
     fs::remove_all(dir);
 }
 
