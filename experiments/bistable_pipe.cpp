@@ -226,6 +226,10 @@ Result run(const RunContext& ctx) {
             slow_link, fast_link;
         double e_lowest_slow = NAN;
         int fast_steady = 0;
+        // Normal regime below v_crit, emergency-brake regime above: v_crit ≈ 4 m/s at 2000 N/m
+        // (Fig. 3) and ∝ sqrt(k_N) (brake-failure claim v_crit_sqrt_kN).
+        const double v_crit = 4.0 * std::sqrt(ks[ki] / 2000.0);
+        int bistable = 0, above_085 = 0;
         for (std::size_t ei = 0; ei < es.size(); ++ei) {
             const RunResult& slow = results[(ki * es.size() + ei) * 2];
             const RunResult& fast = results[(ki * es.size() + ei) * 2 + 1];
@@ -268,6 +272,10 @@ Result run(const RunContext& ctx) {
             }
             if (slow.steady) e_lowest_slow = std::isnan(e_lowest_slow) ? es[ei] : std::min(e_lowest_slow, es[ei]);
             fast_steady += fast.steady;
+            if (es[ei] > 0.85) {
+                ++above_085;
+                bistable += slow.steady && -slow.v_mean < v_crit && fast.steady && -fast.v_mean >= v_crit;
+            }
         }
         t.add("e_N", "1").values = e_col;
         t.add("v_slow", "m/s").values = slow_v;
@@ -290,6 +298,11 @@ Result run(const RunContext& ctx) {
                  "steady speed of the slow start at the largest e_N");
         r.scalar(std::string("v_fast_top_") + kt, top_fast.steady ? -top_fast.v_mean : NAN, "m/s",
                  "steady speed of the fast start at the largest e_N");
+        r.scalar(std::string("normal_branch_top_") + kt, top_slow.steady && -top_slow.v_mean < v_crit ? 1.0 : 0.0, "1",
+                 "1 if the slow start at the largest e_N reaches a steady state below v_crit = 4 m/s sqrt(k_N/2000 N/m)");
+        r.scalar(std::string("bistable_fraction_") + kt, above_085 ? double(bistable) / above_085 : NAN, "1",
+                 "fraction of the e_N > 0.85 of the grid where the slow start reaches a steady state below v_crit and "
+                 "the fast start one above (two coexisting steady states)");
         r.scalar(std::string("impact_link_top_") + kt, slow_link.back(), "1",
                  "Fig. 4-type impact Δv_y at the measured impact velocities over the pipe's Δv_y (slow start, largest e_N)");
     }

@@ -94,6 +94,11 @@ int list_experiments() {
 
 // One check table per experiment as it finishes, then the totals.
 int run_all(const RunOptions& base) {
+    // Bad input anywhere stops `all` before the first run, not after an hour of runs.
+    for (const auto& e : experiment_registry()) {
+        resolve_parameters(e.name, base);
+        load_claims(project_root() / "expected" / (e.name + ".toml"), e.name);
+    }
     int rc = 0;
     VerdictCounts totals;
     for (const auto& e : experiment_registry()) rc |= run_experiment(e.name, base, &totals);

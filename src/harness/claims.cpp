@@ -211,7 +211,8 @@ std::string format_claim_table(const std::string& experiment, const std::vector<
     }
     if (explained)
         os << "  (" << explained << " known deviation" << (explained == 1 ? "" : "s")
-           << ": the study behind each and its band are in expected/; `granrepro check --explain` prints them)\n";
+           << ": the study behind each and its band are in expected/; `granrepro check "
+           << experiment.substr(0, experiment.find(' ')) << " --explain` prints them)\n";
     return os.str();
 }
 

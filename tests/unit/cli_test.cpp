@@ -233,7 +233,8 @@ TEST(Cli, SameSeedGivesBitIdenticalDatasets) {
 TEST(Cli, CoolingResumesBitIdentical) {
     const fs::path a = fresh("cool-a"), b = fresh("cool-b");
     const std::string args = "cooling --scale quick --set n_side=30 ";
-    ASSERT_EQ(run(args + "--quiet --out " + a.string()).code, 0);
+    // A reduced run: some of its claims fail (exit 1); the datasets are what is compared.
+    ASSERT_LE(run(args + "--quiet --out " + a.string()).code, 1);
     const Outcome killed =
         run(args + "--quiet --checkpoint-interval 0 --threads 2 --out " + b.string(),
             "GRANREPRO_INTERRUPT_AFTER_CHECKPOINTS=3");
@@ -244,7 +245,7 @@ TEST(Cli, CoolingResumesBitIdentical) {
         checkpoints += e.path().extension() == ".h5";
     EXPECT_EQ(checkpoints, 2) << "one per method";
     const Outcome resumed = run(args + "--checkpoint-interval 0 --out " + b.string());
-    ASSERT_EQ(resumed.code, 0) << resumed.err;
+    ASSERT_LE(resumed.code, 1) << resumed.err;
     EXPECT_NE(resumed.err.find("resuming"), std::string::npos) << resumed.err;
     EXPECT_FALSE(fs::exists(b / ".cooling.checkpoint"));
     const H5File fa = H5File::open((a / "cooling" / "data.h5").string());
