@@ -168,6 +168,16 @@ TEST(Cli, FailingClaimExitsOneAndBandlessDeviationIsBadInput) {
     fs::remove_all(out);
 }
 
+TEST(Cli, HelpDocumentsTheExitCodes) {
+    for (const char* sub : {"", "all ", "figure ", "check ", "brake-failure "}) {
+        std::string text;
+        EXPECT_EQ(run_capture(std::string(sub) + "--help", text).code, 0);
+        EXPECT_NE(text.find("Exit codes: 0 every claim PASS"), std::string::npos) << sub;
+        EXPECT_NE(text.find("1 a claim FAILed"), std::string::npos) << sub;
+        EXPECT_NE(text.find("2 bad input"), std::string::npos) << sub;
+    }
+}
+
 // check --all checks every experiment that has results, names the missing ones and exits 1
 // unless --missing-ok; one table each and a totals line.
 TEST(Cli, CheckAllChecksWhatIsThereAndNamesTheMissing) {
