@@ -401,8 +401,11 @@ void report_k(Result& r, const ParameterSet& p, const PipeSpec& base, double k, 
                 if (std::isfinite(c.slope)) min_slope = std::min(min_slope, c.slope);
             }
         }
-        const RunResult& slow = results[(ki * es.size() + ei) * 2];
-        if (slow.outcome == kSteady) e_lowest_slow = std::isnan(e_lowest_slow) ? es[ei] : std::min(e_lowest_slow, es[ei]);
+        // The slow branch is the normal regime: a slow start that settles above v_crit has joined
+        // the fast branch and does not count.
+        const double v_slow = cols[0][0].back();
+        if (v_slow < p.real("v_crit_2000") * std::sqrt(k / 2000.0))
+            e_lowest_slow = std::isnan(e_lowest_slow) ? es[ei] : std::min(e_lowest_slow, es[ei]);
         fast_steady += results[(ki * es.size() + ei) * 2 + 1].outcome == kSteady;
     }
     t.add("e_N", "1").values = es;
@@ -413,25 +416,33 @@ void report_k(Result& r, const ParameterSet& p, const PipeSpec& base, double k, 
         for (int c = 0; c < 12; ++c)
             t.add(std::string(names[c]) + (f ? "_fast" : "_slow"), units[c]).values = cols[f][c];
     r.scalar(std::string("slow_branch_lowest_eN_") + kt, e_lowest_slow, "1",
-             "smallest e_N whose slow start reached a steady state");
+             "smallest e_N whose slow start reached a steady state in the normal regime (below v_crit)");
     r.scalar(std::string("fast_branch_fraction_") + kt, double(fast_steady) / double(es.size()), "1",
              "fraction of e_N values whose fast start reached a steady state");
     r.scalar(std::string("v_slow_top_") + kt, cols[0][0].back(), "m/s", "steady speed of the slow start at the largest e_N");
     r.scalar(std::string("v_fast_top_") + kt, cols[1][0].back(), "m/s", "steady speed of the fast start at the largest e_N");
-    // Bistability: e_N > 0.85 with a slow state in the normal regime and a fast state above it.
-    int bistable = 0;
+    // Bistability: at the e_N > 0.85 of the grid, the slow start reaches a steady state in the
+    // normal regime (below v_crit) and the fast start one above it: two coexisting steady states.
+    const double v_crit = p.real("v_crit_2000") * std::sqrt(k / 2000.0);
+    int bistable = 0, above_085 = 0;
     double sx_ratio = NAN;
     for (std::size_t ei = 0; ei < es.size(); ++ei) {
-        if (!(es[ei] > 0.85) || std::isnan(cols[0][0][ei]) || std::isnan(cols[1][0][ei])) continue;
-        if (cols[1][0][ei] < 2 * cols[0][0][ei]) continue; // the same state reached twice
+        if (!(es[ei] > 0.85)) continue;
+        ++above_085;
+        if (!(cols[0][0][ei] < v_crit && cols[1][0][ei] >= v_crit)) continue; // NaN compares false
         ++bistable;
         sx_ratio = cols[1][5][ei] / cols[0][5][ei];
     }
+    r.scalar(std::string("bistable_fraction_") + kt, above_085 ? double(bistable) / above_085 : NAN, "1",
+             "fraction of the e_N > 0.85 of the grid where a slow (below v_crit) and a fast (above) steady state coexist");
+    r.scalar(std::string("bistable_sigma_vx_ratio_") + kt, sx_ratio, "1",
+             "σ_vx of the fast over the slow state at the largest bistable e_N");
+    r.scalar(std::string("normal_branch_top_") + kt, cols[0][0].back() < v_crit ? 1.0 : 0.0, "1",
+             "1 if the slow start at the largest e_N reaches a steady state below v_crit = v_crit_2000 sqrt(k_N/2000 N/m)");
     // Which regime each branch is in: states faster than v_crit(k_N) (Fig. 3's maximum, scaled
     // with sqrt(k_N) by Eq. 8) are counted as the fast branch whichever start reached them. Fig. 5
     // says the fast branch is the emergency brake (>= 2 wall grains per impact), the slow one the
     // normal regime. And the paper's construction against the measured speed, per branch.
-    const double v_crit = p.real("v_crit_2000") * std::sqrt(k / 2000.0);
     for (int b = 0; b < 2; ++b) {
         double contacts = 0, ratio = 0;
         int nc = 0, nr = 0;
@@ -491,6 +502,23 @@ Result run(const RunContext& ctx) {
     for (std::size_t ki = 0; ki < ks.size(); ++ki)
         report_k(r, p, base, ks[ki], ki, results, worst_balance, steady_count, min_slope);
     r.scalar("steady_runs", steady_count, "1", "runs that reached a steady state");
+    // Softer grains brake earlier: the k_N = 200 fast branch against the k_N = 2000 one at the same
+    // e_N (geometric mean of the speed ratio over the e_N where both fast starts settled).
+    const auto k_lo = std::find(ks.begin(), ks.end(), 200.0), k_mid = std::find(ks.begin(), ks.end(), 2000.0);
+    if (k_lo != ks.end() && k_mid != ks.end()) {
+        const std::size_t a = std::size_t(k_lo - ks.begin()), b = std::size_t(k_mid - ks.begin());
+        double lr = 0;
+        int nr = 0;
+        for (std::size_t ei = 0; ei < es.size(); ++ei) {
+            const RunResult& lo = results[(a * es.size() + ei) * 2 + 1];
+            const RunResult& mid = results[(b * es.size() + ei) * 2 + 1];
+            if (lo.outcome != kSteady || mid.outcome != kSteady) continue;
+            lr += std::log(lo.v_mean / mid.v_mean);
+            ++nr;
+        }
+        r.scalar("fast_branch_k200_over_k2000", nr ? std::exp(lr / nr) : NAN, "1",
+                 "geometric mean of v_fast(k_N = 200) / v_fast(k_N = 2000) over the e_N where both settled");
+    }
     r.scalar("eq9_worst_deviation", steady_count ? worst_balance : NAN, "1",
              "largest |ṅ Δv_y / g - 1| over steady runs (Eq. 9)");
     r.scalar("impact_slope_min", std::isfinite(min_slope) ? min_slope : NAN, "s",

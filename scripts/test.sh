@@ -1,13 +1,48 @@
 #!/usr/bin/env bash
-# The test job: install dependencies, build (Release) and run every ctest label (unit,
-# validation, repro), then rebuild with AddressSanitizer + UBSan and run the unit tests again.
+# The test job: install dependencies, build (Release) into build-test/ with the tests, check that
+# ctest sees every kind of test, run every ctest label (unit, validation, repro; repro includes
+# the re-check of the committed paper-scale results and the gnuplot-warning check of every
+# figure), then rebuild into build-asan/ with AddressSanitizer + UBSan and run the unit tests again.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh
 jobs=$(nproc)
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release > /dev/null
-cmake --build build -j"$jobs"
-(cd build && ctest -j"$jobs" --output-on-failure)
-cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=Debug -DGRANREPRO_SANITIZE=ON > /dev/null
-cmake --build build-asan -j"$jobs" --target unit_tests
-(cd build-asan && ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 ctest -j"$jobs" -L unit --output-on-failure)
+
+# At least this many tests per label (the counts when this was written; they only grow). A
+# configuration that loses tests (e.g. GRANREPRO_TESTS=OFF, a failed gtest discovery) fails here
+# instead of passing with "No tests were found".
+min_unit=138
+min_validation=22
+min_repro=25
+
+count() { (cd "$1" && ctest -N -L "^$2\$" | sed -n 's/^Total Tests: //p'); }
+require_tests() {
+  local dir=$1 label=$2 min=$3 n
+  n=$(count "$dir" "$label")
+  if ((${n:-0} < min)); then
+    echo "test.sh: $dir has ${n:-0} '$label' tests, expected at least $min" >&2
+    exit 1
+  fi
+  echo "test.sh: $dir: $n $label tests"
+}
+
+build() { # folder, build type, target ("" = all), more cmake options...
+  local dir=$1 type=$2 target=$3
+  shift 3
+  cmake -S . -B "$dir" -DCMAKE_BUILD_TYPE="$type" -DGRANREPRO_TESTS=ON "$@" > /dev/null
+  if ! cmake --build "$dir" -j"$jobs" ${target:+--target "$target"} > "$dir/build.log"; then
+    tail -n 40 "$dir/build.log" >&2
+    exit 1
+  fi
+}
+
+build build-test Release ""
+require_tests build-test unit "$min_unit"
+require_tests build-test validation "$min_validation"
+require_tests build-test repro "$min_repro"
+(cd build-test && ctest -j"$jobs" --no-tests=error --output-on-failure)
+
+build build-asan Debug unit_tests -DGRANREPRO_SANITIZE=ON
+require_tests build-asan unit "$min_unit"
+(cd build-asan && ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
+   ctest -j"$jobs" -L '^unit$' --no-tests=error --output-on-failure)

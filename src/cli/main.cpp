@@ -1,5 +1,7 @@
 // granrepro: reproduce the figures of Luding (1998) and Schäfer & Wolf (1995) and check the
-// papers' claims. Exit codes: 0 success, 1 a claim failed or a run failed, 2 bad input.
+// papers' claims. Exit codes: 0 every claim passed (or is a known deviation inside its band),
+// 1 a claim failed (or a run or a figure failed, or check --all found experiments without
+// results), 2 bad input.
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <iostream>
@@ -13,6 +15,11 @@
 using namespace granrepro;
 
 namespace {
+
+const char* const kExitCodes =
+    "\nExit codes: 0 every claim PASS (or DEVIATION: a known deviation inside its own band);\n"
+    "1 a claim FAILed (also: a run failed, or check --all / plot --all found experiments without\n"
+    "results); 2 bad input (one line on stderr naming the parameter and what is allowed).";
 
 struct CommonFlags {
     std::string scale = "quick";
@@ -85,17 +92,50 @@ int list_experiments() {
     return 0;
 }
 
+// One check table per experiment as it finishes, then the totals.
 int run_all(const RunOptions& base) {
-    for (const auto& e : experiment_registry()) run_experiment(e.name, base);
+    // Bad input anywhere stops `all` before the first run, not after an hour of runs.
+    for (const auto& e : experiment_registry()) {
+        resolve_parameters(e.name, base);
+        load_claims(project_root() / "expected" / (e.name + ".toml"), e.name);
+    }
     int rc = 0;
-    for (const auto& e : experiment_registry()) rc |= check_experiment(e.name, base.out);
+    VerdictCounts totals;
+    for (const auto& e : experiment_registry()) rc |= run_experiment(e.name, base, &totals);
+    std::printf("totals: %s\n", totals.text().c_str());
+    return rc;
+}
+
+// plot --all: every experiment with results; the missing ones are listed and fail.
+int plot_all_experiments(const std::filesystem::path& out, const std::vector<std::string>& figures, bool strict) {
+    for (const auto& f : figures) experiment_of_figure(f); // an unknown figure is bad input
+    int rc = 0;
+    std::string missing;
+    for (const auto& e : experiment_registry()) {
+        std::vector<std::string> mine;
+        for (const auto& f : figures)
+            if (experiment_of_figure(f) == e.name) mine.push_back(f);
+        if (!figures.empty() && mine.empty()) continue;
+        if (!std::filesystem::exists(out / e.name / "tables")) {
+            missing += (missing.empty() ? "" : ", ") + e.name;
+            continue;
+        }
+        rc |= plot_experiment(e.name, out, mine, strict);
+    }
+    if (!missing.empty()) {
+        std::fprintf(stderr, "granrepro: plot --all: no results in %s for: %s\n", out.c_str(), missing.c_str());
+        rc = 1;
+    }
     return rc;
 }
 
 } // namespace
 
 int main(int argc, char** argv) {
+    // Whole lines on stdout even when it is a file: stderr messages then never split a table row.
+    std::setvbuf(stdout, nullptr, _IOLBF, 0);
     CLI::App app{"granrepro: reproduce Luding (1998) and Schäfer & Wolf (1995), figure by figure"};
+    app.footer(kExitCodes);
     app.require_subcommand(1);
     app.set_version_flag("--version", std::string(code_version()));
     app.failure_message(CLI::FailureMessage::simple);
@@ -113,7 +153,7 @@ int main(int argc, char** argv) {
         }
         CLI::App* sub = app.add_subcommand(e.name, description);
         common.add_to(sub);
-        sub->footer([name = e.name] { return parameter_help(name); });
+        sub->footer([name = e.name] { return parameter_help(name) + kExitCodes; });
         sub->callback([&, name = e.name] { rc = run_experiment(name, common.options()); });
     }
 
@@ -121,6 +161,7 @@ int main(int argc, char** argv) {
     CLI::App* fig = app.add_subcommand("figure", "run what one figure needs and render only it");
     fig->add_option("id", figure_id, "figure id, e.g. schaefer95-fig3 (see `granrepro list`)")->required();
     common.add_to(fig);
+    fig->footer(kExitCodes);
     fig->callback([&] {
         RunOptions o = common.options();
         o.figures = {figure_id};
@@ -128,17 +169,26 @@ int main(int argc, char** argv) {
     });
 
     std::string check_name;
-    bool check_all = false;
+    bool check_every = false;
+    CheckOptions check_opt;
     CLI::App* check = app.add_subcommand("check", "compare results with the papers' claims (expected/)");
+    check->footer(kExitCodes);
     check->add_option("experiment", check_name, "experiment to check");
-    check->add_flag("--all", check_all, "check every experiment");
-    check->add_option("--out", common.out, "output directory")->capture_default_str();
+    check->add_flag("--all", check_every,
+                    "check every experiment that has results in --out; list those that have none (exit 1)");
+    check->add_flag("--missing-ok", check_opt.missing_ok,
+                    "with --all: experiments without results are listed but do not fail the check");
+    check->add_flag("--explain", check_opt.explain,
+                    "print each known deviation's explanation and where its band comes from");
+    check->add_option("--out", common.out, "output directory (e.g. paper_figures for the committed paper-scale results)")
+        ->capture_default_str();
     check->callback([&] {
-        if (check_all == !check_name.empty()) throw InputError("check: give one experiment or --all");
-        if (check_all) {
-            for (const auto& e : experiment_registry()) rc |= check_experiment(e.name, common.out);
+        if (check_every == !check_name.empty()) throw InputError("check: give one experiment or --all");
+        if (check_opt.missing_ok && !check_every) throw InputError("check: --missing-ok needs --all");
+        if (check_every) {
+            rc = check_all(common.out, check_opt);
         } else {
-            rc = check_experiment(check_name, common.out);
+            rc = check_experiment(check_name, common.out, check_opt);
         }
     });
 
@@ -146,21 +196,54 @@ int main(int argc, char** argv) {
     std::vector<std::string> plot_figures;
     bool plot_all = false;
     CLI::App* plot = app.add_subcommand("plot", "re-render figures from existing results");
+    plot->footer(kExitCodes);
     plot->add_option("experiment", plot_name, "experiment whose figures to render");
     plot->add_flag("--all", plot_all, "every experiment");
     plot->add_option("--figure", plot_figures, "only this figure (repeatable)");
+    bool plot_strict = false;
+    plot->add_flag("--strict", plot_strict, "exit 1 if gnuplot prints any warning for a figure");
     plot->add_option("--out", common.out, "output directory")->capture_default_str();
     plot->callback([&] {
         if (plot_all == !plot_name.empty()) throw InputError("plot: give one experiment or --all");
         if (plot_all) {
-            for (const auto& e : experiment_registry()) rc |= plot_experiment(e.name, common.out, plot_figures);
+            rc = plot_all_experiments(common.out, plot_figures, plot_strict);
         } else {
-            rc = plot_experiment(plot_name, common.out, plot_figures);
+            rc = plot_experiment(plot_name, common.out, plot_figures, plot_strict);
         }
+    });
+
+    std::string export_name;
+    bool export_every = false;
+    std::string export_to;
+    std::size_t export_max = 50000;
+    CLI::App* exp_cmd = app.add_subcommand(
+        "export", "copy results (summary.json and a compact data.h5 without snapshots) to another directory");
+    exp_cmd->footer(kExitCodes);
+    exp_cmd->add_option("experiment", export_name, "experiment to export");
+    exp_cmd->add_flag("--all", export_every, "every experiment that has results in --out");
+    exp_cmd->add_option("--out", common.out, "output directory of the runs")->capture_default_str();
+    exp_cmd->add_option("--to", export_to, "destination, e.g. paper_figures (files go to TO/<experiment>/)")->required();
+    exp_cmd->add_option("--max-table-values", export_max, "tables with more values in all are left out (snapshots)")
+        ->capture_default_str()
+        ->check(CLI::Range(std::size_t(1), std::size_t(1) << 40));
+    exp_cmd->callback([&] {
+        if (export_every == !export_name.empty()) throw InputError("export: give one experiment or --all");
+        if (!export_every) {
+            rc = export_experiment(export_name, common.out, export_to, export_max);
+            return;
+        }
+        std::string missing;
+        for (const auto& e : experiment_registry()) {
+            if (has_results(e.name, common.out)) rc |= export_experiment(e.name, common.out, export_to, export_max);
+            else missing += (missing.empty() ? "" : ", ") + e.name;
+        }
+        if (!missing.empty())
+            std::fprintf(stderr, "granrepro: export --all: no results in %s for: %s\n", common.out.c_str(), missing.c_str());
     });
 
     CLI::App* all = app.add_subcommand("all", "run every experiment, render every figure, check every claim");
     common.add_to(all, false);
+    all->footer(kExitCodes);
     all->callback([&] { rc = run_all(common.options()); });
 
     std::string bench_target;

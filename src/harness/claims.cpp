@@ -1,5 +1,6 @@
 #include "harness/claims.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <toml.hpp>
@@ -24,7 +25,57 @@ std::string num(double x) {
     os << x;
     return os.str();
 }
+
+std::string band_text(const Band& b) { return "[" + num(b.lo) + ", " + num(b.hi) + "]"; }
+
+const char* const kScaleNames[] = {"quick", "paper"};
+
+double number(const toml::value& v) {
+    if (v.is_integer()) return double(v.as_integer());
+    return toml::get<double>(v);
+}
+
+// [lo, hi] with lo <= hi (inf and -inf allowed).
+Band parse_band(const toml::value& v, const std::string& where) {
+    if (!v.is_array() || v.as_array().size() != 2)
+        throw InputError(where + " must be [lo, hi]");
+    const auto& a = v.as_array();
+    if (!(a[0].is_integer() || a[0].is_floating()) || !(a[1].is_integer() || a[1].is_floating()))
+        throw InputError(where + " must be [lo, hi] with two numbers (inf and -inf allowed)");
+    const Band b{number(a[0]), number(a[1])};
+    if (std::isnan(b.lo) || std::isnan(b.hi) || b.lo > b.hi)
+        throw InputError(where + " must be [lo, hi] with lo <= hi");
+    return b;
+}
 } // namespace
+
+bool Claim::applies_to(Scale scale) const {
+    return scales.empty() || std::find(scales.begin(), scales.end(), to_string(scale)) != scales.end();
+}
+
+std::optional<Band> Claim::band_for(Scale scale) const {
+    if (known_deviation.empty()) return std::nullopt;
+    if (deviation_band) return deviation_band;
+    const auto it = deviation_band_by_scale.find(to_string(scale));
+    if (it == deviation_band_by_scale.end()) return std::nullopt;
+    return it->second;
+}
+
+void VerdictCounts::add(const std::vector<ClaimResult>& results) {
+    for (const auto& r : results) {
+        switch (r.verdict) {
+        case Verdict::Pass: ++pass; break;
+        case Verdict::Fail: ++fail; break;
+        case Verdict::KnownDeviation: ++deviation; break;
+        case Verdict::Skipped: ++skipped; break;
+        }
+    }
+}
+
+std::string VerdictCounts::text() const {
+    return std::to_string(pass) + " PASS, " + std::to_string(fail) + " FAIL, " + std::to_string(deviation) +
+           " DEVIATION, " + std::to_string(skipped) + " skipped";
+}
 
 std::vector<Claim> load_claims(const std::filesystem::path& file, const std::string& experiment) {
     const std::string where = file.string();
@@ -42,8 +93,7 @@ std::vector<Claim> load_claims(const std::filesystem::path& file, const std::str
             k.measured = toml::find<std::string>(c, "measured");
             auto opt = [&](const char* key) -> std::optional<double> {
                 if (!c.contains(key)) return std::nullopt;
-                const auto& v = c.at(key);
-                return v.is_integer() ? double(v.as_integer()) : toml::get<double>(v);
+                return number(c.at(key));
             };
             k.paper = opt("paper");
             k.rel_tol = opt("rel_tol");
@@ -53,16 +103,52 @@ std::vector<Claim> load_claims(const std::filesystem::path& file, const std::str
             if (c.contains("tolerance_reason")) k.tolerance_reason = toml::find<std::string>(c, "tolerance_reason");
             if (c.contains("known_deviation")) k.known_deviation = toml::find<std::string>(c, "known_deviation");
             if (c.contains("scales")) k.scales = toml::find<std::vector<std::string>>(c, "scales");
+            const std::string claim_where = where + ": claim " + k.id;
+            auto check_scale = [&](const std::string& s, const std::string& key) {
+                if (s != "quick" && s != "paper")
+                    throw InputError(claim_where + ": " + key + " names scale '" + s + "'; allowed: quick, paper");
+            };
+            for (const auto& s : k.scales) check_scale(s, "scales");
             const bool value_claim = k.paper && (k.rel_tol || k.abs_tol);
             const bool range_claim = k.min || k.max;
             if (!value_claim && !range_claim)
-                throw InputError(where + ": claim " + k.id + " needs paper with rel_tol/abs_tol, or min/max");
+                throw InputError(claim_where + " needs paper with rel_tol/abs_tol, or min/max");
             if (k.known_deviation.empty() && k.tolerance_reason.empty())
-                throw InputError(where + ": claim " + k.id + " needs a tolerance_reason");
+                throw InputError(claim_where + " needs a tolerance_reason");
+
+            if (c.contains("deviation_band")) {
+                const toml::value& b = c.at("deviation_band");
+                if (b.is_table()) {
+                    for (const auto& [scale, band] : b.as_table()) {
+                        check_scale(scale, "deviation_band");
+                        k.deviation_band_by_scale[scale] = parse_band(band, claim_where + ": deviation_band." + scale);
+                    }
+                } else {
+                    k.deviation_band = parse_band(
+                        b, claim_where + ": deviation_band (or { quick = [lo, hi], paper = [lo, hi] })");
+                }
+            }
+            if (c.contains("deviation_band_reason"))
+                k.deviation_band_reason = toml::find<std::string>(c, "deviation_band_reason");
+            const bool has_band = k.deviation_band || !k.deviation_band_by_scale.empty();
+            if (k.known_deviation.empty()) {
+                if (has_band || !k.deviation_band_reason.empty())
+                    throw InputError(claim_where + ": deviation_band belongs only to a claim with known_deviation");
+            } else {
+                // A known deviation is a measured result: it needs its own band at every scale
+                // where the claim applies, so that the deviation itself can still fail.
+                for (const char* scale : kScaleNames)
+                    if (k.applies_to(parse_scale(scale)) && !k.band_for(parse_scale(scale)))
+                        throw InputError(claim_where + ": known_deviation needs deviation_band for scale " + scale +
+                                         " (deviation_band = [lo, hi] or { quick = [lo, hi], paper = [lo, hi] })");
+                if (k.deviation_band_reason.empty())
+                    throw InputError(claim_where + ": known_deviation needs deviation_band_reason (where the band comes from)");
+            }
             claims.push_back(std::move(k));
         }
-    } catch (const InputError&) {
-        throw;
+    } catch (const InputError& e) {
+        if (std::string(e.what()).rfind(where, 0) == 0) throw;
+        throw InputError(where + ": " + e.what());
     } catch (const std::exception& e) {
         std::string msg = e.what();
         throw InputError(where + ": corrupt expected-claims file: " + msg.substr(0, msg.find('\n')));
@@ -83,11 +169,12 @@ std::vector<ClaimResult> evaluate_claims(const std::vector<Claim>& claims, const
         if (c.rel_tol) r.tolerance_text = "rel " + num(*c.rel_tol);
         else if (c.abs_tol) r.tolerance_text = "abs " + num(*c.abs_tol);
         else r.tolerance_text = "range";
+        const std::optional<Band> band = c.band_for(scale);
+        if (band) r.band_text = band_text(*band);
         if (scalars.contains(c.measured) && scalars[c.measured].is_number())
             r.measured = scalars[c.measured].get<double>();
-        const bool applies = c.scales.empty() ||
-                             std::find(c.scales.begin(), c.scales.end(), to_string(scale)) != c.scales.end();
-        bool ok = r.measured && std::isfinite(*r.measured);
+        const bool finite = r.measured && std::isfinite(*r.measured);
+        bool ok = finite;
         if (ok && c.paper && (c.rel_tol || c.abs_tol)) {
             // A bound of exactly one grid step (0.8 against 0.7 +- 0.1) must not fail by round-off
             // (|0.8 - 0.7| = 0.10000000000000009): compare with a relative slack of 1e-12.
@@ -96,9 +183,10 @@ std::vector<ClaimResult> evaluate_claims(const std::vector<Claim>& claims, const
         }
         if (ok && c.min) ok = *r.measured >= *c.min;
         if (ok && c.max) ok = *r.measured <= *c.max;
-        if (!applies) r.verdict = Verdict::Skipped;
-        else if (!c.known_deviation.empty()) r.verdict = ok ? Verdict::Pass : Verdict::KnownDeviation;
-        else r.verdict = ok ? Verdict::Pass : Verdict::Fail;
+        if (!c.applies_to(scale)) r.verdict = Verdict::Skipped;
+        else if (ok) r.verdict = Verdict::Pass;
+        else if (finite && band && band->contains(*r.measured)) r.verdict = Verdict::KnownDeviation;
+        else r.verdict = Verdict::Fail;
         out.push_back(std::move(r));
     }
     return out;
@@ -111,13 +199,30 @@ std::string format_claim_table(const std::string& experiment, const std::vector<
         return s + std::string(w - s.size(), ' ');
     };
     os << "check " << experiment << "\n";
-    os << "  " << pad("claim", 36) << pad("paper / relation", 24) << pad("measured", 12) << pad("tolerance", 11)
-       << "verdict\n";
+    os << "  " << pad("claim", 34) << pad("paper / relation", 22) << pad("our band (deviation)", 22)
+       << pad("measured", 11) << pad("tolerance", 11) << "verdict\n";
+    int explained = 0;
     for (const auto& r : results) {
-        os << "  " << pad(r.claim.id, 36) << pad(r.expected_text, 24)
-           << pad(r.measured ? num(*r.measured) : "missing", 12) << pad(r.tolerance_text, 11)
-           << to_string(r.verdict) << "\n";
-        if (r.verdict == Verdict::KnownDeviation) os << "      known deviation: " << r.claim.known_deviation << "\n";
+        std::string measured = r.measured ? num(*r.measured) : "missing";
+        if (r.measured && !std::isfinite(*r.measured)) measured = "non-finite";
+        os << "  " << pad(r.claim.id, 34) << pad(r.expected_text, 22) << pad(r.band_text, 22) << pad(measured, 11)
+           << pad(r.tolerance_text, 11) << to_string(r.verdict) << "\n";
+        explained += !r.claim.known_deviation.empty() && r.verdict != Verdict::Pass && r.verdict != Verdict::Skipped;
+    }
+    if (explained)
+        os << "  (" << explained << " known deviation" << (explained == 1 ? "" : "s")
+           << ": the study behind each and its band are in expected/; `granrepro check "
+           << experiment.substr(0, experiment.find(' ')) << " --explain` prints them)\n";
+    return os.str();
+}
+
+std::string format_deviation_explanations(const std::vector<ClaimResult>& results) {
+    std::ostringstream os;
+    for (const auto& r : results) {
+        if (r.claim.known_deviation.empty() || r.verdict == Verdict::Pass || r.verdict == Verdict::Skipped) continue;
+        os << "  " << r.claim.id << " (" << to_string(r.verdict) << ", band " << r.band_text << "):\n"
+           << "      known deviation: " << r.claim.known_deviation << "\n"
+           << "      band: " << r.claim.deviation_band_reason << "\n";
     }
     return os.str();
 }
@@ -132,9 +237,13 @@ nlohmann::json claims_to_json(const std::vector<ClaimResult>& results) {
         j["expected"] = r.expected_text;
         j["tolerance"] = r.tolerance_text;
         j["tolerance_reason"] = r.claim.tolerance_reason;
-        j["measured"] = r.measured ? nlohmann::json(*r.measured) : nlohmann::json();
+        j["measured"] = r.measured && std::isfinite(*r.measured) ? nlohmann::json(*r.measured) : nlohmann::json();
         j["verdict"] = to_string(r.verdict);
-        if (!r.claim.known_deviation.empty()) j["known_deviation"] = r.claim.known_deviation;
+        if (!r.claim.known_deviation.empty()) {
+            j["known_deviation"] = r.claim.known_deviation;
+            j["deviation_band"] = r.band_text; // text: JSON has no infinity
+            j["deviation_band_reason"] = r.claim.deviation_band_reason;
+        }
         arr.push_back(j);
     }
     return arr;

@@ -1,9 +1,16 @@
 // The papers' claims (expected/<experiment>.toml) and their verdicts against a run's scalars.
 // A claim is either a value with a relative or absolute tolerance, or a range [min, max] for a
 // relation ("slope between -1.1 and -0.9"). Every tolerance carries its justification. A claim we
-// cannot reproduce stays in the file as a known deviation with its reason: it is shown, not hidden.
+// cannot reproduce stays in the file as a known deviation with its reason: it is shown, not hidden,
+// and it keeps a band of its own (deviation_band: the value we measure and its reproducible spread,
+// for every scale or per scale), so the deviation itself is guarded and can still fail.
+//
+// Verdicts: measured within the paper's tolerance -> PASS; else a known deviation whose measured
+// value lies in its band for the run's scale -> DEVIATION; else FAIL. A missing or non-finite
+// measurement FAILs every claim; a claim restricted (scales) to other scales is skipped.
 #pragma once
 #include <filesystem>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
@@ -13,14 +20,27 @@
 
 namespace granrepro {
 
+// A closed interval [lo, hi]; either end may be infinite.
+struct Band {
+    double lo = 0, hi = 0;
+    bool contains(double x) const { return x >= lo && x <= hi; }
+};
+
 struct Claim {
     std::string id, statement, source;
     std::string measured;        // name of the scalar in the run's summary
     std::optional<double> paper; // the paper's number, if it states one
     std::optional<double> rel_tol, abs_tol, min, max;
     std::string tolerance_reason;
-    std::string known_deviation; // non-empty: not reproduced, with the reason
+    std::string known_deviation;     // non-empty: not reproduced, with the reason
+    std::optional<Band> deviation_band;                  // our value and spread, every scale
+    std::map<std::string, Band> deviation_band_by_scale; // ... or per scale ("quick", "paper")
+    std::string deviation_band_reason;                   // where the band comes from
     std::vector<std::string> scales; // empty: every scale
+
+    bool applies_to(Scale scale) const;
+    // The known deviation's band at this scale (nullopt: no known deviation there).
+    std::optional<Band> band_for(Scale scale) const;
 };
 
 enum class Verdict { Pass, Fail, KnownDeviation, Skipped };
@@ -30,14 +50,25 @@ struct ClaimResult {
     Claim claim;
     std::optional<double> measured;
     Verdict verdict = Verdict::Fail;
-    std::string expected_text, tolerance_text;
+    std::string expected_text, band_text, tolerance_text;
 };
 
+struct VerdictCounts {
+    int pass = 0, fail = 0, deviation = 0, skipped = 0;
+    void add(const std::vector<ClaimResult>& results);
+    std::string text() const; // "N PASS, N FAIL, N DEVIATION, N skipped"
+};
+
+// Throws InputError naming the file, the claim and the key for a malformed claim, including a
+// known deviation without a band (or without its reason) at a scale where it applies.
 std::vector<Claim> load_claims(const std::filesystem::path& file, const std::string& experiment);
-// scalars: name -> value (NaN for a measurement that could not be made).
+// scalars: name -> value (null or NaN for a measurement that could not be made).
 std::vector<ClaimResult> evaluate_claims(const std::vector<Claim>& claims,
                                          const nlohmann::json& scalars, Scale scale);
+// One row per claim: the paper's value or relation beside our deviation band.
 std::string format_claim_table(const std::string& experiment, const std::vector<ClaimResult>& results);
+// The known-deviation texts and band reasons of the claims that are not PASS (`check --explain`).
+std::string format_deviation_explanations(const std::vector<ClaimResult>& results);
 nlohmann::json claims_to_json(const std::vector<ClaimResult>& results);
 bool all_pass(const std::vector<ClaimResult>& results); // known deviations and skips do not fail
 

@@ -7,8 +7,15 @@
 
 namespace granrepro {
 
-// Emits <run_dir>/<id>.gp and renders it in run_dir. Returns false (with a message on stderr) if
-// gnuplot is missing or fails; the data are still complete then.
-bool render_figure(const std::string& figure_id, const std::filesystem::path& run_dir);
+// Clean: gnuplot printed nothing. Warned: it rendered but printed something (our scripts print
+// nothing themselves, so anything is a warning such as "Skipping data file with no valid points");
+// <id>.gnuplot.log keeps it. Failed: gnuplot is missing or failed; the data are still complete.
+enum class RenderOutcome { Clean, Warned, Failed };
+
+// Emits <run_dir>/<id>.gp and renders it in run_dir; a warning or failure is reported on stderr
+// in one line naming the figure and the log (as it will be found in shown_dir, if given: a run
+// renders in its staging directory).
+RenderOutcome render_figure(const std::string& figure_id, const std::filesystem::path& run_dir,
+                            const std::filesystem::path& shown_dir = {});
 
 } // namespace granrepro

@@ -56,7 +56,7 @@ std::string read_text(const fs::path& p) {
 fs::path expected_file(const std::string& name) { return project_root() / "expected" / (name + ".toml"); }
 } // namespace
 
-int run_experiment(const std::string& name, const RunOptions& opt) {
+int run_experiment(const std::string& name, const RunOptions& opt, VerdictCounts* totals) {
     const Experiment& exp = find_experiment(name);
     const ExperimentInfo info = experiment_info(name);
     const ParameterSet params = resolve_parameters(name, opt);
@@ -69,7 +69,16 @@ int run_experiment(const std::string& name, const RunOptions& opt) {
     const auto claims = load_claims(expected_file(name), name);
     ensure_writable_directory(opt.out, "--out");
 
-    StagedDirectory stage(opt.out / name);
+    // The new directory replaces the old one: a figure run renders the requested figures and
+    // re-renders, from the new data, every other figure the old directory had.
+    const fs::path final_dir = opt.out / name;
+    std::vector<std::string> to_render;
+    for (const auto& f : info.figures)
+        if (opt.figures.empty() || std::find(opt.figures.begin(), opt.figures.end(), f.id) != opt.figures.end() ||
+            fs::exists(final_dir / (f.id + ".png")))
+            to_render.push_back(f.id);
+
+    StagedDirectory stage(final_dir);
     const fs::path work_dir = opt.out / ("." + name + ".checkpoint");
     fs::create_directories(work_dir);
     const RunContext ctx{params, opt.scale, opt.seed, opt.threads, opt.quiet, work_dir, opt.checkpoint_interval};
@@ -88,18 +97,20 @@ int run_experiment(const std::string& name, const RunOptions& opt) {
         std::ofstream out(stage.path() / "summary.json");
         out << summary.dump(2) << "\n";
     }
-    for (const auto& f : info.figures)
-        if (opt.figures.empty() || std::find(opt.figures.begin(), opt.figures.end(), f.id) != opt.figures.end())
-            render_figure(f.id, stage.path());
+    for (const auto& id : to_render) render_figure(id, stage.path(), final_dir);
     stage.commit();
     std::error_code ec;
     fs::remove_all(work_dir, ec);
-    if (!opt.quiet) std::fprintf(stderr, "%s: %.1f s, results in %s\n", name.c_str(), wall, (opt.out / name).c_str());
-    std::fputs(format_claim_table(name, verdicts).c_str(), stdout);
-    return 0;
+    if (!opt.quiet) std::fprintf(stderr, "%s: %.1f s, results in %s\n", name.c_str(), wall, final_dir.c_str());
+    std::fputs(format_claim_table(name + " (" + to_string(opt.scale) + " scale)", verdicts).c_str(), stdout);
+    std::fflush(stdout);
+    if (totals) totals->add(verdicts);
+    return all_pass(verdicts) ? 0 : 1;
 }
 
-int check_experiment(const std::string& name, const fs::path& out, bool quiet) {
+bool has_results(const std::string& name, const fs::path& out) { return fs::exists(out / name / "summary.json"); }
+
+int check_experiment(const std::string& name, const fs::path& out, const CheckOptions& opt, VerdictCounts* totals) {
     find_experiment(name);
     const auto claims = load_claims(expected_file(name), name);
     const fs::path summary_path = out / name / "summary.json";
@@ -112,21 +123,86 @@ int check_experiment(const std::string& name, const fs::path& out, bool quiet) {
     } catch (const std::exception&) {
         throw InputError(summary_path.string() + ": not valid JSON");
     }
+    if (!summary.contains("scalars") || !summary["scalars"].is_object())
+        throw InputError(summary_path.string() + ": has no 'scalars' object");
     const Scale scale = parse_scale(summary.value("scale", "quick"));
     const auto verdicts = evaluate_claims(claims, summary["scalars"], scale);
-    if (!quiet) std::fputs(format_claim_table(name + " (" + to_string(scale) + " scale)", verdicts).c_str(), stdout);
+    std::fputs(format_claim_table(name + " (" + to_string(scale) + " scale)", verdicts).c_str(), stdout);
+    if (opt.explain) std::fputs(format_deviation_explanations(verdicts).c_str(), stdout);
+    std::fflush(stdout);
+    if (totals) totals->add(verdicts);
     return all_pass(verdicts) ? 0 : 1;
 }
 
-int plot_experiment(const std::string& name, const fs::path& out, const std::vector<std::string>& figures) {
+int check_all(const fs::path& out, const CheckOptions& opt) {
+    int rc = 0;
+    VerdictCounts totals;
+    std::vector<std::string> missing;
+    for (const auto& e : experiment_registry()) {
+        if (!has_results(e.name, out)) {
+            missing.push_back(e.name);
+            continue;
+        }
+        rc |= check_experiment(e.name, out, opt, &totals);
+    }
+    std::printf("totals: %s\n", totals.text().c_str());
+    std::fflush(stdout);
+    if (!missing.empty()) {
+        std::string names;
+        for (const auto& m : missing) names += (names.empty() ? "" : ", ") + m;
+        std::fprintf(stderr, "granrepro: check --all: no results in %s for %zu experiment%s: %s%s\n", out.c_str(),
+                     missing.size(), missing.size() == 1 ? "" : "s", names.c_str(),
+                     opt.missing_ok ? " (--missing-ok: not a failure)" : " (run them first)");
+        if (!opt.missing_ok) rc = 1;
+    }
+    return rc;
+}
+
+int export_experiment(const std::string& name, const fs::path& out, const fs::path& to, std::size_t max_values) {
+    find_experiment(name);
+    const fs::path from = out / name;
+    if (!fs::exists(from / "summary.json") || !fs::exists(from / "data.h5"))
+        throw InputError("export " + name + ": no results in " + from.string() + "; run `granrepro " + name + "` first");
+    ensure_writable_directory(to, "--to");
+    const fs::path dest = to / name;
+    fs::create_directories(dest);
+    const fs::path tmp = dest / ".data.h5.partial";
+    std::vector<std::string> omitted;
+    try {
+        omitted = write_compact_result_h5(from / "data.h5", tmp, max_values);
+    } catch (const std::exception& e) {
+        std::error_code ec;
+        fs::remove(tmp, ec);
+        throw InputError("export " + name + ": " + (from / "data.h5").string() + ": " + e.what());
+    }
+    fs::rename(tmp, dest / "data.h5");
+    write_file_atomically(dest / "summary.json", read_text(from / "summary.json"));
+    std::string list;
+    for (const auto& o : omitted) list += (list.empty() ? "" : ", ") + o;
+    std::printf("export %s: %s -> %s (%.0f kB data.h5%s%s)\n", name.c_str(), from.c_str(), dest.c_str(),
+                double(fs::file_size(dest / "data.h5")) / 1024.0, omitted.empty() ? "" : "; left out: ", list.c_str());
+    return 0;
+}
+
+int plot_experiment(const std::string& name, const fs::path& out, const std::vector<std::string>& figures,
+                    bool strict) {
     const ExperimentInfo info = experiment_info(name);
+    std::string known;
+    for (const auto& f : info.figures) known += (known.empty() ? "" : ", ") + f.id;
+    for (const auto& id : figures) {
+        bool found = false;
+        for (const auto& f : info.figures) found = found || f.id == id;
+        if (!found) throw InputError("--figure " + id + " is not made by experiment " + name + "; it makes " + known);
+    }
     const fs::path dir = out / name;
     if (!fs::exists(dir / "tables"))
         throw InputError("plot " + name + ": no results in " + dir.string() + "; run `granrepro " + name + "` first");
     int failures = 0;
     for (const auto& f : info.figures)
-        if (figures.empty() || std::find(figures.begin(), figures.end(), f.id) != figures.end())
-            failures += render_figure(f.id, dir) ? 0 : 1;
+        if (figures.empty() || std::find(figures.begin(), figures.end(), f.id) != figures.end()) {
+            const RenderOutcome o = render_figure(f.id, dir);
+            failures += o == RenderOutcome::Failed || (strict && o == RenderOutcome::Warned);
+        }
     return failures ? 1 : 0;
 }
 

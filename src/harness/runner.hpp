@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "harness/claims.hpp"
 #include "harness/experiment.hpp"
 
 namespace granrepro {
@@ -28,13 +29,31 @@ std::string experiment_of_figure(const std::string& id);
 // by --help.
 ParameterSet resolve_parameters(const std::string& name, const RunOptions& opt);
 
-// Runs, writes, renders and prints the check table. Returns the process exit code (0; claims that
-// fail are reported by `check`, which exits 1).
-int run_experiment(const std::string& name, const RunOptions& opt);
+// Runs, writes, renders and prints the check table. Returns the process exit code: 0 if no claim
+// fails, 1 if one does. `figure` (opt.figures) renders the requested figures plus those the
+// previous run had rendered, so a figure run never deletes the experiment's other figures.
+// totals, if given, accumulates the verdicts.
+int run_experiment(const std::string& name, const RunOptions& opt, VerdictCounts* totals = nullptr);
+
+struct CheckOptions {
+    bool explain = false;     // print the known-deviation texts and band reasons under the table
+    bool missing_ok = false;  // check --all: list experiments without results but do not fail
+};
+// True if OUT/<name>/summary.json exists.
+bool has_results(const std::string& name, const std::filesystem::path& out);
 // Compares OUT/<name>/summary.json with expected/<name>.toml; prints the table; 0 if no claim fails.
-int check_experiment(const std::string& name, const std::filesystem::path& out, bool quiet = false);
-// Re-renders figures from an existing OUT/<name>/ (the `plot` subcommand).
+int check_experiment(const std::string& name, const std::filesystem::path& out, const CheckOptions& opt = {},
+                     VerdictCounts* totals = nullptr);
+// Checks every experiment with results in OUT, prints one table each and the totals; lists the
+// experiments without results on stderr. 1 if a claim fails or (unless missing_ok) results are missing.
+int check_all(const std::filesystem::path& out, const CheckOptions& opt = {});
+// Copies OUT/<name>/summary.json and a compact data.h5 (tables of at most max_values values;
+// snapshots left out) to TO/<name>/, for committing paper-scale results (paper_figures/).
+int export_experiment(const std::string& name, const std::filesystem::path& out, const std::filesystem::path& to,
+                      std::size_t max_values);
+// Re-renders figures from an existing OUT/<name>/ (the `plot` subcommand). A figure the
+// experiment does not make is an input error. 1 if gnuplot fails, or (strict) if it warns.
 int plot_experiment(const std::string& name, const std::filesystem::path& out,
-                    const std::vector<std::string>& figures);
+                    const std::vector<std::string>& figures, bool strict = false);
 
 } // namespace granrepro

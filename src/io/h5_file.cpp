@@ -160,6 +160,64 @@ std::uint64_t H5Object::read_u64_attr(const std::string& name) const {
 
 bool H5Object::has(const std::string& name) const { return H5Lexists(id_, name.c_str(), H5P_DEFAULT) > 0; }
 
+std::vector<std::string> H5Object::children() const {
+    H5G_info_t info;
+    check(H5Gget_info(id_, &info), "group info");
+    std::vector<std::string> names;
+    for (hsize_t i = 0; i < info.nlinks; ++i) {
+        const ssize_t n = H5Lget_name_by_idx(id_, ".", H5_INDEX_NAME, H5_ITER_INC, i, nullptr, 0, H5P_DEFAULT);
+        check(herr_t(n < 0 ? -1 : 0), "link name");
+        std::string name(std::size_t(n) + 1, '\0');
+        H5Lget_name_by_idx(id_, ".", H5_INDEX_NAME, H5_ITER_INC, i, name.data(), name.size(), H5P_DEFAULT);
+        name.resize(std::size_t(n));
+        names.push_back(name);
+    }
+    return names;
+}
+
+std::vector<std::string> H5Object::attribute_names() const {
+    H5O_info_t info;
+    check(H5Oget_info2(id_, &info, H5O_INFO_NUM_ATTRS), "object info");
+    std::vector<std::string> names;
+    for (hsize_t i = 0; i < info.num_attrs; ++i) {
+        const ssize_t n = H5Aget_name_by_idx(id_, ".", H5_INDEX_NAME, H5_ITER_INC, i, nullptr, 0, H5P_DEFAULT);
+        check(herr_t(n < 0 ? -1 : 0), "attribute name");
+        std::string name(std::size_t(n) + 1, '\0');
+        H5Aget_name_by_idx(id_, ".", H5_INDEX_NAME, H5_ITER_INC, i, name.data(), name.size(), H5P_DEFAULT);
+        name.resize(std::size_t(n));
+        names.push_back(name);
+    }
+    return names;
+}
+
+std::size_t H5Object::dataset_size(const std::string& name) const {
+    H5Object d(check(H5Dopen2(id_, name.c_str(), H5P_DEFAULT), "open " + name), &H5Dclose);
+    H5Object sp(H5Dget_space(d.id()), &H5Sclose);
+    return std::size_t(H5Sget_simple_extent_npoints(sp.id()));
+}
+
+void H5Object::copy_to(const std::string& name, const H5Object& dst) const {
+    check(H5Ocopy(id_, name.c_str(), dst.id(), name.c_str(), H5P_DEFAULT, H5P_DEFAULT), "copy " + name);
+}
+
+void H5Object::copy_attr_to(const std::string& name, const H5Object& dst) const {
+    H5Object a(check(H5Aopen(id_, name.c_str(), H5P_DEFAULT), "open attr " + name), &H5Aclose);
+    H5Object t(H5Aget_type(a.id()), &H5Tclose);
+    switch (H5Tget_class(t.id())) {
+    case H5T_STRING: dst.attr(name, read_string_attr(name)); break;
+    case H5T_INTEGER: dst.attr(name, read_long_attr(name)); break;
+    case H5T_FLOAT: {
+        H5Object sp(H5Aget_space(a.id()), &H5Sclose);
+        std::vector<double> v(std::size_t(H5Sget_simple_extent_npoints(sp.id())));
+        check(H5Aread(a.id(), H5T_NATIVE_DOUBLE, v.data()), "read attr " + name);
+        if (v.size() == 1 && H5Sget_simple_extent_type(sp.id()) == H5S_SCALAR) dst.attr(name, v[0]);
+        else dst.attr(name, v);
+        break;
+    }
+    default: throw std::runtime_error("attribute " + name + ": unsupported type");
+    }
+}
+
 void H5Object::vec2_array(const std::string& name, const std::vector<Vec2>& v) const {
     std::vector<double> x(v.size()), y(v.size());
     for (std::size_t i = 0; i < v.size(); ++i) {

@@ -44,6 +44,13 @@ public:
     template <class T>
     std::vector<T> read_array(const std::string& name) const;
     bool has(const std::string& name) const; // a link (group or dataset) of that name exists
+    std::vector<std::string> children() const;        // names of the links in this group
+    std::vector<std::string> attribute_names() const;
+    std::size_t dataset_size(const std::string& name) const; // number of elements
+    // Copies the object `name` (group or dataset, with its attributes) into `dst` under the same name.
+    void copy_to(const std::string& name, const H5Object& dst) const;
+    // Copies attribute `name` to `dst` (strings, integers and doubles, as the result schema uses).
+    void copy_attr_to(const std::string& name, const H5Object& dst) const;
 
     // Vectors as two datasets <name>_x and <name>_y, bit for bit.
     void vec2_array(const std::string& name, const std::vector<Vec2>& v) const;

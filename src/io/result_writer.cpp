@@ -115,4 +115,31 @@ nlohmann::json summary_json(const Provenance& prov, const ParameterSet& params, 
     return j;
 }
 
+std::vector<std::string> write_compact_result_h5(const std::filesystem::path& src, const std::filesystem::path& dst,
+                                                 std::size_t max_values) {
+    const H5File in = H5File::open(src.string());
+    in.require_schema("granrepro-result", 1);
+    H5File out = H5File::create(dst.string());
+    for (const auto& a : in.attribute_names()) in.copy_attr_to(a, out);
+    for (const char* g : {"parameters", "scalars"}) in.copy_to(g, out);
+    const H5Object tables_in = in.open_group("tables");
+    const H5Object tables_out = out.group("tables");
+    std::vector<std::string> omitted;
+    std::string listing;
+    for (const auto& t : tables_in.children()) {
+        const H5Object g = tables_in.open_group(t);
+        std::size_t n = 0;
+        for (const auto& c : g.children()) n += g.dataset_size(c);
+        if (n <= max_values) {
+            tables_in.copy_to(t, tables_out);
+        } else {
+            omitted.push_back(t);
+            listing += (listing.empty() ? "" : ", ") + t + " (" + std::to_string(n) + " values)";
+        }
+    }
+    out.attr("omitted_tables", listing.empty() ? std::string("none") : listing);
+    out.attr("compacted_to_max_values", long(max_values));
+    return omitted;
+}
+
 } // namespace granrepro

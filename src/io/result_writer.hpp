@@ -12,6 +12,7 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <vector>
 
 #include "harness/parameter_set.hpp"
 #include "harness/result.hpp"
@@ -31,5 +32,12 @@ void write_result_h5(const std::filesystem::path& file, const Provenance& prov, 
 void write_tables_tsv(const std::filesystem::path& dir, const Result& result);
 nlohmann::json scalars_json(const Result& result);
 nlohmann::json summary_json(const Provenance& prov, const ParameterSet& params, const Result& result);
+
+// A compact copy of a result file, small enough to commit next to the figures (paper_figures/):
+// the root attributes, /parameters, /scalars and every table of at most max_values values in
+// all; larger tables (particle snapshots) are left out and named, with their sizes, in the root
+// attribute "omitted_tables". Returns the names of the omitted tables.
+std::vector<std::string> write_compact_result_h5(const std::filesystem::path& src, const std::filesystem::path& dst,
+                                                 std::size_t max_values);
 
 } // namespace granrepro

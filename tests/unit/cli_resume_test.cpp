@@ -31,7 +31,8 @@ nlohmann::json scalars(const fs::path& summary) {
 TEST(CliResume, ClusterGrowthResumesBitIdentical) {
     const fs::path a = fresh("cg-a"), b = fresh("cg-b");
     const std::string args = "cluster-growth --set n_side=32 --set cn_end=300 --seed 3 ";
-    ASSERT_EQ(run(args + "--quiet --out " + a.string()).code, 0);
+    // A reduced run: some of its claims fail (exit 1); the datasets are what is compared.
+    ASSERT_LE(run(args + "--quiet --out " + a.string()).code, 1);
 
     const Outcome killed = run(args + "--quiet --checkpoint-interval 0 --out " + b.string(),
                                "GRANREPRO_INTERRUPT_AFTER_CHECKPOINTS=20");
@@ -41,7 +42,7 @@ TEST(CliResume, ClusterGrowthResumesBitIdentical) {
     ASSERT_TRUE(fs::exists(b / ".cluster-growth.checkpoint"));
 
     const Outcome resumed = run(args + "--checkpoint-interval 0 --out " + b.string());
-    ASSERT_EQ(resumed.code, 0) << resumed.err;
+    ASSERT_LE(resumed.code, 1) << resumed.err;
     EXPECT_NE(resumed.err.find("resuming from checkpoint"), std::string::npos) << resumed.err;
     EXPECT_FALSE(fs::exists(b / ".cluster-growth.checkpoint")); // removed once the results are written
 

@@ -11,6 +11,7 @@
 #include "harness/claims.hpp"
 #include "harness/parameter_set.hpp"
 #include "io/h5_file.hpp"
+#include "io/result_writer.hpp"
 #include "io/staged_directory.hpp"
 
 using namespace granrepro;
@@ -142,6 +143,8 @@ measured = "y"
 paper = 5.0
 abs_tol = 0.1
 known_deviation = "because"
+deviation_band = [1.5, 2.5]
+deviation_band_reason = "r"
 [[claim]]
 id = "d"
 statement = "s"
@@ -178,6 +181,138 @@ scales = ["paper"]
     EXPECT_THROW(load_claims(dir / "absent.toml", "e"), InputError);
     const fs::path bad = write(dir / "bad.toml", "experiment = \"e\"\n[[claim]]\nid = \"a\"\n");
     EXPECT_THROW(load_claims(bad, "e"), InputError);
+    fs::remove_all(dir);
+}
+
+// A known deviation keeps a band of its own: within the paper's tolerance it PASSes, inside its
+// band it is a DEVIATION, outside both or without a measurement it FAILs.
+const char* kDeviationClaims = R"toml(
+experiment = "e"
+[[claim]]
+id = "dev"
+statement = "s"
+source = "s"
+measured = "x"
+paper = 1.0
+abs_tol = 0.1
+known_deviation = "we measure 1.5"
+deviation_band = [1.4, 1.6]
+deviation_band_reason = "mean ± 4 sigma over seeds"
+[[claim]]
+id = "per_scale"
+statement = "s"
+source = "s"
+measured = "y"
+min = 10.0
+known_deviation = "we measure 3 at quick and 7 at paper scale"
+deviation_band = { quick = [2.0, 4.0], paper = [6.0, inf] }
+deviation_band_reason = "r"
+)toml";
+
+Verdict deviation_verdict(const nlohmann::json& scalars, Scale scale, std::size_t claim) {
+    const fs::path dir = temp_dir("devclaims");
+    const auto claims = load_claims(write(dir / "e.toml", kDeviationClaims), "e");
+    fs::remove_all(dir);
+    return evaluate_claims(claims, scalars, scale).at(claim).verdict;
+}
+
+TEST(Claims, DeviationWithinPaperTolerancePasses) {
+    EXPECT_EQ(deviation_verdict({{"x", 1.05}}, Scale::Quick, 0), Verdict::Pass);
+    EXPECT_EQ(deviation_verdict({{"y", 12.0}}, Scale::Quick, 1), Verdict::Pass);
+}
+
+TEST(Claims, DeviationInsideItsBandIsDeviation) {
+    EXPECT_EQ(deviation_verdict({{"x", 1.5}}, Scale::Paper, 0), Verdict::KnownDeviation);
+    EXPECT_EQ(deviation_verdict({{"x", 1.4}}, Scale::Quick, 0), Verdict::KnownDeviation); // closed band
+    EXPECT_EQ(deviation_verdict({{"y", 3.0}}, Scale::Quick, 1), Verdict::KnownDeviation);
+    EXPECT_EQ(deviation_verdict({{"y", 7.0}}, Scale::Paper, 1), Verdict::KnownDeviation);
+}
+
+TEST(Claims, DeviationOutsideItsBandFails) {
+    EXPECT_EQ(deviation_verdict({{"x", 1.7}}, Scale::Quick, 0), Verdict::Fail);
+    EXPECT_EQ(deviation_verdict({{"x", 1.2}}, Scale::Quick, 0), Verdict::Fail);
+    // The band is the one of the run's scale.
+    EXPECT_EQ(deviation_verdict({{"y", 3.0}}, Scale::Paper, 1), Verdict::Fail);
+    EXPECT_EQ(deviation_verdict({{"y", 7.0}}, Scale::Quick, 1), Verdict::Fail);
+}
+
+TEST(Claims, DeviationWithoutScalarFails) {
+    EXPECT_EQ(deviation_verdict(nlohmann::json::object(), Scale::Quick, 0), Verdict::Fail); // removed
+    EXPECT_EQ(deviation_verdict({{"x", nullptr}}, Scale::Quick, 0), Verdict::Fail);         // NaN in the run
+    EXPECT_EQ(deviation_verdict({{"x", INFINITY}}, Scale::Quick, 0), Verdict::Fail);
+    EXPECT_EQ(deviation_verdict({{"y", INFINITY}}, Scale::Paper, 1), Verdict::Fail); // even with hi = inf
+}
+
+TEST(Claims, FailingDeviationFailsTheRunAndTheTableShowsTheBand) {
+    const fs::path dir = temp_dir("devtable");
+    const auto claims = load_claims(write(dir / "e.toml", kDeviationClaims), "e");
+    EXPECT_TRUE(all_pass(evaluate_claims(claims, {{"x", 1.5}, {"y", 3.0}}, Scale::Quick)));
+    EXPECT_FALSE(all_pass(evaluate_claims(claims, {{"x", 1.7}, {"y", 3.0}}, Scale::Quick)));
+    // The table shows the paper's relation and our band side by side.
+    const std::string table = format_claim_table("e", evaluate_claims(claims, {{"x", 1.5}, {"y", 7.0}}, Scale::Paper));
+    EXPECT_NE(table.find("our band"), std::string::npos) << table;
+    EXPECT_NE(table.find("[1.4, 1.6]"), std::string::npos) << table;
+    EXPECT_NE(table.find("[6, inf]"), std::string::npos) << table;
+    EXPECT_NE(table.find("in [10, inf]"), std::string::npos) << table;
+    VerdictCounts n;
+    n.add(evaluate_claims(claims, {{"x", 1.0}, {"y", 3.0}}, Scale::Paper));
+    EXPECT_EQ(n.text(), "1 PASS, 1 FAIL, 0 DEVIATION, 0 skipped");
+    fs::remove_all(dir);
+}
+
+TEST(Claims, MissingScalarFailsEveryClaim) {
+    const fs::path dir = temp_dir("missclaims");
+    const auto claims = load_claims(write(dir / "e.toml", R"toml(
+experiment = "e"
+[[claim]]
+id = "plain"
+statement = "s"
+source = "s"
+measured = "x"
+max = 1.0
+tolerance_reason = "r"
+)toml"), "e");
+    EXPECT_EQ(evaluate_claims(claims, nlohmann::json::object(), Scale::Quick)[0].verdict, Verdict::Fail);
+    EXPECT_EQ(evaluate_claims(claims, {{"x", NAN}}, Scale::Quick)[0].verdict, Verdict::Fail);
+    EXPECT_EQ(evaluate_claims(claims, {{"x", 0.5}}, Scale::Quick)[0].verdict, Verdict::Pass);
+    fs::remove_all(dir);
+}
+
+// A known deviation without its band at a scale where it applies is an input error naming the
+// file, the claim and the missing key.
+TEST(Claims, DeviationWithoutBandIsAnInputError) {
+    const fs::path dir = temp_dir("bandless");
+    const std::string head = "experiment = \"e\"\n[[claim]]\nid = \"dev\"\nstatement = \"s\"\nsource = \"s\"\n"
+                             "measured = \"x\"\npaper = 1.0\nabs_tol = 0.1\nknown_deviation = \"k\"\n";
+    auto error = [&](const std::string& rest) {
+        try {
+            load_claims(write(dir / "e.toml", head + rest), "e");
+        } catch (const InputError& e) {
+            return std::string(e.what());
+        }
+        return std::string("no error");
+    };
+    std::string m = error("deviation_band_reason = \"r\"\n");
+    EXPECT_NE(m.find("e.toml"), std::string::npos) << m;
+    EXPECT_NE(m.find("claim dev"), std::string::npos) << m;
+    EXPECT_NE(m.find("deviation_band for scale quick"), std::string::npos) << m;
+    m = error("deviation_band = { quick = [1, 2] }\ndeviation_band_reason = \"r\"\n");
+    EXPECT_NE(m.find("deviation_band for scale paper"), std::string::npos) << m;
+    // ... unless the claim does not apply at that scale.
+    EXPECT_EQ(error("deviation_band = { quick = [1, 2] }\ndeviation_band_reason = \"r\"\nscales = [\"quick\"]\n"),
+              "no error");
+    m = error("deviation_band = [1, 2]\n");
+    EXPECT_NE(m.find("deviation_band_reason"), std::string::npos) << m;
+    EXPECT_NE(error("deviation_band = [2, 1]\ndeviation_band_reason = \"r\"\n").find("lo <= hi"), std::string::npos);
+    EXPECT_NE(error("deviation_band = [1]\ndeviation_band_reason = \"r\"\n").find("[lo, hi]"), std::string::npos);
+    EXPECT_NE(error("deviation_band = { huge = [1, 2] }\ndeviation_band_reason = \"r\"\n").find("huge"),
+              std::string::npos);
+    EXPECT_EQ(error("deviation_band = [-inf, inf]\ndeviation_band_reason = \"r\"\n"), "no error");
+    // A band on a claim that is no known deviation is a mistake too.
+    const fs::path plain = write(dir / "p.toml", "experiment = \"e\"\n[[claim]]\nid = \"p\"\nstatement = \"s\"\n"
+                                                 "source = \"s\"\nmeasured = \"x\"\nmax = 1.0\ntolerance_reason = \"r\"\n"
+                                                 "deviation_band = [0, 2]\ndeviation_band_reason = \"r\"\n");
+    EXPECT_THROW(load_claims(plain, "e"), InputError);
     fs::remove_all(dir);
 }
 
@@ -219,6 +354,40 @@ TEST(H5File, RoundTripsDatasetsAndAttributes) {
     EXPECT_DOUBLE_EQ(f.read_double_attr("x"), 2.5);
     EXPECT_EQ(f.read_dataset("tables/v"), (std::vector<double>{1.0, 2.0, 3.5}));
     EXPECT_EQ(f.read_bytes("raw"), (std::vector<unsigned char>{1, 2, 3}));
+    fs::remove_all(dir);
+}
+
+// The compact copy committed to paper_figures/ keeps provenance, parameters, scalars and curves
+// bit for bit, and leaves out (and names) only the tables above the size limit.
+TEST(ResultExport, CompactCopyKeepsScalarsAndCurvesAndNamesWhatItLeavesOut) {
+    const fs::path dir = temp_dir("compact");
+    const ParameterSet params = ParameterSet::load(write(dir / "demo.toml", kExperiment), Scale::Paper);
+    Result result;
+    Table& curve = result.table("curve", "a small curve");
+    curve.add("t", "s").values = {0.0, 0.5, 1.0};
+    curve.add("K", "J").values = {1.0, 0.25, 1.0 / 3.0};
+    Table& snap = result.table("snapshot_0", "positions");
+    snap.add("x", "m").values = std::vector<double>(600, 0.1);
+    snap.add("y", "m").values = std::vector<double>(600, 0.2);
+    result.scalar("slope", -0.9731, "1", "fitted slope");
+    Provenance prov{"demo", "p", "file text", Scale::Paper, 7, 12.5, 2};
+    write_result_h5(dir / "data.h5", prov, params, result);
+    const auto omitted = write_compact_result_h5(dir / "data.h5", dir / "small.h5", 1000);
+    EXPECT_EQ(omitted, std::vector<std::string>{"snapshot_0"});
+    const H5File f = H5File::open((dir / "small.h5").string());
+    EXPECT_EQ(f.read_string_attr("experiment"), "demo");
+    EXPECT_EQ(f.read_string_attr("seed"), "7");
+    EXPECT_EQ(f.read_string_attr("scale"), "paper");
+    EXPECT_EQ(f.read_long_attr("schema_version"), 1);
+    EXPECT_DOUBLE_EQ(f.read_double_attr("wall_time_s"), 12.5);
+    EXPECT_EQ(f.read_dataset("scalars/slope"), std::vector<double>{-0.9731});
+    EXPECT_EQ(f.read_dataset("tables/curve/K"), (std::vector<double>{1.0, 0.25, 1.0 / 3.0}));
+    EXPECT_EQ(f.read_dataset("parameters/n"), std::vector<double>{100.0});
+    EXPECT_FALSE(f.has("tables/snapshot_0"));
+    EXPECT_NE(f.read_string_attr("omitted_tables").find("snapshot_0 (1200 values)"), std::string::npos);
+    const H5Object curve_group = f.open_group("tables").open_group("curve");
+    EXPECT_EQ(curve_group.read_string_attr("description"), "a small curve");
+    EXPECT_LT(fs::file_size(dir / "small.h5"), fs::file_size(dir / "data.h5"));
     fs::remove_all(dir);
 }
 

@@ -60,7 +60,12 @@ TEST_P(LinearLawRestitution, MatchesEq4AtTcolOver50) {
 
 INSTANTIATE_TEST_SUITE_P(FreeFreeAndFreeWall, LinearLawRestitution,
                          ::testing::Combine(::testing::Values(0.3, 0.5, 0.7, 0.9, 0.99),
-                                            ::testing::Bool()));
+                                            ::testing::Bool()),
+                         [](const auto& info) { // e.g. eN_0_99_wall
+                             std::string e = std::to_string(std::get<0>(info.param)).substr(0, 4);
+                             e[1] = '_';
+                             return "eN_" + e + (std::get<1>(info.param) ? "_wall" : "_free");
+                         });
 
 TEST(LinearLaw, PaperValuesOfFig3) {
     // k_N = 2000 N/m, gamma_N = 1e4 1/s, free grain of 1 mg against a wall grain:

@@ -88,7 +88,12 @@ TEST_P(EdEnskogRate, CollisionFrequencyMatchesEnskogHenderson) {
     std::printf("[ rate ] rho=%.2f omega_sim/omega_E=%.4f sigma=%.4f\n", rho, mean / omega_e, sigma / omega_e);
 }
 
-INSTANTIATE_TEST_SUITE_P(Densities, EdEnskogRate, ::testing::Values(0.1, 0.25, 0.4));
+INSTANTIATE_TEST_SUITE_P(Densities, EdEnskogRate, ::testing::Values(0.1, 0.25, 0.4),
+                         [](const auto& info) { // e.g. rho_0_25
+                             std::string r = std::to_string(info.param).substr(0, 4);
+                             r[1] = '_';
+                             return "rho_" + r;
+                         });
 
 // Enskog equation of state of hard disks: P A / (N T) = 1 + 2 rho g(d) (the collisional, virial
 // part is the 2 rho g(d)). P is measured as -tr(sigma)/2 of the Eq. (9) stress observable over
@@ -146,7 +151,12 @@ TEST_P(EdEnskogPressure, VirialPressureMatchesEnskogHenderson) {
                 rho, z, zh, gp, sp, dm, sd);
 }
 
-INSTANTIATE_TEST_SUITE_P(Densities, EdEnskogPressure, ::testing::Values(0.1, 0.25, 0.4));
+INSTANTIATE_TEST_SUITE_P(Densities, EdEnskogPressure, ::testing::Values(0.1, 0.25, 0.4),
+                         [](const auto& info) { // e.g. rho_0_25
+                             std::string r = std::to_string(info.param).substr(0, 4);
+                             r[1] = '_';
+                             return "rho_" + r;
+                         });
 
 // Starting from uniform velocities (kurtosis 1.8), 10 collisions per particle at r = 1 (the
 // paper's equilibration) give a Maxwellian: kurtosis of v_x, v_y = 3 within 4 sigma

@@ -1,0 +1,31 @@
+#!/usr/bin/env bash
+# How robust is each quick-scale verdict against the seed? Runs every experiment at quick scale
+# for seeds 1..N (default 5) and prints, per claim, how many seeds gave PASS, DEVIATION, FAIL
+# (skipped claims are left out), the least robust first.
+#   scripts/seed_pass_rates.sh [N] [EXPERIMENT...]     runs go to $OUT (default out-seeds/)
+# Needs ./build/granrepro (scripts/main.sh builds it). Takes N times the quick run (~1 min each).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+n=${1:-5}
+shift || true
+out=${OUT:-out-seeds}
+threads=$(nproc)
+for ((s = 1; s <= n; s++)); do
+  if (($#)); then
+    for e in "$@"; do ./build/granrepro "$e" --scale quick --seed "$s" --threads "$threads" --quiet --out "$out/seed$s" > /dev/null || true; done
+  else
+    ./build/granrepro all --scale quick --seed "$s" --threads "$threads" --quiet --out "$out/seed$s" > /dev/null || true
+  fi
+  echo "seed $s done" >&2
+done
+for ((s = 1; s <= n; s++)); do
+  ./build/granrepro check --all --missing-ok --out "$out/seed$s" 2> /dev/null || true
+done | awk -v n="$n" '
+  /^check / { ex = $2; next }
+  /^  claim / || /^  \(/ || /^totals/ || NF < 2 { next }
+  { v = $NF; if (v == "skipped") next; id = ex "/" $1; seen[id]++; count[id, v]++ }
+  END {
+    printf "%-52s %5s %9s %5s  (of %d seeds)\n", "claim", "PASS", "DEVIATION", "FAIL", n
+    for (id in seen) printf "%d\t%-52s %5d %9d %5d\n", count[id, "PASS"] + count[id, "DEVIATION"], id,
+                            count[id, "PASS"], count[id, "DEVIATION"], count[id, "FAIL"]
+  }' | { IFS= read -r header; echo "$header"; sort -n -k1,1 | cut -f2-; }
