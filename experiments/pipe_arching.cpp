@@ -858,6 +858,19 @@ Result run(const RunContext& ctx) {
     res.scalar("B_fit_median_seeds", median_finite(Bs), "1/s", "Eq. (22) B, median over seeds");
     res.scalar("B_over_A_median_seeds", median_finite(BA), "1", "B/A per seed, median (unit-free)");
     {
+        // The paper's numbers come from one run: where they fall in our distribution over seeds.
+        auto share_below = [](const std::vector<double>& v, double x) {
+            double k = 0, n = 0;
+            for (double y : v)
+                if (std::isfinite(y)) { n += 1; k += y <= x ? 1 : 0; }
+            return n > 0 ? k / n : NAN;
+        };
+        res.scalar("B_over_A_fraction_below_paper", share_below(BA, 14.0), "1",
+                   "fraction of seeds with B/A <= 14, the paper's value (its percentile in our distribution)");
+        res.scalar("B_fraction_below_paper", share_below(Bs, 14.0e3), "1",
+                   "fraction of seeds with B <= 14e3 1/s (the paper's B in reading 1)");
+    }
+    {
         const MeanSem a = mean_sem(As), b = mean_sem(Bs), ba = mean_sem(BA);
         res.scalar("A_fit_seed_sem", a.sem, "1/s", "standard error of the mean of A over seeds");
         res.scalar("B_fit_seed_sem", b.sem, "1/s", "standard error of the mean of B over seeds");
@@ -984,6 +997,12 @@ Result run(const RunContext& ctx) {
     }
     res.scalar("plug_wall_load_median", median_finite(per_seed(&SeedRun::plug_wall_load)), "1",
                "wall impulse on the arch's plug within 4 ms of the arch over the plug's weight times that time, median (1: the walls hold the plug)");
+    {
+        std::vector<double> rel;
+        for (const auto& r : runs) rel.push_back(r.plug_wall_load / r.friction_share);
+        res.scalar("plug_wall_load_over_mean_median", median_finite(rel), "1",
+                   "plug_wall_load over the column's wall share over the whole fall, per seed, median (> 1: the walls hold the plug harder than the column)");
+    }
     res.scalar("arch_brake_median", median_finite(per_seed(&SeedRun::arch_brake)), "m/s",
                "largest gain of v_y(plug) - v_y(material below) within arch_window of the arch, median (> 0: the plug falls slower)");
     res.scalar("opening_below_median", median_finite(per_seed(&SeedRun::opening_below)), "d",

@@ -14,7 +14,7 @@ do for [fmt in "png pdf"] {
   if (fmt eq "png") { set terminal pngcairo size 240*n+120,900 enhanced font "Sans,10" }
   else { set terminal pdfcairo size (1.6*n+0.8)in,6in enhanced font "Sans,8" }
   set output outbase.'.'.fmt
-  set multiplot layout 1,n margins 0.05,0.93,0.07,0.91 spacing 0.012,0 title "falling column, N = 1562, L = 20.2 d, ε = 0.9, μ = 0.5, β_0 = 0.2 (run 0); grey: N_c over the last 1 ms\nblack bar / red ring: initiating disk; orange rings: arch found in the frame; red line: visible crack"
+  set multiplot layout 1,n margins 0.05,0.93,0.07,0.86 spacing 0.012,0 title "falling column, N = 1562, L = 20.2 d, ε = 0.9, μ = 0.5, β_0 = 0.2 (run 0); grey: N_c over the last 1 ms\nblack bar / red ring: initiating disk; orange rings: arch found in the frame; red line: visible crack"
   set palette defined (0 "black", 1 "white")
   set cbrange [0:1e4]
   set style fill solid 1.0 noborder

@@ -9,7 +9,10 @@
 # SCALE (default quick), OUT (default out/studies/pipe-arching), THREADS (default 1).
 # Every row is one run `granrepro pipe-arching --scale $SCALE --set n_seeds=$SEEDS --set ...`,
 # kept in $OUT/<row>/; rerunning reuses finished rows (delete a row's folder to redo it).
-# Prints one tab-separated table: medians over seeds unless named otherwise.
+# Prints one tab-separated table: medians over seeds unless named otherwise (A, B, B/A: median
+# over seeds with the standard error of the mean over seeds; gaps in diameters). The table it
+# printed for the defaults of the commit that added it is pipe_arching_sensitivity.tsv here
+# (quick scale, 8 seeds, 1 thread; deterministic, so a rerun prints the same numbers).
 set -euo pipefail
 GRANREPRO=${GRANREPRO:-./build/granrepro}
 SEEDS=${SEEDS:-8}
@@ -52,7 +55,8 @@ rows_scale=(
   "d=0.5mm|d=0.5e-3"
   "d=2mm|d=2e-3"
   "g=4.9|g=4.905"
-  "g=19.6|g=19.62"
+  "g=9.81|g=9.81"
+  "g=14|g=14.0"
 )
 rows_size=(
   "L=10.1,N=781|width=10.1 n_particles=781"
