@@ -14,10 +14,13 @@
 #include <string>
 #include <vector>
 
+#include "analysis/eddy_pair.hpp"
 #include "core/input_error.hpp"
+#include "core/vec3.hpp"
 #include "core/rng_stream.hpp"
 #include "engines/ed/ed_engine.hpp"
 #include "engines/ed/ed_initial_states.hpp"
+#include "engines/ed3d/hard_sphere_gas.hpp"
 #include "harness/experiment.hpp"
 #include "harness/parallel_sweep.hpp"
 #include "harness/progress.hpp"
@@ -74,6 +77,11 @@ struct PointResult {
     std::vector<double> k_t, k_val; // K(t) [s], [J]
     double k0 = 0.0;
     double sigma_max = NAN, flow_fraction = NAN; // every seed, see panel_measures()
+    double v_rms = NAN;                          // every seed: rms speed at t_end [m/s]
+    // Every seed: the strongest co-rotating eddy pair at t_end (src/analysis/eddy_pair.hpp), the
+    // share of velocity shuffles it beats, and the mean pressure of the stress cells in its two
+    // cores over that of the other cells.
+    double eddy_strength = NAN, eddy_beats = NAN, eddy_core_pressure_ratio = NAN;
 };
 
 // P(b/d) from counts: density over [0, 1] with bin width 1/nb, Poisson error sqrt(n) per bin.
@@ -276,6 +284,32 @@ Result run(const RunContext& ctx) {
         out.cells = stress.result();
         out.sigma_max = sigma_max_of(out.cells);
         out.flow_fraction = flow_fraction(out.pos, out.vel, l, nc);
+        double v2 = 0.0;
+        for (const auto& v : out.vel) v2 += norm2(v);
+        out.v_rms = std::sqrt(v2 / static_cast<double>(n));
+        {
+            const EddyPair ep = find_eddy_pair(out.pos, out.vel, l);
+            const long n_sh = p.integer("eddy_shuffles");
+            const auto sh = shuffled_eddy_strengths(out.pos, out.vel, l, static_cast<int>(n_sh), mix_seed(ctx.seed, idx));
+            out.eddy_strength = ep.strength;
+            out.eddy_beats = static_cast<double>(std::count_if(sh.begin(), sh.end(), [&](double x) { return x < ep.strength; })) /
+                             static_cast<double>(n_sh);
+            // Cores: cells whose centre lies within a quarter box (the quadrant's inscribed circle)
+            // of either eddy centre.
+            double p_in = 0, n_in = 0, p_out = 0, n_out = 0;
+            for (int iy = 0; iy < nc; ++iy)
+                for (int ix = 0; ix < nc; ++ix) {
+                    const Vec2 c{(ix + 0.5) * l / nc, (iy + 0.5) * l / nc};
+                    auto dist = [&](Vec2 a) {
+                        const double dx = c.x - a.x - l * std::round((c.x - a.x) / l), dy = c.y - a.y - l * std::round((c.y - a.y) / l);
+                        return std::hypot(dx, dy);
+                    };
+                    const double pr = out.cells[static_cast<std::size_t>(ix + nc * iy)].pressure();
+                    if (std::min(dist(ep.centre_a), dist(ep.centre_b)) < 0.25 * l) { p_in += pr; n_in += 1; }
+                    else { p_out += pr; n_out += 1; }
+                }
+            if (n_in > 0 && n_out > 0 && p_out > 0) out.eddy_core_pressure_ratio = (p_in / n_in) / (p_out / n_out);
+        }
     });
 
     // Merge seeds.
@@ -383,6 +417,63 @@ Result run(const RunContext& ctx) {
         res.scalar("elastic_collisions_" + lb, static_cast<double>(h.total), "1", "pair collisions counted, all seeds");
     }
     res.scalar("elastic_chi2_dof_worst", worst_chi2, "1", "largest chi^2 per dof over the elastic densities");
+
+    // Sec. 3.2 in 3D: "P(b/d) = 2b/d in 3D" for elastic spheres (src/engines/ed3d), per packing
+    // fraction; chi^2 of the bins against 2 b/d (and, to show the test's power, against 1).
+    {
+        const auto& etas = p.reals("elastic3d_packing");
+        const long side = p.integer("elastic3d_n_side");
+        const auto n3 = static_cast<std::size_t>(side * side * side);
+        const auto coll3 = static_cast<std::uint64_t>(p.real("elastic3d_collisions"));
+        std::vector<std::vector<std::uint64_t>> c3(etas.size(), std::vector<std::uint64_t>(static_cast<std::size_t>(nb), 0));
+        parallel_sweep(static_cast<long>(etas.size()), ctx.threads, nullptr, [&](long task) {
+            const auto k = static_cast<std::size_t>(task);
+            const double box = std::cbrt(static_cast<double>(n3) * M_PI / 6 / etas[k]) * d;
+            RngStream rng3(ctx.seed, 1000000 + k);
+            std::vector<Vec3> r, v;
+            Vec3 mean;
+            for (long a = 0; a < side; ++a)
+                for (long b = 0; b < side; ++b)
+                    for (long c = 0; c < side; ++c) {
+                        r.push_back({(a + 0.5) * box / side, (b + 0.5) * box / side, (c + 0.5) * box / side});
+                        v.push_back({vbar * rng3.normal(), vbar * rng3.normal(), vbar * rng3.normal()});
+                        mean += v.back();
+                    }
+            for (Vec3& x : v) x -= mean * (1.0 / static_cast<double>(n3));
+            HardSphereGas3D g(r, v, d, box);
+            g.run_collisions(static_cast<std::uint64_t>(eq * static_cast<double>(n3) / 2.0 + 0.5)); // as Sec. 3: ~10 per sphere at r = 1
+            g.run_collisions(coll3, [&](double x) {
+                c3[k][std::min(static_cast<std::size_t>(nb) - 1, static_cast<std::size_t>(x * nb))] += 1;
+            });
+        });
+        Table& t3 = res.table("fig4_elastic_3d", "P(b/d) of elastic smooth hard spheres in 3D (periodic cube), per packing fraction, and 2 b/d");
+        t3.add("b_over_d", "1").values = centres;
+        std::vector<double> two_x;
+        for (double x : centres) two_x.push_back(2 * x);
+        t3.add("P_2bd", "1").values = two_x;
+        for (std::size_t k = 0; k < etas.size(); ++k) {
+            const std::string lb = label("eta", etas[k], "%g");
+            const Histogram h = normalise(c3[k]);
+            t3.add("P_" + lb, "1").values = h.p;
+            t3.add("err_" + lb, "1").values = h.err;
+            // chi^2 against a density f on [0, 1] with exact bin integrals; dof = bins - 1.
+            auto chi2 = [&](auto cdf) {
+                const double tot = static_cast<double>(h.total);
+                double x2 = 0;
+                for (int b = 0; b < nb; ++b) {
+                    const double e = tot * (cdf((b + 1.0) / nb) - cdf(static_cast<double>(b) / nb));
+                    const double o = static_cast<double>(c3[k][static_cast<std::size_t>(b)]);
+                    x2 += (o - e) * (o - e) / e;
+                }
+                return x2 / (nb - 1.0);
+            };
+            res.scalar("elastic3d_chi2_dof_" + lb, chi2([](double x) { return x * x; }), "1",
+                       "chi^2 per dof of the 3D P(b/d) against 2 b/d (molecular chaos in 3D)");
+            res.scalar("elastic3d_chi2_dof_flat_" + lb, chi2([](double x) { return x; }), "1",
+                       "chi^2 per dof of the 3D P(b/d) against the 2D form 1 (the test's power)");
+            res.scalar("elastic3d_collisions_" + lb, static_cast<double>(h.total), "1", "collisions counted");
+        }
+    }
 
     // Fig. 5: seed 0 of each r. Columns are filled as local vectors first: Table::add and
     // Result::table grow vectors, so references into them must not be held across calls.
@@ -499,6 +590,72 @@ Result run(const RunContext& ctx) {
                    "fraction of seeds where sigma_max(0.9) is the smallest of the three (as in the paper)");
         res.scalar("seeds_sigma_max_095_highest", n_095_highest / static_cast<double>(n_seeds), "1",
                    "fraction of seeds where sigma_max(0.95) is the largest of the three (as in the paper)");
+    }
+
+    // Fig. 5's arrows: the paper scales them by 1, 3, 7 (left to right), which, read as
+    // arrow = velocity x factor drawn at a similar length, means v(0.8) > v(0.9) > v(0.95).
+    if (k8 >= 0 && k9 >= 0 && k95 >= 0) {
+        double ordered = 0, reversed = 0, stress_order = 0, r89 = 0, r895 = 0;
+        for (std::size_t s = 0; s < n_seeds; ++s) {
+            const double a = points[s * per_seed + static_cast<std::size_t>(k8)].v_rms;
+            const double b = points[s * per_seed + static_cast<std::size_t>(k9)].v_rms;
+            const double c = points[s * per_seed + static_cast<std::size_t>(k95)].v_rms;
+            ordered += (a > b && b > c);
+            reversed += (a < b && b < c);
+            stress_order += (c > a && a > b);
+            r89 += std::log(a / b) / static_cast<double>(n_seeds);
+            r895 += std::log(a / c) / static_cast<double>(n_seeds);
+        }
+        res.scalar("seeds_v_rms_order_080_090_095", ordered / static_cast<double>(n_seeds), "1",
+                   "fraction of seeds with v_rms(0.8) > v_rms(0.9) > v_rms(0.95) at t_end (the paper's arrow factors 1, 3, 7)");
+        res.scalar("seeds_v_rms_order_reversed", reversed / static_cast<double>(n_seeds), "1",
+                   "fraction of seeds with v_rms(0.8) < v_rms(0.9) < v_rms(0.95) (homogeneous cooling: v ~ 1/((1 - r^2) t))");
+        res.scalar("seeds_v_rms_order_095_080_090", stress_order / static_cast<double>(n_seeds), "1",
+                   "fraction of seeds with v_rms(0.95) > v_rms(0.8) > v_rms(0.9), the order of the paper's sigma_max values 1.56 > 0.894 > 0.568");
+        res.scalar("v_rms_ratio_080_over_090_geomean", std::exp(r89), "1", "v_rms(0.8)/v_rms(0.9) at t_end, geometric mean over seeds (paper's factors: 3)");
+        res.scalar("v_rms_ratio_080_over_095_geomean", std::exp(r895), "1", "v_rms(0.8)/v_rms(0.95) at t_end, geometric mean over seeds (paper's factors: 7)");
+    }
+    // Fig. 5 left: two co-rotating eddies with small stresses inside.
+    for (std::size_t k = 0; k < rs.size(); ++k) {
+        const std::string lb = label("r", rs[k], "%.2f");
+        const double need = p.real("eddy_significance");
+        double found = 0, e_sum = 0;
+        std::vector<double> ratios;
+        for (std::size_t s = 0; s < n_seeds; ++s) {
+            const PointResult& pr = points[s * per_seed + k];
+            e_sum += pr.eddy_strength / static_cast<double>(n_seeds);
+            if (pr.eddy_beats >= need) {
+                found += 1;
+                if (std::isfinite(pr.eddy_core_pressure_ratio)) ratios.push_back(pr.eddy_core_pressure_ratio);
+            }
+        }
+        res.scalar("eddy_pair_fraction_" + lb, found / static_cast<double>(n_seeds), "1",
+                   "fraction of seeds whose strongest co-rotating eddy pair at t_end beats at least eddy_significance of its velocity shuffles");
+        res.scalar("eddy_strength_mean_" + lb, e_sum, "1", "eddy-pair strength E at t_end, mean over seeds");
+        std::sort(ratios.begin(), ratios.end());
+        const double med = ratios.empty() ? NAN
+                         : ratios.size() % 2 ? ratios[ratios.size() / 2]
+                                             : 0.5 * (ratios[ratios.size() / 2 - 1] + ratios[ratios.size() / 2]);
+        res.scalar("eddy_core_pressure_ratio_median_" + lb, med, "1",
+                   "mean Eq. (9) pressure (0.5-1 s) of the stress cells in the two eddy cores over that of the other cells, median over seeds with a significant pair");
+        res.scalar("eddy_core_pressure_ratio_seeds_" + lb, static_cast<double>(ratios.size()), "1", "seeds entering that median");
+        // The same for the strongest pair of every seed, significant or not (always defined).
+        std::vector<double> all;
+        for (std::size_t s = 0; s < n_seeds; ++s) all.push_back(points[s * per_seed + k].eddy_core_pressure_ratio);
+        double mean = 0, m2 = 0, cnt = 0;
+        for (double x : all)
+            if (std::isfinite(x)) { mean += x; m2 += x * x; cnt += 1; }
+        std::erase_if(all, [](double x) { return !std::isfinite(x); });
+        std::sort(all.begin(), all.end());
+        const double med_all = all.empty() ? NAN : all.size() % 2 ? all[all.size() / 2] : 0.5 * (all[all.size() / 2 - 1] + all[all.size() / 2]);
+        res.scalar("eddy_core_pressure_ratio_median_all_" + lb, med_all, "1",
+                   "the same ratio for every seed's strongest co-rotating pair, significant or not, median over seeds");
+        if (cnt >= 2) {
+            mean /= cnt;
+            res.scalar("eddy_core_pressure_ratio_mean_all_" + lb, mean, "1", "its mean over seeds");
+            res.scalar("eddy_core_pressure_ratio_sem_all_" + lb, std::sqrt(std::max(0.0, (m2 / cnt - mean * mean) * cnt / (cnt - 1)) / cnt), "1",
+                       "standard error of that mean (seed scatter)");
+        }
     }
 
     // Cooling curves of the figure runs, for reference (Eq. 18 with t0 of Eq. 19).

@@ -559,6 +559,40 @@ Result run(const RunContext& ctx) {
         res.scalar("tc_spread_log10K_early", spread, "1", "largest spread of the seed-mean log10(K/K0) among the t_c runs for t <= tc_compare_time");
         res.scalar("tc_spread_time", spread_t, "s", "time of that largest spread");
         res.scalar("tc_spread_z_early", spread_z, "1", "that spread over its standard error");
+        // Sec. 6: TCED "does not affect the system's behaviour as long as t_c is small enough",
+        // checked over the whole run, not only t <= tc_compare_time: the largest spread of the
+        // seed-mean log10 K among the t_c <= tc_small_max runs at log-spaced times from
+        // t_cmp/1000 to the latest time all runs reach, in units of the combined standard error of
+        // the two extreme curves at that time; and the largest TC-elastic share among them.
+        {
+            double spread_all = 0, z_all = 0, t_at = NAN, el_max = 0;
+            const double tc_small = p.real("tc_small_max");
+            for (std::size_t b = 0; b < tcs.size(); ++b)
+                if (tcs[b] <= tc_small) el_max = std::max(el_max, el_frac[b]);
+            const int steps = int(std::ceil(10 * std::log10(t_common / (t_cmp / 1000))));
+            for (int s = 0; s <= steps; ++s) {
+                const double t = std::min(t_common, t_cmp / 1000 * std::pow(10.0, 0.1 * s));
+                double lo = INFINITY, hi = -INFINITY, elo = 0, ehi = 0;
+                int used = 0;
+                for (std::size_t b = 0; b < tcs.size(); ++b) {
+                    if (tcs[b] > tc_small) continue;
+                    double se;
+                    const double v = mean_at(mean_t[fig9_idx[b]], t, se);
+                    if (!std::isfinite(v)) continue;
+                    ++used;
+                    if (v < lo) { lo = v; elo = se; }
+                    if (v > hi) { hi = v; ehi = se; }
+                }
+                if (used < 2) continue;
+                const double z = (hi - lo) / std::hypot(elo, ehi);
+                if (z > z_all) { z_all = z; spread_all = hi - lo; t_at = t; }
+            }
+            res.scalar("tc_small_spread_z_all", z_all, "1",
+                       "largest spread of the seed-mean log10(K/K0) among the runs with t_c <= tc_small_max over the whole run, in combined standard errors");
+            res.scalar("tc_small_spread_log10K_all", spread_all, "1", "that spread in decades");
+            res.scalar("tc_small_spread_time", t_at, "s", "time of that spread");
+            res.scalar("tc_small_elastic_fraction_max", el_max, "1", "largest TC-elastic share of all collisions at the end among the runs with t_c <= tc_small_max");
+        }
         // Later: K of the largest t_c against K of the smallest at the common end time.
         const auto imax = std::size_t(std::max_element(tcs.begin(), tcs.end()) - tcs.begin());
         const auto imin = std::size_t(std::min_element(tcs.begin(), tcs.end()) - tcs.begin());

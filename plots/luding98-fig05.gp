@@ -14,10 +14,11 @@ L = STATS_max
 ncell = 5
 
 do for [fmt in "png pdf"] {
-  if (fmt eq "png") { set terminal pngcairo size 1350,920 enhanced font "Sans,11" }
-  else { set terminal pdfcairo size 10in,6.8in enhanced font "Sans,9" }
+  if (fmt eq "png") { set terminal pngcairo size 1350,1000 enhanced font "Sans,11" }
+  else { set terminal pdfcairo size 10in,7.4in enhanced font "Sans,9" }
   set output outbase.'.'.fmt
-  set multiplot layout 2,3
+  set multiplot layout 2,3 margins 0.06,0.98,0.06,0.88 spacing 0.06,0.1 title \
+    "Top: disks at t = 1 s with velocity arrows v × τ, τ chosen per panel so that a disk moving at the panel's v_{rms} gets an arrow of 0.8 d\n(the paper scales its panels by 1, 3, 7 in unstated units; we print τ instead, the velocity ordering they imply is checked as a claim).\nBottom: principal stresses of Eq. (9) per cell (0.5–1 s): each cell's two arms lie along the principal axes, length ∝ |σ|, the panel's σ_{max} spanning 0.9 cell;\nblue arm: the larger compression, orange: the smaller (as the paper, each panel is scaled to its own σ_{max})" font ",10"
   set size ratio -1
   set xrange [0:L]
   set yrange [0:L]

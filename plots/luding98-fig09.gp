@@ -7,11 +7,18 @@ set datafile missing "NaN"
 summary = datadir.'/fig9_summary.tsv'
 tlist = system("awk -F'\t' 'NR>1{printf \"%s \", $1}' ".summary)
 n = words(tlist)
-colors = "#0072B2 #D55E00 #009E73 #CC79A7 #E69F00 #56B4E9 #000000"
+# Five t_c in distinct hues (no two oranges) and dash types, so that every curve can be told apart
+# in print and by colour-blind readers.
+colors = "#000000 #0072B2 #009E73 #D55E00 #CC79A7 #56B4E9 #E69F00"
 run(k) = datadir.'/run_r0.6_tc'.word(tlist, k).'.tsv'
 mt(k) = datadir.'/mean_t_r0.6_tc'.word(tlist, k).'.tsv'
 mc(k) = datadir.'/mean_cn_r0.6_tc'.word(tlist, k).'.tsv'
 lab(k) = sprintf("t_c = %s s", word(tlist, k))
+set print $guide25
+print sprintf("10\t0.4\n100\t%g", 0.4*10**-2.5)
+set print $guide7
+print sprintf("100\t%g\n%g\t%g", 0.4*10**-2.5, 10**2.5, 0.4*10**-2.5*10**-3.5)
+unset print
 do for [fmt in "png pdf"] {
   if (fmt eq "png") { set terminal pngcairo size 1400,560 enhanced font "Sans,11" }
   else { set terminal pdfcairo size 10in,4in enhanced font "Sans,9" }
@@ -31,11 +38,13 @@ do for [fmt in "png pdf"] {
   set xlabel "C/N"
   set xrange [0.1:*]
   set title "(b) r = 0.6: K against C/N; dashed: (C/N)^{-2.5}, dotted: (C/N)^{-7}"
-  a = 10**(2.5*log10(10)) * 0.4   # anchors chosen to sit near the curves
+  # The guides are straight lines in log-log axes, drawn through two points each (a function
+  # sampled over a sub-range of a log axis makes gnuplot warn about the linked axis mapping):
+  # (C/N)^-2.5 from (10, 0.4) to C/N = 100, then (C/N)^-7 for half a decade.
   plot for [k=1:n] run(k) using "C_over_N":"K_over_K0" with lines lw 0.8 lc rgb word(colors, (k-1)%7+1) notitle, \
        for [k=1:n] mc(k) using "C_over_N":(10**column("log10_K_over_K0")) with lines lw 2.5 lc rgb word(colors, (k-1)%7+1) title lab(k), \
-       [10:100] 0.4*(x/10)**-2.5 with lines lw 1.5 dt 2 lc rgb "black" notitle, \
-       [100:1000] 0.4*10**-2.5*(x/100)**-7 with lines lw 1.5 dt 3 lc rgb "black" notitle
+       $guide25 using 1:2 with lines lw 1.5 dt 2 lc rgb "black" notitle, \
+       $guide7 using 1:2 with lines lw 1.5 dt 3 lc rgb "black" notitle
   unset multiplot
   unset output
 }
