@@ -85,4 +85,6 @@ TEST(DsmcCheckpoint, RunUntilResumesBitIdentical) {
     DsmcEngine resumed(first.save_state());
     resumed.run_until(t2);
     expect_identical(whole, resumed);
+    // Something happened after the restart: collisions, not just free flight.
+    EXPECT_GT(whole.total_collisions(), first.total_collisions());
 }
