@@ -375,6 +375,11 @@ TEST(DsmcKineticTheory, VariantsAgainstKineticTheory) {
         {"norepeat", v(2, F::mean, true, P::uniform, true)},
         {"nearest", v(2, F::mean, true, P::nearest, true)},
         {"nearest-block3", v(2, F::cell, true, P::nearest, true, 3)},
+        {"nearest-step", [&] {
+             DsmcConfig c = v(2, F::mean, true, P::nearest, true);
+             c.mft_fraction = 0.05;
+             return c;
+         }()},
         {"cells10", v(10, F::mean, true, P::uniform, false)},
         {"cells10-cell", v(10, F::cell, true, P::uniform, false)},
     };
