@@ -23,15 +23,20 @@ declare -A variants=(
   [random-start]="initial_positions=random"
   [tc1e-4]="t_c=1e-4"
   [rough]="mu=0.5"
+  # The run-to-run scatter: the default with other seeds.
+  [seed2]="seed=2"
+  [seed3]="seed=3"
 )
-order=(default tc-both vbar+10% vbar+20% r0.83 r0.85 equil100 random-start tc1e-4 rough)
+order=(default seed2 seed3 tc-both vbar+10% vbar+20% r0.83 r0.85 equil100 random-start tc1e-4 rough)
 if (($#)); then order=("$@"); fi
 for v in "${order[@]}"; do
   [ -n "${variants[$v]+x}" ] || { echo "unknown variant $v" >&2; exit 2; }
   dir="$out/$v"
   if [ ! -f "$dir/cluster-growth/summary.json" ]; then
     args=(--set cn_end=200 --set tc_compare_until=0)
-    for s in ${variants[$v]}; do args+=(--set "$s"); done
+    for s in ${variants[$v]}; do
+      if [[ $s == seed=* ]]; then args+=(--seed "${s#seed=}"); else args+=(--set "$s"); fi
+    done
     echo "== $v: granrepro cluster-growth --scale $scale ${args[*]}" >&2
     "$bin" cluster-growth --scale "$scale" --threads "$threads" --quiet --out "$dir" "${args[@]}" > /dev/null || true
   fi

@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
-# DSMC variants against ED (Luding 1998 Secs. 2.4, 3.3; issue 16): every variant runs the cooling
-# experiment (equilibration, ED and DSMC from the same state, for each seed) and the table lists,
-# per variant, what the claims in expected/cooling.toml look at.
-#   scripts/studies/dsmc_variants.sh                 paper scale, 3 seeds (about 3-6 min per variant on 2 cores)
+# DSMC variants against ED (Luding 1998 Secs. 2.4, 3.3; issue 16): one ED reference run of the
+# cooling experiment (equilibration, ED and default DSMC for each seed), then every variant as
+# DSMC alone from the same equilibrated states (run_ed=false); the table lists, per variant, what
+# the claims in expected/cooling.toml look at. The study behind Sk_ed_dsmc_agree.
+#   scripts/studies/dsmc_variants.sh                 paper scale, 3 seeds (ED reference ~3 CPU-min, then 0.5-3
+#                                                    CPU-min per variant; 2 d cells are the slow ones)
 #   SCALE=quick scripts/studies/dsmc_variants.sh     quick scale
 #   scripts/studies/dsmc_variants.sh nearest paper   only these variants
 # Runs go to $OUT (default out-studies/dsmc-variants/<variant>); reruns reuse finished runs.
