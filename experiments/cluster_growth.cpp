@@ -10,6 +10,14 @@
 // C/N = omega0 t0 ln(1 + t/t0) = 4/(1-r^2) ln(1 + t/t0) = 7.3 at t = 0.04 s, the paper's
 // "C/N = 8, i.e. t = 0.04 s"; counting a pair collision once would give 3.7.
 //
+// TC-elastic share, three ways (Sec. 4.2 speaks of "the fraction of particles that have collisions
+// with a collision frequency larger than 1/t_c"): (1) the engine's share of pair collisions made
+// elastic by Eq. (7) under the pair rule in force ("either" or "both" partners); (2) per particle,
+// Eq. (7) literally: the share of particle-collisions (each pair collision counts for both
+// partners) that came within t_c of that particle's previous one; (3) the fraction of particles
+// whose latest collision came within t_c of the one before (current collision frequency > 1/t_c).
+// With tc_compare_until > 0 the other pair rule runs beside the main one from the same state.
+//
 // Why t = t_base 2^k: the paper's instants 0.04, 0.64 and 10.24 s are 0.01 s times powers of two,
 // and with Δt = t/2 the window of one instant starts exactly at the previous instant, so storing
 // the per-particle counts at every instant gives N_c = (count(t) - count(t/2)) / (t/2) with no
@@ -32,6 +40,7 @@
 #include "io/ed_state_file.hpp"
 #include "observables/collision_rate_fit.hpp"
 #include "observables/rate_histogram.hpp"
+#include "harness/parallel_sweep.hpp"
 
 namespace granrepro::experiments {
 
@@ -54,7 +63,10 @@ struct Instant {
     RateHistogram hist;
     CollisionRateFit poisson, expo, power;
     CollisionRateFit poisson_full; // Eq. (20) for the counts over (0, t]
-    double mean_rate = 0, tail_fraction = 0;
+    CollisionRateFit power_tail, expo_tail; // Eqs. (22), (21) over N_c >= tail_fit_from x mean N_c
+    double tail_lo = 0;                    // that lower end [1/s]
+    double mean_rate = 0, sd_rate = 0, tail_fraction = 0;
+    double fast_fraction = 0; // particles with a collision within t_c of their previous one in (t/2, t]
 };
 
 RateHistogram histogram(const std::vector<double>& rate, double window, const ParameterSet& p) {
@@ -68,6 +80,17 @@ RateHistogram histogram(const std::vector<double>& rate, double window, const Pa
     const double hi = gsl_stats_quantile_from_sorted_data(sorted.data(), 1, sorted.size(), p.real("hist_quantile"));
     return RateHistogram::make(rate, window, RateHistogram::Binning::Linear, int(p.integer("hist_bins")), 0.0,
                                std::max(hi, 2.0 / window));
+}
+
+CollisionRateFit fit_range(const RateHistogram& h, CollisionRateFit::Model m, double lo) {
+    try {
+        return CollisionRateFit::fit(h, m, lo, INFINITY);
+    } catch (const std::exception&) {
+        CollisionRateFit f;
+        f.model = m;
+        f.value = f.error = f.chi2_reduced = NAN;
+        return f;
+    }
 }
 
 CollisionRateFit fit(const RateHistogram& h, CollisionRateFit::Model m) {
@@ -89,10 +112,11 @@ std::string label(const char* prefix, double v) {
 
 // The per-particle rates and counts of an instant fix everything else in it; the checkpoint
 // stores only those (and the positions), and a resumed run recomputes the rest identically.
-Instant make_instant(double t, double cn, double elastic_cn, std::vector<double> rate,
+Instant make_instant(double t, double cn, double elastic_cn, double fast_fraction, std::vector<double> rate,
                      const std::vector<std::uint64_t>& counts, std::vector<Vec2> pos, const ParameterSet& p) {
     const std::size_t n = rate.size();
     Instant in;
+    in.fast_fraction = fast_fraction;
     in.t = t;
     in.window = t / 2;
     in.cn = cn;
@@ -102,11 +126,18 @@ Instant make_instant(double t, double cn, double elastic_cn, std::vector<double>
     for (double r : in.rate)
         if (r > p.real("tail_rate")) ++tail;
     in.mean_rate = gsl_stats_mean(in.rate.data(), 1, n);
+    in.sd_rate = gsl_stats_sd(in.rate.data(), 1, n);
     in.tail_fraction = double(tail) / double(n);
     in.hist = histogram(in.rate, in.window, p);
     in.poisson = fit(in.hist, CollisionRateFit::Model::Poisson);
     in.expo = fit(in.hist, CollisionRateFit::Model::Exponential);
     in.power = fit(in.hist, CollisionRateFit::Model::PowerLaw);
+    // The tail alone, as the paper reads Fig. 12(b,c): "the probability for large collision
+    // frequencies ... can now be approximated by a power law". Still normalised over all N_c (no
+    // free amplitude), so B is fixed by the tail's height and curvature.
+    in.tail_lo = p.real("tail_fit_from") * in.mean_rate;
+    in.power_tail = fit_range(in.hist, CollisionRateFit::Model::PowerLaw, in.tail_lo);
+    in.expo_tail = fit_range(in.hist, CollisionRateFit::Model::Exponential, in.tail_lo);
     // The same Poisson fit with the counts since t = 0 (window t instead of t/2): the paper's
     // chi = 6.5 at C/N = 8 is compared with both readings.
     std::vector<double> full(n);
@@ -122,13 +153,19 @@ struct LoopState {
     double omega_eq = 0;            // elastic collision rate of the equilibration [1/s]
     double wall_before = 0;         // wall seconds of earlier, interrupted parts [s]
     std::vector<double> ts, ks, kxs, kys, cns, ecns;
+    std::vector<double> fast_share; // per sample: cumulative share of particle-collisions within t_c of the particle's previous one
+    std::vector<double> hot;        // per sample: fraction of particles whose latest interval was <= t_c
     std::vector<Instant> instants;
     std::vector<std::vector<std::uint64_t>> instant_counts; // counts at each instant (for resume)
     std::vector<std::uint64_t> prev_counts;                 // at the previous instant t/2
+    // Per-particle Eq. (7) bookkeeping from the collision records (observer state).
+    std::vector<double> last_t, last_interval;              // [s]; -inf / +inf before the first
+    std::vector<std::uint32_t> fast, prev_fast;             // collisions within t_c of the previous one, and at t/2
+    std::uint64_t fast_total = 0;                           // their sum over particles
 };
 
 constexpr const char* kRunSchema = "granrepro-cluster-growth-run";
-constexpr long kRunSchemaVersion = 1;
+constexpr long kRunSchemaVersion = 2;
 
 void save_loop(const H5Object& root, const LoopState& s, const EdEngine& eng, double wall_now) {
     root.stamp_schema(kRunSchema, kRunSchemaVersion);
@@ -143,7 +180,14 @@ void save_loop(const H5Object& root, const LoopState& s, const EdEngine& eng, do
     g.array("Ky", s.kys);
     g.array("C_over_N", s.cns);
     g.array("elastic_C_over_N", s.ecns);
+    g.array("fast_share", s.fast_share);
+    g.array("hot", s.hot);
     g.array("prev_counts", s.prev_counts);
+    g.array("last_t", s.last_t);
+    g.array("last_interval", s.last_interval);
+    g.array("fast", s.fast);
+    g.array("prev_fast", s.prev_fast);
+    g.attr_u64("fast_total", s.fast_total);
     g.attr("instants", long(s.instants.size()));
     for (std::size_t k = 0; k < s.instants.size(); ++k) {
         const Instant& in = s.instants[k];
@@ -151,6 +195,7 @@ void save_loop(const H5Object& root, const LoopState& s, const EdEngine& eng, do
         h.attr("t", in.t);
         h.attr("cn", in.cn);
         h.attr("elastic_cn", in.elastic_cn);
+        h.attr("fast_fraction", in.fast_fraction);
         h.array("rate", in.rate);
         h.array("counts", s.instant_counts[k]);
         h.vec2_array("position", in.pos);
@@ -171,17 +216,200 @@ LoopState load_loop(const H5Object& root, const ParameterSet& p, EdState& engine
     s.kys = g.read_array<double>("Ky");
     s.cns = g.read_array<double>("C_over_N");
     s.ecns = g.read_array<double>("elastic_C_over_N");
+    s.fast_share = g.read_array<double>("fast_share");
+    s.hot = g.read_array<double>("hot");
     s.prev_counts = g.read_array<std::uint64_t>("prev_counts");
+    s.last_t = g.read_array<double>("last_t");
+    s.last_interval = g.read_array<double>("last_interval");
+    s.fast = g.read_array<std::uint32_t>("fast");
+    s.prev_fast = g.read_array<std::uint32_t>("prev_fast");
+    s.fast_total = g.read_u64_attr("fast_total");
     const long count = g.read_long_attr("instants");
     for (long k = 0; k < count; ++k) {
         const H5Object h = g.open_group("instant" + std::to_string(k));
         std::vector<Vec2> pos = h.read_vec2_array("position");
         s.instant_counts.push_back(h.read_array<std::uint64_t>("counts"));
         s.instants.push_back(make_instant(h.read_double_attr("t"), h.read_double_attr("cn"),
-                                          h.read_double_attr("elastic_cn"), h.read_array<double>("rate"),
-                                          s.instant_counts.back(), std::move(pos), p));
+                                          h.read_double_attr("elastic_cn"), h.read_double_attr("fast_fraction"),
+                                          h.read_array<double>("rate"), s.instant_counts.back(), std::move(pos), p));
     }
     return s;
+}
+
+// The initial state: disks on a square lattice (Sec. 4.1) or placed at random, Maxwellian
+// velocities, equilibrated elastically.
+EquilibratedGas initial_gas(const RunContext& ctx, double L, const std::vector<double>& rad, const std::vector<double>& mass) {
+    const ParameterSet& p = ctx.params;
+    RngStream rng(ctx.seed, 0);
+    if (p.text("initial_positions") == "lattice")
+        return equilibrated_lattice_gas(L, rad, mass, p.real("vbar"), p.real("equilibration"), rng);
+    std::vector<Vec2> pos = random_positions(rad, L, L, true, true, rng);
+    std::vector<Vec2> vel = maxwellian_velocities(mass, p.real("vbar"), rng);
+    EdConfig cfg;
+    cfg.lx = cfg.ly = L;
+    cfg.law.r = 1.0;
+    EdEngine eq(cfg, pos, vel, rad, mass);
+    equilibrate(eq, p.real("equilibration"));
+    EquilibratedGas gas;
+    gas.collision_rate = eq.time() > 0 ? 2.0 * double(eq.total_collisions()) / double(mass.size()) / eq.time() : NAN;
+    gas.pos = eq.positions();
+    gas.vel = eq.velocities();
+    zero_momentum_and_scale(gas.vel, mass, p.real("vbar"));
+    return gas;
+}
+
+// One TCED run from the equilibrated state: samples at t_base 2^(j/m) until C/N >= cn_end at an
+// instant or t >= t_stop; resumes from its checkpoint `name` if there is one.
+struct RunOutcome {
+    LoopState st;
+    std::string error;
+    double wall = 0;
+    double events = 0, collisions = 0;
+};
+
+RunOutcome run_tced(const RunContext& ctx, const EquilibratedGas* gas, bool tc_both, double cn_end, double t_stop,
+                    const std::string& name, Progress* progress) {
+    const ParameterSet& p = ctx.params;
+    const long ns = p.integer("n_side");
+    const std::size_t n = std::size_t(ns * ns);
+    const double d = p.real("d"), L = p.real("box_over_d") * d;
+    const std::vector<double> rad(n, 0.5 * d), mass(n, p.real("mass"));
+    const int m = int(p.integer("samples_per_octave"));
+    const double t_base = p.real("t_base"), t_c = p.real("t_c");
+    RunCheckpoint checkpoint(ctx, name);
+    RunOutcome out;
+    LoopState& st = out.st;
+    EdState saved;
+    const bool resumed = checkpoint.load([&](const H5Object& root) { st = load_loop(root, p, saved); });
+    EdEngine eng = resumed ? EdEngine(saved) : [&] {
+        st.omega_eq = gas->collision_rate;
+        EdConfig cfg;
+        cfg.lx = cfg.ly = L;
+        cfg.law.r = p.real("r");
+        cfg.law.mu = p.real("mu");
+        cfg.law.beta0 = p.real("mu") > 0 ? 0.0 : -1.0;
+        cfg.t_c = t_c;
+        cfg.tc_both = tc_both;
+        EdEngine fresh(cfg, gas->pos, gas->vel, rad, mass);
+        const EdKineticEnergy k0 = fresh.kinetic_energy();
+        st.next_j = -3 * m;
+        st.ts = {0.0};
+        st.ks = {k0.total()};
+        st.kxs = {k0.kx};
+        st.kys = {k0.ky};
+        st.cns = {0.0};
+        st.ecns = {0.0};
+        st.fast_share = {0.0};
+        st.hot = {0.0};
+        st.last_t.assign(n, -INFINITY);
+        st.last_interval.assign(n, INFINITY);
+        st.fast.assign(n, 0);
+        return fresh;
+    }();
+    // Eq. (7) per particle, from the records: was this collision within t_c of the particle's
+    // previous one?
+    auto obs = [&st, t_c](const CollisionRecord& c) {
+        for (const int q : {c.i, c.j}) {
+            const auto k = std::size_t(q);
+            const double dt = c.t - st.last_t[k];
+            st.last_interval[k] = dt;
+            if (dt <= t_c) {
+                ++st.fast[k];
+                ++st.fast_total;
+            }
+            st.last_t[k] = c.t;
+        }
+    };
+    if (progress)
+        for (int j = -3 * m; j < st.next_j; ++j)
+            if (j % m == 0) progress->tick();
+    const auto wall0 = std::chrono::steady_clock::now();
+    auto wall_now = [&] {
+        return st.wall_before + std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
+    };
+    for (int j = st.next_j;; ++j) {
+        const double t = t_base * std::exp2(double(j) / m);
+        if (t > t_stop * (1 + 1e-12)) break;
+        try {
+            eng.run_until(t, obs);
+        } catch (const std::runtime_error& e) {
+            out.error = e.what(); // the collapse guard; keep what was measured
+            std::fprintf(stderr, "cluster-growth: %s\n", out.error.c_str());
+            break;
+        }
+        const EdKineticEnergy k = eng.kinetic_energy();
+        const double cn = 2.0 * double(eng.total_collisions()) / double(n);
+        st.ts.push_back(t);
+        st.ks.push_back(k.total());
+        st.kxs.push_back(k.kx);
+        st.kys.push_back(k.ky);
+        st.cns.push_back(cn);
+        st.ecns.push_back(2.0 * double(eng.elastic_collisions()) / double(n));
+        st.fast_share.push_back(eng.total_collisions() ? double(st.fast_total) / (2.0 * double(eng.total_collisions())) : 0.0);
+        std::size_t hot = 0;
+        for (double iv : st.last_interval)
+            if (iv <= t_c) ++hot;
+        st.hot.push_back(double(hot) / double(n));
+        st.next_j = j + 1;
+        if (j % m == 0) {
+            if (progress) progress->tick();
+            std::vector<std::uint64_t> counts = eng.collision_counts();
+            if (!st.prev_counts.empty()) {
+                std::vector<double> rate(n);
+                std::size_t fast_particles = 0;
+                for (std::size_t i = 0; i < n; ++i) {
+                    rate[i] = double(counts[i] - st.prev_counts[i]) / (t / 2);
+                    if (st.fast[i] > st.prev_fast[i]) ++fast_particles;
+                }
+                st.instants.push_back(make_instant(t, cn, st.ecns.back(), double(fast_particles) / double(n), std::move(rate), counts,
+                                                   eng.positions(), p));
+                st.instant_counts.push_back(counts);
+            }
+            st.prev_counts = std::move(counts);
+            st.prev_fast = st.fast;
+            if (cn >= cn_end || t >= p.real("t_max")) break;
+        }
+        if (checkpoint.due()) checkpoint.save([&](const H5Object& root) { save_loop(root, st, eng, wall_now()); });
+    }
+    out.wall = wall_now();
+    out.events = double(eng.events_processed());
+    out.collisions = double(eng.total_collisions());
+    return out;
+}
+
+// Mean of the Fig. 11 colour (N_c) over particles ranked by the local area fraction around them
+// (disks per cell of cluster_cell diameters, smoothed over the 3 x 3 block): the mean N_c in each
+// of `groups` equal-size groups from the most dilute to the densest.
+std::vector<double> rate_by_density(const Instant& in, double L, double cell, int groups) {
+    const auto nc = std::max<std::size_t>(3, std::size_t(L / cell));
+    std::vector<double> occ(nc * nc, 0.0);
+    auto index = [&](const Vec2& q) {
+        const auto ix = std::min(nc - 1, std::size_t(q.x / L * double(nc)));
+        const auto iy = std::min(nc - 1, std::size_t(q.y / L * double(nc)));
+        return std::array<std::size_t, 2>{ix, iy};
+    };
+    for (const Vec2& q : in.pos) {
+        const auto c = index(q);
+        occ[c[1] * nc + c[0]] += 1;
+    }
+    std::vector<std::pair<double, double>> dens_rate;
+    for (std::size_t i = 0; i < in.pos.size(); ++i) {
+        const auto c = index(in.pos[i]);
+        double s = 0;
+        for (std::size_t dy = 0; dy < 3; ++dy)
+            for (std::size_t dx = 0; dx < 3; ++dx) s += occ[((c[1] + nc + dy - 1) % nc) * nc + (c[0] + nc + dx - 1) % nc];
+        dens_rate.push_back({s, in.rate[i]});
+    }
+    std::sort(dens_rate.begin(), dens_rate.end()); // ties broken by rate: deterministic
+    std::vector<double> out(std::size_t(groups), 0.0);
+    const std::size_t n = dens_rate.size();
+    for (int g = 0; g < groups; ++g) {
+        const std::size_t a = n * std::size_t(g) / std::size_t(groups), b = n * std::size_t(g + 1) / std::size_t(groups);
+        double s = 0;
+        for (std::size_t i = a; i < b; ++i) s += dens_rate[i].second;
+        out[std::size_t(g)] = b > a ? s / double(b - a) : NAN;
+    }
+    return out;
 }
 
 // Index of the instant whose C/N is nearest to cn in log; -1 if none.
@@ -204,79 +432,24 @@ Result run(const RunContext& ctx) {
     const std::vector<double> rad(n, 0.5 * d), mass(n, p.real("mass"));
     const int m = int(p.integer("samples_per_octave"));
     const double t_base = p.real("t_base"), cn_end = p.real("cn_end"), t_max = p.real("t_max");
+    const bool tc_both = p.flag("tc_both");
+    const double compare_until = p.real("tc_compare_until");
 
-    // A resumed run continues from its last checkpoint; a fresh one equilibrates first.
-    RunCheckpoint checkpoint(ctx, "ed");
-    LoopState st;
-    EdState saved;
-    const bool resumed = checkpoint.load([&](const H5Object& root) { st = load_loop(root, p, saved); });
-    EdEngine eng = resumed ? EdEngine(saved) : [&] {
-        RngStream rng(ctx.seed, 0);
-        const EquilibratedGas gas = equilibrated_lattice_gas(L, rad, mass, p.real("vbar"), p.real("equilibration"), rng);
-        st.omega_eq = gas.collision_rate;
-        EdConfig cfg;
-        cfg.lx = cfg.ly = L;
-        cfg.law.r = r;
-        cfg.law.mu = p.real("mu");
-        cfg.law.beta0 = p.real("mu") > 0 ? 0.0 : -1.0;
-        cfg.t_c = p.real("t_c");
-        EdEngine fresh(cfg, gas.pos, gas.vel, rad, mass);
-        const EdKineticEnergy k0 = fresh.kinetic_energy();
-        st.next_j = -3 * m;
-        st.ts = {0.0};
-        st.ks = {k0.total()};
-        st.kxs = {k0.kx};
-        st.kys = {k0.ky};
-        st.cns = {0.0};
-        st.ecns = {0.0};
-        return fresh;
-    }();
-    const double omega_eq = st.omega_eq;
-
-    // ---- the run ------------------------------------------------------------------------------
-    std::string error;
-    struct Silent {
-        void operator()(const CollisionRecord&) const {}
-    } silent;
+    // The main run (pair rule tc_both) to cn_end and, beside it, the other pair rule up to
+    // tc_compare_until, both from one equilibrated state (rebuilt deterministically on resume).
+    const EquilibratedGas gas = initial_gas(ctx, L, rad, mass);
+    const long runs = compare_until > 0 ? 2 : 1;
+    RunOutcome main_run, other_run;
     Progress progress("cluster-growth", long(std::ceil(std::log2(t_max / t_base))) + 4, ctx.quiet);
-    for (int j = -3 * m; j < st.next_j; ++j)
-        if (j % m == 0) progress.tick();
-    const auto wall0 = std::chrono::steady_clock::now();
-    auto wall_now = [&] {
-        return st.wall_before + std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
-    };
-    for (int j = st.next_j;; ++j) {
-        const double t = t_base * std::exp2(double(j) / m);
-        try {
-            eng.run_until(t, silent);
-        } catch (const std::runtime_error& e) {
-            error = e.what(); // the collapse guard; keep what was measured
-            std::fprintf(stderr, "cluster-growth: %s\n", error.c_str());
-            break;
-        }
-        const EdKineticEnergy k = eng.kinetic_energy();
-        const double cn = 2.0 * double(eng.total_collisions()) / double(n);
-        st.ts.push_back(t);
-        st.ks.push_back(k.total());
-        st.kxs.push_back(k.kx);
-        st.kys.push_back(k.ky);
-        st.cns.push_back(cn);
-        st.ecns.push_back(2.0 * double(eng.elastic_collisions()) / double(n));
-        st.next_j = j + 1;
-        if (j % m == 0) {
-            progress.tick();
-            std::vector<std::uint64_t> counts = eng.collision_counts();
-            if (!st.prev_counts.empty()) {
-                std::vector<double> rate(n);
-                for (std::size_t i = 0; i < n; ++i) rate[i] = double(counts[i] - st.prev_counts[i]) / (t / 2);
-                st.instants.push_back(make_instant(t, cn, st.ecns.back(), std::move(rate), counts, eng.positions(), p));
-                st.instant_counts.push_back(counts);
-            }
-            st.prev_counts = std::move(counts);
-            if (cn >= cn_end || t >= t_max) break;
-        }
-        if (checkpoint.due()) checkpoint.save([&](const H5Object& root) { save_loop(root, st, eng, wall_now()); });
-    }
+    parallel_sweep(runs, ctx.threads, nullptr, [&](long k) {
+        if (k == 0)
+            main_run = run_tced(ctx, &gas, tc_both, cn_end, t_max, "ed", &progress);
+        else
+            other_run = run_tced(ctx, &gas, !tc_both, INFINITY, compare_until, "ed_other_rule", nullptr);
+    });
+    const LoopState& st = main_run.st;
+    const std::string& error = main_run.error;
+    const double wall = main_run.wall;
     const auto& ts = st.ts;
     const auto& ks = st.ks;
     const auto& kxs = st.kxs;
@@ -284,7 +457,6 @@ Result run(const RunContext& ctx) {
     const auto& cns = st.cns;
     const auto& ecns = st.ecns;
     const auto& instants = st.instants;
-    const double wall = wall_now();
 
     Result res;
     const double rho = M_PI / 4 * double(n) / (p.real("box_over_d") * p.real("box_over_d"));
@@ -295,11 +467,13 @@ Result run(const RunContext& ctx) {
     res.scalar("N", double(n), "1", "number of disks");
     res.scalar("rho", rho, "1", "area fraction (pi/4) N / L^2");
     res.scalar("t0_kinetic", t0, "s", "t0 of Eq. (18) from kinetic theory (sqrt(2 pi) in Eq. 19; see cooling.cpp)");
-    res.scalar("omega_equilibration_over_enskog", omega_eq / omega_enskog, "1", "elastic collision rate per particle during equilibration over Enskog's");
+    res.scalar("omega_equilibration_over_enskog", st.omega_eq / omega_enskog, "1", "elastic collision rate per particle during equilibration over Enskog's");
     res.scalar("wall_seconds_run", wall, "s", "wall time of the cooling run (after equilibration)");
-    res.scalar("events_per_second", double(eng.events_processed()) / wall, "1/s", "ED events (collisions, cell crossings, stale) per second");
-    res.scalar("collisions_per_second", double(eng.total_collisions()) / wall, "1/s", "pair collisions per second");
-    res.scalar("events", double(eng.events_processed()), "1", "ED events of the cooling run");
+    res.scalar("events_per_second", main_run.events / wall, "1/s", "ED events (collisions, cell crossings, stale) per second");
+    res.scalar("collisions_per_second", main_run.collisions / wall, "1/s", "pair collisions per second");
+    res.scalar("events", main_run.events, "1", "ED events of the cooling run");
+    res.scalar("tc_both", tc_both ? 1.0 : 0.0, "1", "pair rule of the main run: 1 = both partners within t_c, 0 = either");
+    if (runs == 2) res.scalar("wall_seconds_other_rule", other_run.wall, "s", "wall time of the run with the other pair rule");
     res.scalar("t_end", ts.back(), "s", "end of the run");
     res.scalar("C_over_N_end", cns.back(), "1", "collisions per particle at the end");
     res.scalar("stopped_by_engine", error.empty() ? 0.0 : 1.0, "1", "1 if the collapse guard stopped the run");
@@ -321,6 +495,8 @@ Result run(const RunContext& ctx) {
         t.add("C_over_N", "1").values = cns;
         t.add("elastic_C_over_N", "1").values = ecns;
         t.add("elastic_fraction", "1").values = efrac;
+        t.add("own_interval_share", "1").values = st.fast_share;
+        t.add("hot_particles", "1").values = st.hot;
         // Guide lines of Fig. 10(a): slope -2, the t >> t0 asymptote of Eq. (18), (t/t0)^-2; slope -1
         // through the geometric mean of the samples from late_slope_from on.
         double lsum = 0;
@@ -357,23 +533,46 @@ Result run(const RunContext& ctx) {
         res.scalar("K_slope_late", late.exponent, "1", "average slope of log K against log t from late_slope_from to the end (GSL fit)");
         res.scalar("K_slope_late_err", late.exponent_err, "1", "its standard error (residual scatter of the 13-per-decade samples)");
         res.scalar("K_over_eq18_end", kk.back() / e18.back(), "1", "K over Eq. (18) at the end: how much slower than homogeneous cooling");
-        double early_max = 0, all_max = 0;
-        for (std::size_t i = 1; i < ts.size(); ++i) {
-            if (!(cns[i] > 0)) continue;
-            all_max = std::max(all_max, efrac[i]);
-            if (ts[i] <= p.real("elastic_until")) early_max = std::max(early_max, efrac[i]);
-        }
-        res.scalar("elastic_fraction_early_max", early_max, "1", "largest TC-elastic share of all collisions for t <= elastic_until");
-        res.scalar("elastic_fraction_max", all_max, "1", "largest TC-elastic share of all collisions over the run");
-        res.scalar("elastic_per_particle_end", ecns.back(), "1", "TC-elastic collisions per particle at the end");
-        auto cn_at = [&](double tq) -> double {
-            for (std::size_t i = 0; i < ts.size(); ++i)
-                if (std::abs(ts[i] / tq - 1) < 1e-9) return cns[i];
-            return NAN;
+        // The TC-elastic share three ways (see the top of this file), for t <= elastic_until and
+        // over the whole run, for the main pair rule and (with tc_compare_until) the other one.
+        const double until = p.real("elastic_until");
+        auto shares = [&](const LoopState& ls, const std::string& tag, const char* rule) {
+            double coll = 0, coll_all = 0, own = 0, hot_max = 0, hot_sum = 0;
+            int hot_n = 0;
+            for (std::size_t i = 1; i < ls.ts.size(); ++i) {
+                if (!(ls.cns[i] > 0)) continue;
+                coll_all = std::max(coll_all, ls.ecns[i] / ls.cns[i]);
+                if (ls.ts[i] > until) continue;
+                coll = std::max(coll, ls.ecns[i] / ls.cns[i]);
+                own = std::max(own, ls.fast_share[i]);
+                hot_max = std::max(hot_max, ls.hot[i]);
+                hot_sum += ls.hot[i];
+                ++hot_n;
+            }
+            const std::string r = std::string(" (") + rule + " rule)";
+            res.scalar("elastic_fraction_early_max" + tag, coll, "1", "largest TC-elastic share of all pair collisions, cumulative, for t <= elastic_until" + r);
+            res.scalar("elastic_fraction_max" + tag, coll_all, "1", "largest TC-elastic share of all pair collisions over the run" + r);
+            res.scalar("own_interval_share_early_max" + tag, own, "1",
+                       "largest cumulative share of particle-collisions within t_c of that particle's previous one, t <= elastic_until" + r);
+            res.scalar("hot_particles_early_max" + tag, hot_max, "1",
+                       "largest fraction of particles whose latest collision came within t_c of the previous one, samples t <= elastic_until" + r);
+            res.scalar("hot_particles_early_mean" + tag, hot_n ? hot_sum / hot_n : NAN, "1", "its mean over those (log-spaced) samples" + r);
+            auto at = [&](double tq, const std::vector<double>& v) -> double {
+                for (std::size_t i = 0; i < ls.ts.size(); ++i)
+                    if (std::abs(ls.ts[i] / tq - 1) < 1e-9) return v[i];
+                return NAN;
+            };
+            for (const char* when : {"0.04", "0.64", "10.24"}) {
+                const double tq = std::stod(when);
+                res.scalar(std::string("C_over_N_at_") + when + "s" + tag, at(tq, ls.cns), "1",
+                           std::string("C/N = (sum of per-particle counts)/N = 2 pair collisions/N at t = ") + when + " s" + r);
+                res.scalar(std::string("pairs_over_N_at_") + when + "s" + tag, 0.5 * at(tq, ls.cns), "1",
+                           std::string("pair collisions/N (each collision counted once) at t = ") + when + " s" + r);
+            }
         };
-        res.scalar("C_over_N_at_0.04s", cn_at(0.04), "1", "C/N at t = 0.04 s");
-        res.scalar("C_over_N_at_0.64s", cn_at(0.64), "1", "C/N at t = 0.64 s");
-        res.scalar("C_over_N_at_10.24s", cn_at(10.24), "1", "C/N at t = 10.24 s");
+        shares(st, "", tc_both ? "both" : "either");
+        if (runs == 2) shares(other_run.st, tc_both ? "_either" : "_both", tc_both ? "either" : "both");
+        res.scalar("elastic_per_particle_end", ecns.back(), "1", "TC-elastic collisions per particle at the end");
         res.scalar("C_over_N_eq18_at_0.64s", 4 / (1 - r * r) * std::log(1 + 0.64 / t0), "1",
                    "C/N at 0.64 s if the gas stayed homogeneous: 4/(1-r^2) ln(1 + t/t0)");
     }
@@ -390,6 +589,8 @@ Result run(const RunContext& ctx) {
         col("C_over_N", "1", [](const Instant& in) { return in.cn; });
         col("elastic_C_over_N", "1", [](const Instant& in) { return in.elastic_cn; });
         col("mean_Nc", "1/s", [](const Instant& in) { return in.mean_rate; });
+        col("sd_Nc", "1/s", [](const Instant& in) { return in.sd_rate; });
+        col("fast_particles", "1", [](const Instant& in) { return in.fast_fraction; });
         col("tail_fraction", "1", [](const Instant& in) { return in.tail_fraction; });
         col("chi", "1", [](const Instant& in) { return in.poisson.value; });
         col("chi_err", "1", [](const Instant& in) { return in.poisson.error; });
@@ -400,7 +601,27 @@ Result run(const RunContext& ctx) {
         col("B", "1/s", [](const Instant& in) { return in.power.value; });
         col("B_err", "1/s", [](const Instant& in) { return in.power.error; });
         col("chi2red_powerlaw", "1", [](const Instant& in) { return in.power.chi2_reduced; });
+        col("tail_from", "1/s", [](const Instant& in) { return in.tail_lo; });
+        col("B_tail", "1/s", [](const Instant& in) { return in.power_tail.value; });
+        col("B_tail_err", "1/s", [](const Instant& in) { return in.power_tail.error; });
+        col("chi2red_powerlaw_tail", "1", [](const Instant& in) { return in.power_tail.chi2_reduced; });
+        col("A_tail", "1/s", [](const Instant& in) { return in.expo_tail.value; });
+        col("chi2red_exponential_tail", "1", [](const Instant& in) { return in.expo_tail.chi2_reduced; });
         col("bins", "1", [](const Instant& in) { return double(in.hist.centres.size()); });
+    }
+    // Sec. 4.3: "a Poisson distribution whose mean and width chi/Dt continuously decrease with time
+    // for C/N <= 39": the share of the consecutive instants with C/N <= 39 over which both the mean
+    // and the standard deviation of N_c fall.
+    {
+        int pairs = 0, falling = 0;
+        for (std::size_t k = 1; k < instants.size(); ++k)
+            if (instants[k].cn <= p.real("poisson_until_cn")) {
+                ++pairs;
+                if (instants[k].mean_rate < instants[k - 1].mean_rate && instants[k].sd_rate < instants[k - 1].sd_rate) ++falling;
+            }
+        res.scalar("poisson_mean_width_falling_share", pairs ? double(falling) / pairs : NAN, "1",
+                   "share of consecutive instants with C/N <= poisson_until_cn where mean and standard deviation of N_c both fall");
+        res.scalar("poisson_mean_width_pairs", double(pairs), "1", "number of such pairs of instants");
     }
     // The instants nearest to the paper's C/N values: histogram tables and scalars for the claims.
     {
@@ -421,7 +642,7 @@ Result run(const RunContext& ctx) {
             mt.push_back(in.t);
             mw.push_back(in.window);
             Table& h = res.table("pnc_" + std::to_string(s), "P(N_c) and the fitted Eqs. (20)-(22) at t = " + label("", in.t) + " s");
-            std::vector<double> pp, pe, pw, lo, hi;
+            std::vector<double> pp, pe, pw, pwt, pet;
             for (std::size_t b = 0; b < in.hist.centres.size(); ++b) {
                 const double w = in.hist.edges[b + 1] - std::max(0.0, in.hist.edges[b]);
                 auto model = [&](const CollisionRateFit& f) {
@@ -430,6 +651,10 @@ Result run(const RunContext& ctx) {
                 pp.push_back(model(in.poisson));
                 pe.push_back(model(in.expo));
                 pw.push_back(model(in.power));
+                // The tail fits only over the bins they were fitted to.
+                const bool tail = in.hist.edges[b] >= in.tail_lo;
+                pwt.push_back(tail ? model(in.power_tail) : NAN);
+                pet.push_back(tail ? model(in.expo_tail) : NAN);
             }
             h.add("N_c", "1/s").values = in.hist.centres;
             h.add("P", "s").values = in.hist.density;
@@ -437,6 +662,8 @@ Result run(const RunContext& ctx) {
             h.add("poisson_eq20", "s").values = pp;
             h.add("exponential_eq21", "s").values = pe;
             h.add("powerlaw_eq22", "s").values = pw;
+            h.add("powerlaw_eq22_tail", "s").values = pwt;
+            h.add("exponential_eq21_tail", "s").values = pet;
             const std::string tag = s < pcn.size() ? label("_cn", paper) : std::string("_last");
             res.scalar("cn_nearest" + tag, in.cn, "1", "our C/N at the instant nearest to the paper's");
             res.scalar("t_nearest" + tag, in.t, "s", "its time");
@@ -450,6 +677,10 @@ Result run(const RunContext& ctx) {
             res.scalar("A_err" + tag, in.expo.error, "1/s", "its standard error");
             res.scalar("chi2red_exponential" + tag, in.expo.chi2_reduced, "1", "Pearson chi^2/dof of the exponential fit");
             res.scalar("B" + tag, in.power.value, "1/s", "power law Eq. (22) B");
+            res.scalar("B_tail" + tag, in.power_tail.value, "1/s", "Eq. (22) B fitted to the tail N_c >= tail_fit_from x mean N_c");
+            res.scalar("B_tail_err" + tag, in.power_tail.error, "1/s", "its standard error");
+            res.scalar("powerlaw_over_exponential_chi2_tail" + tag, in.power_tail.chi2_reduced / in.expo_tail.chi2_reduced, "1",
+                       "chi^2/dof of Eq. (22) over that of Eq. (21), both fitted to the tail only (< 1: power law better there)");
             res.scalar("B_err" + tag, in.power.error, "1/s", "its standard error");
             res.scalar("chi2red_powerlaw" + tag, in.power.chi2_reduced, "1", "Pearson chi^2/dof of the power-law fit");
             res.scalar("mean_Nc" + tag, in.mean_rate, "1/s", "mean N_c");
@@ -498,6 +729,20 @@ Result run(const RunContext& ctx) {
             }
         res.scalar("B_geomean_70_1404", cnt ? std::exp(lsum / cnt) : NAN, "1/s", "geometric mean of B over the instants with 70 <= C/N <= 1404");
         res.scalar("B_min_70_1404", cnt ? bmin : NAN, "1/s", "smallest B there");
+        {
+            double ls = 0;
+            int c = 0, better = 0;
+            for (const auto& in : instants)
+                if (in.cn >= 70 && in.cn <= 1404 && std::isfinite(in.power_tail.value)) {
+                    ls += std::log(in.power_tail.value);
+                    ++c;
+                    if (in.power_tail.chi2_reduced < in.expo_tail.chi2_reduced) ++better;
+                }
+            res.scalar("B_tail_geomean_70_1404", c ? std::exp(ls / c) : NAN, "1/s",
+                       "geometric mean of the tail-fitted B over the instants with 70 <= C/N <= 1404");
+            res.scalar("powerlaw_better_tail_share_70_1404", c ? double(better) / c : NAN, "1",
+                       "share of those instants where Eq. (22) fits the tail better than Eq. (21)");
+        }
         res.scalar("B_max_70_1404", cnt ? bmax : NAN, "1/s", "largest B there");
         // From which C/N on the power law fits better than the exponential at every later instant.
         double from = NAN;
@@ -528,32 +773,70 @@ Result run(const RunContext& ctx) {
                    "share of the instants with C/N > 70 where Eq. (22) fits better than Eq. (21)");
     }
 
-    // ---- Fig. 11: snapshots --------------------------------------------------------------------
+    // ---- Fig. 11: snapshots at the paper's times ---------------------------------------------------
     {
-        std::vector<double> mp, mc, mt;
-        const auto& scn = p.reals("snapshot_cn");
-        for (std::size_t s = 0; s < scn.size(); ++s) {
-            const int k = nearest(instants, scn[s]);
-            if (k < 0) continue;
-            const Instant& in = instants[std::size_t(k)];
-            mp.push_back(scn[s]);
-            mc.push_back(in.cn);
-            mt.push_back(in.t);
+        std::vector<double> mt, mc;
+        std::vector<const Instant*> shown;
+        for (double tq : p.reals("snapshot_times"))
+            for (const auto& in : instants)
+                if (std::abs(in.t / tq - 1) < 1e-9) shown.push_back(&in);
+        // One colour range for all panels: from the smallest positive N_c to the largest.
+        double lo = INFINITY, hi = 0;
+        for (const Instant* in : shown)
+            for (double v : in->rate)
+                if (v > 0) {
+                    lo = std::min(lo, v);
+                    hi = std::max(hi, v);
+                }
+        for (const Instant* in : shown) {
+            mt.push_back(in->t);
+            mc.push_back(in->cn);
             Table& sn = res.table("snapshot_" + std::to_string(mt.size() - 1),
-                                  "positions and N_c over the last t/2 at t = " + label("", in.t) + " s");
+                                  "positions and N_c over the last t/2 at t = " + label("", in->t) + " s");
             std::vector<double> x, y;
-            for (const Vec2& q : in.pos) {
+            for (const Vec2& q : in->pos) {
                 x.push_back(q.x / d);
                 y.push_back(q.y / d);
             }
             sn.add("x_over_d", "1").values = std::move(x);
             sn.add("y_over_d", "1").values = std::move(y);
-            sn.add("N_c", "1/s").values = in.rate;
+            sn.add("N_c", "1/s").values = in->rate;
         }
-        Table& meta = res.table("fig11_selection", "instants of the snapshots");
-        meta.add("paper_C_over_N", "1").values = mp;
-        meta.add("C_over_N", "1").values = mc;
-        meta.add("t", "s").values = mt;
+        // Sec. 4.2: "in the bright regions in the centers of the clusters the collision frequency is
+        // largest". Particles ranked by the number of disks around them (cells of cluster_cell
+        // diameters, 3 x 3 block); mean N_c per tenth, densest tenth last. The claim looks at
+        // which tenth has the largest mean N_c.
+        const int groups = 10;
+        std::vector<double> top, ratio;
+        for (const Instant* in : shown) {
+            const auto g = rate_by_density(*in, L, p.real("cluster_cell") * d, groups);
+            top.push_back(double(std::max_element(g.begin(), g.end()) - g.begin() + 1));
+            ratio.push_back(g.back() / in->mean_rate);
+        }
+        {
+            Table& meta = res.table("fig11_selection", "instants of the snapshots, the common colour range, and N_c in the densest tenth");
+            meta.add("t", "s").values = mt;
+            meta.add("C_over_N", "1").values = mc;
+            meta.add("Nc_colour_lo", "1/s").values = std::vector<double>(mt.size(), lo);
+            meta.add("Nc_colour_hi", "1/s").values = std::vector<double>(mt.size(), hi);
+            meta.add("densest_tenth_with_max_Nc", "1").values = top;
+            meta.add("densest_tenth_Nc_over_mean", "1").values = ratio;
+        }
+        // From the first clustered snapshot on (C/N >= 70, Sec. 4.3): the smallest rank of the
+        // tenth with the largest mean N_c (10 = the densest at every such snapshot).
+        double worst = NAN, min_ratio = NAN;
+        for (std::size_t k = 0; k < shown.size(); ++k)
+            if (mc[k] >= 70) {
+                worst = std::isnan(worst) ? top[k] : std::min(worst, top[k]);
+                min_ratio = std::isnan(min_ratio) ? ratio[k] : std::min(min_ratio, ratio[k]);
+            }
+        res.scalar("densest_tenth_rank_of_max_Nc", worst, "1",
+                   "over the clustered snapshots (C/N >= 70): the lowest density rank (1-10) of the tenth of particles with the largest mean N_c");
+        res.scalar("densest_tenth_Nc_over_mean_min", min_ratio, "1", "the smallest ratio of the densest tenth's mean N_c to the overall mean there");
+        for (std::size_t k = 0; k < shown.size(); ++k) {
+            res.scalar("densest_tenth_Nc_over_mean" + label("_t", mt[k]), ratio[k], "1", "mean N_c of the densest tenth over the overall mean at this snapshot");
+            res.scalar("densest_tenth_rank_of_max_Nc" + label("_t", mt[k]), top[k], "1", "density rank (1-10) of the tenth with the largest mean N_c");
+        }
     }
     return res;
 }

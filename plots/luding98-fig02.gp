@@ -1,5 +1,6 @@
-# Luding (1998) Fig. 2: K/K0 against t/t0 from ED and DSMC with identical initial conditions,
-# and Eq. (18). t0 from kinetic theory (sqrt(2 pi) in Eq. 19; see experiments/cooling.cpp).
+# Luding (1998) Fig. 2: K/K0 against t/t0 from ED (solid) and DSMC (dash-dotted) with identical
+# initial conditions, and Eq. (18) dashed as in the caption. t0 from kinetic theory (sqrt(2 pi) in
+# Eq. 19; see experiments/cooling.cpp). The x axis starts at the first sample after t = 0.
 # Variables set by granrepro: datadir, outbase.
 set datafile separator "\t"
 set datafile missing "NaN"
@@ -7,6 +8,9 @@ set key autotitle columnhead
 ed = datadir.'/energy_ed.tsv'
 ds = datadir.'/energy_dsmc.tsv'
 have_dsmc = system("test -f ".ds." && echo 1 || echo 0") + 0
+# First sample after t = 0 (the log axis cannot show t = 0).
+stats ed using (column("t_over_t0") > 0 ? column("t_over_t0") : NaN) nooutput
+xlo = STATS_min
 do for [fmt in "png pdf"] {
   if (fmt eq "png") { set terminal pngcairo size 800,600 enhanced font "Sans,11" }
   else { set terminal pdfcairo size 5.5in,4.1in enhanced font "Sans,10" }
@@ -16,17 +20,17 @@ do for [fmt in "png pdf"] {
   set format y "10^{%L}"
   set xlabel "t/t_0"
   set ylabel "K/K_0"
-  set xrange [0.01:*]
+  set xrange [xlo:*]
   set grid lc rgb "#dddddd"
   set key bottom left box opaque
   set title "freely cooling gas, ρ = 0.25, r = 0.8"
   if (have_dsmc) {
     plot ed using "t_over_t0":"K_over_K0" with lines lw 2.5 lc rgb "#0072B2" title "ED", \
-         ds using "t_over_t0":"K_over_K0" with lines lw 2.5 dt 2 lc rgb "#D55E00" title "DSMC", \
-         ed using "t_over_t0":"eq18" with lines lw 1.5 dt 3 lc rgb "black" title "Eq. (18)"
+         ds using "t_over_t0":"K_over_K0" with lines lw 2.5 dt 4 lc rgb "#D55E00" title "DSMC", \
+         ed using "t_over_t0":"eq18" with lines lw 1.5 dt 2 lc rgb "black" title "Eq. (18)"
   } else {
     plot ed using "t_over_t0":"K_over_K0" with lines lw 2.5 lc rgb "#0072B2" title "ED", \
-         ed using "t_over_t0":"eq18" with lines lw 1.5 dt 3 lc rgb "black" title "Eq. (18)"
+         ed using "t_over_t0":"eq18" with lines lw 1.5 dt 2 lc rgb "black" title "Eq. (18)"
   }
   unset output
 }

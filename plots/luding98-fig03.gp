@@ -1,10 +1,12 @@
 # Luding (1998) Fig. 3: normalised P(b/d) of the ED run of Fig. 2 in successive time windows
-# (columns P_t<start> of the table; the window starts are in the column names).
+# [t_begin, t_end) (impact_parameter_windows.tsv; columns P_t<begin> of impact_parameter_ed.tsv).
 # Variables set by granrepro: datadir, outbase.
 set datafile separator "\t"
 f = datadir.'/impact_parameter_ed.tsv'
+w = datadir.'/impact_parameter_windows.tsv'
 header = system("head -1 ".f)
 ncol = words(header)
+wlabel(k) = system(sprintf("awk -F'\t' 'NR==%d{printf \"%%g s ≤ t < %%g s\", $1, $2}' ", k+1).w)
 colors = "#0072B2 #D55E00 #009E73 #CC79A7 #E69F00 #56B4E9 #000000"
 do for [fmt in "png pdf"] {
   if (fmt eq "png") { set terminal pngcairo size 800,600 enhanced font "Sans,11" }
@@ -15,8 +17,8 @@ do for [fmt in "png pdf"] {
   set xrange [0:1]
   set grid lc rgb "#dddddd"
   set key top left box opaque
-  set title "impact parameter, ED, N = 316^2, ρ = 0.25, r = 0.8 (windows start at the given time)"
+  set title "impact parameter, ED, ρ = 0.25, r = 0.8, collisions in the time windows given"
   plot for [c=2:ncol:2] f using 1:c:(column(c+1)) skip 1 with yerrorlines lw 1.5 pt 7 ps 0.5 \
-       lc rgb word(colors, (c/2-1)%7+1) title sprintf("t ≥ %s s", substr(word(header, c), 4, 20))
+       lc rgb word(colors, (c/2-1)%7+1) title wlabel(c/2)
   unset output
 }

@@ -1,12 +1,15 @@
-# Luding (1998) Fig. 11: the run of Fig. 10 at the instants of fig11_selection.tsv; each disk
-# coloured by its collision frequency N_c over the last Δt = t/2 (log scale, viridis: dark = few,
-# yellow = many collisions; the paper used red-to-blue). Disks with N_c = 0 get the bottom colour.
+# Luding (1998) Fig. 11: the run of Fig. 10 at the paper's instants (fig11_selection.tsv: t, C/N,
+# the common colour range); each disk coloured by its collision frequency N_c over the last
+# Δt = t/2 on one logarithmic scale for all panels (viridis: dark = few, yellow = many collisions;
+# the paper used red-to-blue). Disks with N_c = 0 get the bottom colour.
 # Variables set by granrepro: datadir, outbase.
 set datafile separator "\t"
 sel = datadir.'/fig11_selection.tsv'
 n = int(system("awk 'END{print NR-1}' ".sel))
-tt(k) = system(sprintf("awk -F'\t' 'NR==%d{printf \"%%.4g\", $3}' ", k+1).sel)
+tt(k) = system(sprintf("awk -F'\t' 'NR==%d{printf \"%%.4g\", $1}' ", k+1).sel)
 cc(k) = system(sprintf("awk -F'\t' 'NR==%d{printf \"%%.0f\", $2}' ", k+1).sel)
+lo = real(system("awk -F'\t' 'NR==2{print $3}' ".sel))
+hi = real(system("awk -F'\t' 'NR==2{print $4}' ".sel))
 L = real(system("awk -F'\t' 'NR>1{if($1>m)m=$1; if($2>m)m=$2}END{print m}' ".datadir.'/snapshot_0.tsv'))
 L = ceil(L)
 nc = (n+1)/2
@@ -23,15 +26,11 @@ do for [fmt in "png pdf"] {
   set ylabel "y/d"
   set logscale cb
   set format cb "10^{%L}"
-  set cblabel "N_c [s^{-1}]"
+  set cblabel "N_c [s^{-1}] (same scale in every panel)"
+  set cbrange [lo:hi]
   unset key
   do for [k=1:n] {
     f = datadir.'/snapshot_'.(k-1).'.tsv'
-    stats f using 3 nooutput
-    lo = STATS_max > 0 ? STATS_max : 1
-    stats f using ($3 > 0 ? $3 : lo) nooutput
-    lo = STATS_min
-    set cbrange [lo:*]
     set title sprintf("t = %s s, C/N = %s", tt(k), cc(k))
     plot f using 1:2:(0.5):($3 > lo ? $3 : lo) skip 1 with circles fs solid noborder lc palette
   }

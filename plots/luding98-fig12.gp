@@ -1,8 +1,10 @@
 # Luding (1998) Fig. 12: P(N_c), the distribution of collisions per unit time over the last
 # Δt = t/2, at our instants nearest to the paper's C/N (fig12_selection.tsv: paper C/N, ours, t).
-# Symbols: measured (error bars: counting). Lines: fits by binned maximum likelihood of
-# Eq. (20) Poisson (dotted), Eq. (21) exponential (dashed), Eq. (22) power law (solid), same colour.
-# (a) homogeneous times; (b) clustering sets in; (c) late times. Variables: datadir, outbase.
+# Symbols: measured (error bars: counting). Lines: fits by binned maximum likelihood, same colour:
+# (a) Eq. (20) Poisson (dotted) and Eq. (21) exponential (dashed) over the whole distribution;
+# (b), (c) Eq. (22) power law (solid) and Eq. (21) (dashed) fitted to the tail N_c >= mean N_c
+# only (as the paper reads these panels) and drawn only over the bins they were fitted to.
+# Variables: datadir, outbase.
 set datafile separator "\t"
 set datafile missing "NaN"
 sel = datadir.'/fig12_selection.tsv'
@@ -28,13 +30,14 @@ do for [fmt in "png pdf"] {
   plot for [k=0:1] f(k) using 1:2:3 skip 1 with yerrorbars pt 7 ps 0.6 lc rgb col(k) title lab(k), \
        f(0) using 1:4 skip 1 with lines lw 1.5 dt 3 lc rgb col(0) title "Eq. (20)", \
        f(1) using 1:5 skip 1 with lines lw 1.5 dt 2 lc rgb col(1) title "Eq. (21)"
-  set title "(b) exponential Eq. (21) (dashed), power law Eq. (22) (solid)"
+  set title "(b) tail fits: Eq. (22) (solid), Eq. (21) (dashed)"
   plot for [k=2:3] f(k) using 1:2:3 skip 1 with yerrorbars pt 7 ps 0.6 lc rgb col(k) title lab(k), \
-       for [k=2:3] f(k) using 1:5 skip 1 with lines lw 1.2 dt 2 lc rgb col(k) notitle, \
-       for [k=2:3] f(k) using 1:6 skip 1 with lines lw 1.5 lc rgb col(k) notitle
-  set title "(c) late times, power law Eq. (22) (solid)"
+       for [k=2:3] f(k) using 1:"exponential_eq21_tail" skip 0 with lines lw 1.2 dt 2 lc rgb col(k) notitle, \
+       for [k=2:3] f(k) using 1:"powerlaw_eq22_tail" skip 0 with lines lw 2 lc rgb col(k) notitle
+  set title "(c) late times, tail fits: Eq. (22) (solid), Eq. (21) (dashed)"
   plot for [k=4:n-1] f(k) using 1:2:3 skip 1 with yerrorbars pt 7 ps 0.6 lc rgb col(k) title lab(k), \
-       for [k=4:n-1] f(k) using 1:6 skip 1 with lines lw 1.5 lc rgb col(k) notitle
+       for [k=4:n-1] f(k) using 1:"exponential_eq21_tail" skip 0 with lines lw 1.2 dt 2 lc rgb col(k) notitle, \
+       for [k=4:n-1] f(k) using 1:"powerlaw_eq22_tail" skip 0 with lines lw 2 lc rgb col(k) notitle
   unset multiplot
   unset output
 }

@@ -20,6 +20,10 @@ void write_config(const H5Object& g, const DsmcConfig& c) {
     g.attr("rcp_fraction", c.rcp_fraction);
     g.attr("free_volume_floor", c.free_volume_floor);
     g.attr("displacement", long(c.displacement));
+    g.attr("partner", long(c.partner));
+    g.attr("no_repeat_partner", long(c.no_repeat_partner));
+    g.attr("mft_fraction", c.mft_fraction);
+    g.attr("free_volume_block", long(c.free_volume_block));
     g.attr_u64("seed", c.seed);
     g.attr_u64("stream", c.stream);
 }
@@ -40,6 +44,14 @@ DsmcConfig read_config(const H5Object& g) {
     c.rcp_fraction = g.read_double_attr("rcp_fraction");
     c.free_volume_floor = g.read_double_attr("free_volume_floor");
     c.displacement = g.read_long_attr("displacement") != 0;
+    const long partner = g.read_long_attr("partner");
+    if (partner < 0 || partner > long(DsmcPartner::nearest)) throw std::runtime_error("DSMC state: unknown partner rule");
+    c.partner = static_cast<DsmcPartner>(partner);
+    c.no_repeat_partner = g.read_long_attr("no_repeat_partner") != 0;
+    c.mft_fraction = g.read_double_attr("mft_fraction");
+    const long block = g.read_long_attr("free_volume_block");
+    if (block < 1) throw std::runtime_error("DSMC state: free_volume_block must be >= 1");
+    c.free_volume_block = static_cast<std::uint32_t>(block);
     c.seed = g.read_u64_attr("seed");
     c.stream = g.read_u64_attr("stream");
     return c;
@@ -65,6 +77,9 @@ void write_dsmc_state(const H5Object& g, const DsmcState& s) {
     g.attr_u64("candidates", s.candidates);
     g.attr_u64("vmax_raises", s.vmax_raises);
     g.attr("exposure", s.exposure);
+    g.array("last_partner", s.last_partner);
+    g.attr("resample_time", s.resample_time);
+    g.attr_u64("resample_collisions", s.resample_collisions);
     g.array("rng_state", s.rng_state);
 }
 
@@ -89,6 +104,9 @@ DsmcState read_dsmc_state(const H5Object& g) {
     s.candidates = g.read_u64_attr("candidates");
     s.vmax_raises = g.read_u64_attr("vmax_raises");
     s.exposure = g.read_double_attr("exposure");
+    s.last_partner = g.read_array<std::uint32_t>("last_partner");
+    s.resample_time = g.read_double_attr("resample_time");
+    s.resample_collisions = g.read_u64_attr("resample_collisions");
     s.rng_state = g.read_array<std::uint8_t>("rng_state");
     return s;
 }

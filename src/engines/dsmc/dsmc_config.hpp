@@ -14,6 +14,16 @@ enum class DsmcFreeVolume : std::uint8_t {
            // smoother variant: it multiplies every rate by exactly 1/(1 - rho/0.82)
 };
 
+// How the second member of a candidate pair is chosen once the first, i, is drawn uniformly from
+// the cell (Eq. 15 fixes only how many candidates a cell gets, not which pairs).
+enum class DsmcPartner : std::uint8_t {
+    uniform, // any other particle of the cell (Bird's original scheme; the paper's wording)
+    nearest, // the particle of the cell nearest to i: the limit of Bird's sub-cells (Molecular
+             // Gas Dynamics, 1994) known as "virtual sub-cells" (Bird, "Sophisticated DSMC",
+             // DSMC07 notes, 2007). Collisions between far-apart members of a large cell are
+             // avoided, so the cell no longer sets the length below which positions are mixed
+};
+
 struct DsmcConfig {
     double lx = 1.0; // periodic box width [m]
     double ly = 1.0; // periodic box height [m]
@@ -41,6 +51,21 @@ struct DsmcConfig {
     // (tests/validation/dsmc_kinetic_theory_test.cpp).
     double min_cell_diameters = 2.0;
 
+    // Remedies for the known defects of small-cell DSMC (none is in the paper; all off by default):
+    // Partner choice inside a cell (see DsmcPartner).
+    DsmcPartner partner = DsmcPartner::uniform;
+    // No repeated partners: a pair whose members' last collision was with each other is not a
+    // candidate again (Shevyrin, Bondar & Ivanov, AIP Conf. Proc. 762, 565 (2005); Bird,
+    // "Sophisticated DSMC", 2007): two disks that have just
+    // collided move apart and cannot meet again before one of them has hit a third. With uniform
+    // partners another partner is drawn when the cell has one, else the candidate is void.
+    bool no_repeat_partner = false;
+    // Time step bound by the mean free time: tau <= mft_fraction / omega, omega the collision
+    // rate per particle measured over the last resampling interval (kinetic theory, Boltzmann
+    // times the free-volume factor, before any was measured) [-]. 0 = off (only the cell-crossing
+    // rule above).
+    double mft_fraction = 0.0;
+
     // Dense-gas corrections of Sec. 2.4.
     DsmcFreeVolume free_volume = DsmcFreeVolume::off;
     double rcp_fraction = 0.82; // 2D random-close-packing area fraction [-] (paper's value)
@@ -48,6 +73,12 @@ struct DsmcConfig {
     // over-full cell (more particles than fit at random close packing) gets a large but finite
     // collision rate instead of a division by zero or a negative M_c.
     double free_volume_floor = 0.05;
+    // Cell mode only: V_0 / V_c is taken over the block of free_volume_block x free_volume_block
+    // cells centred on the cell (periodic) [-], odd >= 1. 1 = the paper's wording (the cell's own
+    // particles); with ~1.3 disks per 2 d cell that estimate is mostly noise, and <1/(V_c - V_0)>
+    // over the noise exceeds 1/(V_c - <V_0>) several times (Jensen), so a 3 x 3 or 5 x 5 block
+    // estimates the local density over 6-10 d while pairs are still drawn in the small cell.
+    std::uint32_t free_volume_block = 1;
     // Second correction: after each collision the pair's separation grows by the contact distance
     // (a_i + a_j) along the momentum transfer (centre of mass kept). See dsmc_engine.hpp.
     bool displacement = false;

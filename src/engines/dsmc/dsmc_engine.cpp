@@ -16,6 +16,7 @@ DsmcEngine::DsmcEngine(const DsmcConfig& config, std::vector<Vec2> position, std
         throw InputError("DSMC: positions, velocities, radii and masses must have one length");
     last_.assign(n, -std::numeric_limits<double>::infinity());
     count_.assign(n, 0);
+    partner_.assign(n, kNoPartner);
     validate_and_setup();
     for (auto& p : pos_) p = {wrap(p.x, cfg_.lx), wrap(p.y, cfg_.ly)};
 }
@@ -37,6 +38,12 @@ void DsmcEngine::validate_and_setup() {
     if (!(cfg_.rcp_fraction > 0.0 && cfg_.rcp_fraction <= 1.0)) throw InputError("DSMC: rcp_fraction must be in (0, 1]");
     if (!(cfg_.free_volume_floor > 0.0 && cfg_.free_volume_floor <= 1.0))
         throw InputError("DSMC: free_volume_floor must be in (0, 1]");
+    if (cfg_.free_volume_block < 1 || cfg_.free_volume_block % 2 == 0)
+        throw InputError("DSMC: free_volume_block must be odd and >= 1");
+    if (!(cfg_.mft_fraction >= 0.0) || !std::isfinite(cfg_.mft_fraction))
+        throw InputError("DSMC: mft_fraction must be >= 0 (0 = off)");
+    if (cfg_.partner != DsmcPartner::uniform && cfg_.partner != DsmcPartner::nearest)
+        throw InputError("DSMC: partner must be uniform or nearest");
     double amax = 0.0, asum = 0.0, area = 0.0;
     for (std::size_t i = 0; i < n; ++i) {
         if (!(rad_[i] > 0.0) || !(mass_[i] > 0.0)) throw InputError("DSMC: radii and masses must be positive");
@@ -64,9 +71,13 @@ void DsmcEngine::validate_and_setup() {
     cell_area_ = wx_ * wy_;
     law_ = RoughDiskCollision{cfg_.r, 0.0, -1.0, cfg_.q};
     elastic_law_ = RoughDiskCollision{1.0, 0.0, -1.0, cfg_.q};
+    if (cfg_.free_volume_block > std::min(nx_, ny_))
+        throw InputError("DSMC: free_volume_block exceeds the number of cells per side");
     cell_of_.assign(n, 0);
     order_.assign(n, 0);
     start_.assign(nx_ * ny_ + 1, 0);
+    cell_r2_.clear();
+    block_area_.clear();
 }
 
 double DsmcEngine::mean_free_volume_factor() const {
@@ -90,6 +101,28 @@ void DsmcEngine::resample() {
     const double v_fast = std::sqrt(v2);
     v_max_ = 2.0 * v_fast; // Sec. 2.4: "twice the maximum particle velocity found"
     tau_ = dsmc_time_step(std::min(wx_, wy_), v_fast, cfg_.step_factor);
+    if (cfg_.mft_fraction > 0.0) {
+        const double n = static_cast<double>(pos_.size());
+        const double dt = time_ - resample_time_;
+        const std::uint64_t dc = collisions_ - resample_collisions_;
+        double omega = 0.0;
+        if (dt > 0.0 && dc > 0) {
+            omega = 2.0 * static_cast<double>(dc) / (n * dt);
+        } else {
+            // Nothing measured yet: the Boltzmann rate (n - 1/A) sigma sqrt(pi T/m) times the
+            // mean free-volume factor, T/m = sum m v^2 / (2 sum m) (dsmc_kinetic_theory_test).
+            double mv2 = 0.0, m = 0.0;
+            for (std::size_t i = 0; i < vel_.size(); ++i) {
+                mv2 += mass_[i] * norm2(vel_[i]);
+                m += mass_[i];
+            }
+            const double chi = cfg_.free_volume == DsmcFreeVolume::off ? 1.0 : mean_free_volume_factor();
+            omega = (n - 1.0) / (cfg_.lx * cfg_.ly) * sigma_max_ * std::sqrt(std::numbers::pi * mv2 / (2.0 * m)) * chi;
+        }
+        if (omega > 0.0) tau_ = std::min(tau_, cfg_.mft_fraction / omega);
+    }
+    resample_time_ = time_;
+    resample_collisions_ = collisions_;
 }
 
 void DsmcEngine::move_and_sort(double dt) {
@@ -112,13 +145,44 @@ void DsmcEngine::move_and_sort(double dt) {
     for (std::size_t i = 0; i < n; ++i) order_[fill[cell_of_[i]]++] = static_cast<std::uint32_t>(i);
 }
 
-double DsmcEngine::free_volume(std::size_t begin, std::size_t cnt) const {
+void DsmcEngine::block_areas() {
+    const std::size_t ncell = nx_ * ny_;
+    cell_r2_.assign(ncell, 0.0);
+    for (std::size_t c = 0; c < ncell; ++c)
+        for (std::size_t k = start_[c]; k < start_[c + 1]; ++k) cell_r2_[c] += rad_[order_[k]] * rad_[order_[k]];
+    // Block sums, periodic: first along x into block_area_, then along y from there.
+    const auto h = static_cast<std::ptrdiff_t>(cfg_.free_volume_block / 2);
+    const auto nx = static_cast<std::ptrdiff_t>(nx_), ny = static_cast<std::ptrdiff_t>(ny_);
+    std::vector<double>& row = scratch_r2_;
+    row.assign(ncell, 0.0);
+    for (std::ptrdiff_t y = 0; y < ny; ++y)
+        for (std::ptrdiff_t x = 0; x < nx; ++x) {
+            double s = 0.0;
+            for (std::ptrdiff_t dx = -h; dx <= h; ++dx) s += cell_r2_[static_cast<std::size_t>(y * nx + (x + dx + nx) % nx)];
+            row[static_cast<std::size_t>(y * nx + x)] = s;
+        }
+    block_area_.assign(ncell, 0.0);
+    for (std::ptrdiff_t y = 0; y < ny; ++y)
+        for (std::ptrdiff_t x = 0; x < nx; ++x) {
+            double s = 0.0;
+            for (std::ptrdiff_t dy = -h; dy <= h; ++dy) s += row[static_cast<std::size_t>(((y + dy + ny) % ny) * nx + x)];
+            block_area_[static_cast<std::size_t>(y * nx + x)] = std::numbers::pi * s;
+        }
+}
+
+double DsmcEngine::free_volume(std::size_t cell, std::size_t begin, std::size_t cnt) const {
     switch (cfg_.free_volume) {
     case DsmcFreeVolume::off:
         return cell_area_;
     case DsmcFreeVolume::mean:
         return cell_area_ / mean_free_volume_factor();
     case DsmcFreeVolume::cell: {
+        if (cfg_.free_volume_block > 1) {
+            // V_c (1 - V_0/V_block): the block's free-area fraction applied to the cell.
+            const double block = static_cast<double>(cfg_.free_volume_block) * static_cast<double>(cfg_.free_volume_block) * cell_area_;
+            const double free = 1.0 - block_area_[cell] / (cfg_.rcp_fraction * block);
+            return cell_area_ * std::max(free, cfg_.free_volume_floor);
+        }
         double area = 0.0;
         for (std::size_t k = begin; k < begin + cnt; ++k) area += rad_[order_[k]] * rad_[order_[k]];
         const double v0 = std::numbers::pi * area / cfg_.rcp_fraction;
@@ -143,8 +207,8 @@ Vec2 DsmcEngine::total_momentum() const {
 std::size_t DsmcEngine::memory_bytes() const {
     return pos_.capacity() * sizeof(Vec2) + vel_.capacity() * sizeof(Vec2) +
            (rad_.capacity() + mass_.capacity() + last_.capacity()) * sizeof(double) +
-           count_.capacity() * sizeof(std::uint64_t) +
-           (cell_of_.capacity() + order_.capacity() + start_.capacity() + scratch_fill_.capacity()) *
+           count_.capacity() * sizeof(std::uint64_t) + (cell_r2_.capacity() + block_area_.capacity() + scratch_r2_.capacity()) * sizeof(double) +
+           (partner_.capacity() + cell_of_.capacity() + order_.capacity() + start_.capacity() + scratch_fill_.capacity()) *
                sizeof(std::uint32_t) +
            sizeof(*this);
 }
@@ -167,6 +231,9 @@ DsmcState DsmcEngine::save_state() const {
     s.candidates = candidates_;
     s.vmax_raises = vmax_raises_;
     s.exposure = exposure_;
+    s.last_partner = partner_;
+    s.resample_time = resample_time_;
+    s.resample_collisions = resample_collisions_;
     s.rng_state = rng_.state();
     return s;
 }
@@ -174,7 +241,7 @@ DsmcState DsmcEngine::save_state() const {
 void DsmcEngine::restore_state(const DsmcState& s) {
     const std::size_t n = s.position.size();
     if (s.velocity.size() != n || s.radius.size() != n || s.mass.size() != n ||
-        s.last_collision_time.size() != n || s.collision_count.size() != n)
+        s.last_collision_time.size() != n || s.collision_count.size() != n || s.last_partner.size() != n)
         throw InputError("DSMC restore: per-particle arrays differ in length");
     cfg_ = s.config;
     pos_ = s.position;
@@ -183,6 +250,9 @@ void DsmcEngine::restore_state(const DsmcState& s) {
     mass_ = s.mass;
     last_ = s.last_collision_time;
     count_ = s.collision_count;
+    partner_ = s.last_partner;
+    for (const std::uint32_t j : partner_)
+        if (j != kNoPartner && j >= n) throw InputError("DSMC restore: last partner index out of range");
     validate_and_setup();
     rng_.set_state(s.rng_state);
     time_ = s.time;
@@ -194,6 +264,8 @@ void DsmcEngine::restore_state(const DsmcState& s) {
     candidates_ = s.candidates;
     vmax_raises_ = s.vmax_raises;
     exposure_ = s.exposure;
+    resample_time_ = s.resample_time;
+    resample_collisions_ = s.resample_collisions;
 }
 
 } // namespace granrepro

@@ -7,7 +7,9 @@
 //      V = V_c, or the free volume V_c - V_0 (DsmcConfig::free_volume). The fractional part of M_c is
 //      drawn stochastically: floor(M_c) + 1 with probability frac(M_c), so E[M] = M_c exactly and
 //      nothing depends on a carried remainder when cells are re-chosen;
-//   4. each candidate (i, j), drawn uniformly among the cell's distinct pairs, is accepted with
+//   4. each candidate (i, j): i uniform in the cell, j another particle of the cell, uniform or the
+//      nearest to i (DsmcConfig::partner), never i's last partner if that one's last partner is i
+//      (DsmcConfig::no_repeat_partner). Uniform i and j give the pairs uniformly. It is accepted with
 //      probability sigma_ij |v_ij| / (sigma_max v_max), sigma_ij = 2 (a_i + a_j). For equal disks this
 //      is Eq. (16). The paper prints "|v_ij|/v_max < Z", which would accept with probability
 //      1 - |v_ij|/v_max; its own sentence ("collision probability proportional to the relative
@@ -28,6 +30,9 @@
 //      mass stays put: r_i += m_j/(m_i+m_j) d_ij n, r_j -= m_i/(m_i+m_j) d_ij n. This is the jump a
 //      hard-disk pair makes relative to point particles, so the streaming now carries the
 //      collisional (virial) momentum flux d_ij n (x) dP of a dense gas.
+// Time step: tau = L_c / (step_factor v_fast), and with mft_fraction > 0 also tau <= mft_fraction /
+// omega (omega the measured collision rate per particle), both re-evaluated every
+// resample_interval steps.
 // All collisions of a step are stamped with the step's end time. The collision observer gets a
 // CollisionRecord with ri = position of i, rj = ri - d_ij n (the virtual contact partner, so that
 // (rj - ri) (x) dP is the hard-disk virial of the collisional stress), b_over_d = |u|.
@@ -38,6 +43,7 @@
 #include "engines/dsmc/dsmc_config.hpp"
 #include "engines/dsmc/dsmc_state.hpp"
 #include "models/rough_disk_collision.hpp"
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -96,6 +102,7 @@ public:
     std::uint64_t elastic_collisions() const { return elastic_collisions_; }
     std::uint64_t candidates() const { return candidates_; }
     std::uint64_t vmax_raises() const { return vmax_raises_; }
+    const std::vector<std::uint32_t>& last_partners() const { return partner_; }
     // Sum over steps and cells of N_c (N_c - 1) tau / (2 V) [s/m^2]: times sigma <|v_ij|> it is the
     // number of collisions Eqs. (15)-(16) promise (a test of the implementation, not of physics).
     double exposure() const { return exposure_; }
@@ -119,7 +126,10 @@ private:
     void validate_and_setup();
     void resample();
     void move_and_sort(double dt);
-    double free_volume(std::size_t begin, std::size_t count) const;
+    double free_volume(std::size_t cell, std::size_t begin, std::size_t count) const;
+    void block_areas(); // cell mode with free_volume_block > 1: block_area_ from the sorted cells
+    std::uint32_t choose_partner(std::size_t begin, std::size_t cnt, std::size_t k1);
+    bool repeat(std::uint32_t i, std::uint32_t j) const { return partner_[i] == j && partner_[j] == i; }
     static double wrap(double x, double l) {
         x -= l * std::floor(x / l);
         return x >= l ? x - l : x; // tiny negative x: x + l may round to l
@@ -134,16 +144,19 @@ private:
     }
 
     template <class Obs>
-    void collide_cell(std::size_t begin, std::size_t count, double dt, Obs& obs);
+    void collide_cell(std::size_t cell, std::size_t begin, std::size_t count, double dt, Obs& obs);
 
     DsmcConfig cfg_;
     RngStream rng_;
     std::vector<Vec2> pos_, vel_;
     std::vector<double> rad_, mass_, last_;
     std::vector<std::uint64_t> count_;
+    std::vector<std::uint32_t> partner_;
     double time_ = 0.0, tau_ = 0.0, v_max_ = 0.0;
     std::uint64_t steps_ = 0, collisions_ = 0, elastic_collisions_ = 0, candidates_ = 0, vmax_raises_ = 0;
     double exposure_ = 0.0;
+    double resample_time_ = 0.0;
+    std::uint64_t resample_collisions_ = 0;
 
     // Derived from config + particles (rebuilt on restore).
     std::size_t nx_ = 1, ny_ = 1;
@@ -152,6 +165,7 @@ private:
     RoughDiskCollision law_, elastic_law_;
     // Scratch (not state): cell of each particle, particles in cell order, cell start offsets.
     std::vector<std::uint32_t> cell_of_, order_, start_, scratch_fill_;
+    std::vector<double> cell_r2_, block_area_, scratch_r2_; // per cell: sum of r^2, the block's disk area [m^2]
 };
 
 template <class Obs>
@@ -162,17 +176,52 @@ void DsmcEngine::step(Obs& obs, double max_dt) {
     move_and_sort(dt);
     time_ += dt;
     const std::size_t ncell = nx_ * ny_;
+    if (cfg_.free_volume == DsmcFreeVolume::cell && cfg_.free_volume_block > 1) block_areas();
     for (std::size_t c = 0; c < ncell; ++c) {
         const std::size_t b = start_[c], cnt = start_[c + 1] - b;
-        if (cnt >= 2) collide_cell(b, cnt, dt, obs);
+        if (cnt >= 2) collide_cell(c, b, cnt, dt, obs);
     }
     ++steps_;
 }
 
+inline std::uint32_t DsmcEngine::choose_partner(std::size_t begin, std::size_t cnt, std::size_t k1) {
+    const std::uint32_t i = order_[begin + k1];
+    if (cfg_.partner == DsmcPartner::nearest) {
+        // Lowest index wins a tie (order_ is stable), so the choice depends on the state only.
+        std::uint32_t best = kNoPartner;
+        double best_d2 = std::numeric_limits<double>::infinity();
+        const Vec2 pi = pos_[i];
+        for (std::size_t q = 0; q < cnt; ++q) {
+            if (q == k1) continue;
+            const std::uint32_t j = order_[begin + q];
+            if (cfg_.no_repeat_partner && repeat(i, j)) continue;
+            const double d2 = norm2(pos_[j] - pi);
+            if (d2 < best_d2) {
+                best_d2 = d2;
+                best = j;
+            }
+        }
+        return best;
+    }
+    auto k2 = rng_.index(cnt - 1);
+    if (k2 >= k1) ++k2;
+    std::uint32_t j = order_[begin + k2];
+    if (cfg_.no_repeat_partner && repeat(i, j)) {
+        if (cnt < 3) return kNoPartner;
+        // Uniform among the cnt - 2 members that are neither i nor its last partner.
+        auto k3 = rng_.index(cnt - 2);
+        const std::size_t lo = std::min<std::size_t>(k1, k2), hi = std::max<std::size_t>(k1, k2);
+        if (k3 >= lo) ++k3;
+        if (k3 >= hi) ++k3;
+        j = order_[begin + k3];
+    }
+    return j;
+}
+
 template <class Obs>
-void DsmcEngine::collide_cell(std::size_t begin, std::size_t cnt, double dt, Obs& obs) {
+void DsmcEngine::collide_cell(std::size_t cell, std::size_t begin, std::size_t cnt, double dt, Obs& obs) {
     const double pairs_half = 0.5 * static_cast<double>(cnt) * static_cast<double>(cnt - 1);
-    const double inv_v = 1.0 / free_volume(begin, cnt);
+    const double inv_v = 1.0 / free_volume(cell, begin, cnt);
     exposure_ += pairs_half * dt * inv_v;
     // Eq. (15) with the stochastic rounding described at the top.
     const double mc = pairs_half * sigma_max_ * v_max_ * dt * inv_v;
@@ -182,9 +231,9 @@ void DsmcEngine::collide_cell(std::size_t begin, std::size_t cnt, double dt, Obs
     candidates_ += m;
     for (std::uint64_t k = 0; k < m; ++k) {
         const auto k1 = rng_.index(cnt);
-        auto k2 = rng_.index(cnt - 1);
-        if (k2 >= k1) ++k2;
-        const std::uint32_t i = order_[begin + k1], j = order_[begin + k2];
+        const std::uint32_t i = order_[begin + k1];
+        const std::uint32_t j = choose_partner(begin, cnt, k1);
+        if (j == kNoPartner) continue; // no admissible partner: a void candidate
         const Vec2 g = vel_[i] - vel_[j];
         const double gabs = norm(g);
         const double dij = rad_[i] + rad_[j];
@@ -226,6 +275,8 @@ void DsmcEngine::collide_cell(std::size_t begin, std::size_t cnt, double dt, Obs
         ++count_[i];
         ++count_[j];
         last_[i] = last_[j] = time_;
+        partner_[i] = j;
+        partner_[j] = i;
         ++collisions_;
         if (elastic) ++elastic_collisions_;
         obs(rec);

@@ -10,6 +10,8 @@
 
 namespace granrepro {
 
+inline constexpr std::uint32_t kNoPartner = 0xffffffffu;
+
 struct DsmcState {
     DsmcConfig config;
     double time = 0.0;           // simulated time [s]
@@ -23,12 +25,15 @@ struct DsmcState {
     std::vector<double> mass;    // [kg]
     std::vector<double> last_collision_time;      // [s], -inf before the first (TC model)
     std::vector<std::uint64_t> collision_count;   // collisions per particle
+    std::vector<std::uint32_t> last_partner;      // index of the last partner, kNoPartner before
 
     std::uint64_t collisions = 0;        // accepted pair collisions
     std::uint64_t elastic_collisions = 0; // of which made elastic by the TC model
     std::uint64_t candidates = 0;        // candidate pairs tested (sum of rounded M_c)
     std::uint64_t vmax_raises = 0;       // candidates whose sigma|v_ij| exceeded sigma v_max
     double exposure = 0.0;               // sum over steps and cells of N(N-1) tau / (2 V) [s/m^2]
+    double resample_time = 0.0;          // time of the last resampling [s] (mft_fraction rule)
+    std::uint64_t resample_collisions = 0; // collisions at the last resampling
 
     std::vector<unsigned char> rng_state; // RngStream::state()
 };
