@@ -476,9 +476,7 @@ void report_k(Result& r, const ParameterSet& p, const PipeSpec& base, double k, 
                  "geometric mean of the construction's speed over the measured one, " + name + " branch");
     }
     r.scalar(std::string("bistable_eN_count_") + kt, bistable, "1",
-             "e_N > 0.85 at which a slow and a fast (> 2x faster) steady state coexist");
-    r.scalar(std::string("bistable_sigma_vx_ratio_") + kt, sx_ratio, "1",
-             "σ_vx of the fast over the slow state at the largest bistable e_N");
+             "e_N > 0.85 of the grid at which a slow (below v_crit) and a fast (above) steady state coexist");
 }
 
 Result run(const RunContext& ctx) {

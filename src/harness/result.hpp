@@ -1,6 +1,7 @@
 // What an experiment hands back: tables of columns (curves) and named scalars, each with units.
 // The writer turns them into data.h5, summary.json and the tab-separated files gnuplot reads.
 #pragma once
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -34,11 +35,16 @@ struct Result {
     std::vector<Table> tables;
     std::vector<Scalar> scalars;
 
+    // A name given twice is a bug in the experiment; it is refused here, before anything is
+    // written, rather than by HDF5 half-way through data.h5.
     Table& table(std::string name, std::string description) {
+        for (const auto& t : tables)
+            if (t.name == name) throw std::logic_error("result table '" + name + "' added twice");
         tables.push_back({std::move(name), std::move(description), {}});
         return tables.back();
     }
     void scalar(std::string name, double value, std::string unit, std::string description) {
+        if (find_scalar(name)) throw std::logic_error("result scalar '" + name + "' added twice");
         scalars.push_back({std::move(name), value, std::move(unit), std::move(description)});
     }
     const Scalar* find_scalar(const std::string& name) const {

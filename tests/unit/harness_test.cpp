@@ -409,3 +409,15 @@ TEST(StagedDirectory, LeavesNothingBehindUnlessCommitted) {
 }
 
 } // namespace
+
+// A scalar or table named twice would otherwise reach HDF5 as "name already exists" half-way
+// through data.h5 (the bistable-pipe merge of 2026-12 did exactly that).
+TEST(Result, RefusesANameGivenTwice) {
+    granrepro::Result r;
+    r.scalar("a", 1.0, "1", "first");
+    EXPECT_THROW(r.scalar("a", 2.0, "1", "again"), std::logic_error);
+    r.table("t", "first");
+    EXPECT_THROW(r.table("t", "again"), std::logic_error);
+    EXPECT_EQ(r.scalars.size(), 1u);
+    EXPECT_EQ(r.tables.size(), 1u);
+}
