@@ -7,10 +7,24 @@
 // does, lags them by dt/2 and costs a first-order error in e_N (about gamma_N dt / 2, 1 % at
 // e_N = 0.7 and dt = t_col/50). They are evaluated instead at the predicted full-step velocity
 // v(t+dt/2) + a(t) dt/2 (the modified velocity Verlet of Groot & Warren 1997 with lambda = 1).
-// dt = t_col/50 of the stiffest pair (Eq. 5). Neighbours: a Verlet list with skin, built from linked cells and rebuilt when any
-// grain has moved more than skin/2 since the last build, so every step costs O(N). Wall grains
-// are not stored: a grain near a wall tests the two or three wall grains at its height, found
-// from the row's spacing.
+// dt = t_col/50 of the stiffest pair (Eq. 5). Wall grains are not stored: a grain near a wall
+// tests the two or three wall grains at its height, found from the row's spacing.
+//
+// Neighbours: a full Verlet list (every pair in both grains' lists) from linked cells, rebuilt
+// when any grain has moved more than skin/2 relative to the mean displacement since the last
+// build, so every step costs O(N). At each build the grains are re-sorted into cell order, so
+// that neighbours are near in memory and a thread's share of the grains is a slab of the pipe.
+//
+// Determinism. Grains keep the index they were added with ("id"); every accessor speaks ids.
+// The force on grain I is summed in an order fixed by ids and by the cell grid at the last build,
+// never by memory order or thread: first its partners J < I in increasing J, then (a separate
+// sum, added to the first) its partners J > I in the order of the cells (row below, same row, row
+// above; left to right) and increasing J within a cell, then the wall grains. (This is the order
+// of the half-list engine this one replaced, so its trajectories are reproduced bit for bit.)
+// Each grain computes its own pair forces, so no sum depends on another thread; a pair's force
+// is computed twice, with bit-identical magnitude (the pair law is antisymmetric in floating
+// point, see contact()). The rebuild test uses the mean displacement summed in id order, and
+// wall-impact sums run in id order. Hence results are bit-identical for any thread count.
 //
 // Template parameters: NormalLaw::normal_force(xi, xi_dot, m_red) -> NormalForce;
 // ShearLaw::applied_normal(NormalForce) and ShearLaw::shear_force(NormalForce, v_S).
@@ -18,9 +32,13 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <functional>
+#include <limits>
+#include <memory>
 #include <stdexcept>
 #include <vector>
 
+#include "engines/soft/spin_team.hpp"
 #include "models/normal_force.hpp"
 
 namespace granrepro {
@@ -55,35 +73,64 @@ public:
     }
 
     void add_grain(double x, double y, double vx, double vy, double radius, double mass) {
+        id_.push_back(int(x_.size()));
         x_.push_back(x); y_.push_back(wrap(y)); vx_.push_back(vx); vy_.push_back(vy);
         ax_.push_back(0); ay_.push_back(0); rad_.push_back(radius); mass_.push_back(mass);
         inv_mass_.push_back(1.0 / mass);
         wall_touch_.push_back(0); vy_at_touch_.push_back(0); vx_at_touch_.push_back(0);
         need_build_ = true;
+        ++version_;
     }
+
+    // Threads that share each step (1 = none). Any count gives bit-identical results.
+    void set_threads(int threads) {
+        threads = std::max(1, threads);
+        if (threads == threads_) return;
+        threads_ = threads;
+        team_.reset();
+        if (threads > 1) team_ = std::make_unique<SpinTeam>(threads);
+        const double cpx = scratch_[0].cprev_x, cpy = scratch_[0].cprev_y;
+        scratch_.assign(std::size_t(threads), Scratch{});
+        for (auto& s : scratch_) s.cprev_x = cpx, s.cprev_y = cpy;
+    }
+    int threads() const { return threads_; }
 
     std::size_t size() const { return x_.size(); }
     double time() const { return t_; }
     double dt() const { return dt_; }
     long steps() const { return steps_; }
     long list_builds() const { return builds_; }
-    const std::vector<double>& x() const { return x_; }
-    const std::vector<double>& y() const { return y_; }
-    const std::vector<double>& vx() const { return vx_; }
-    const std::vector<double>& vy() const { return vy_; }
-    const std::vector<double>& radius() const { return rad_; }
-    const std::vector<double>& mass() const { return mass_; }
+    long exact_rebuild_tests() const { return exact_tests_; }
+    // Per-grain arrays in id order (the order grains were added).
+    const std::vector<double>& x() const { return by_id(x_, out_[0]); }
+    const std::vector<double>& y() const { return by_id(y_, out_[1]); }
+    const std::vector<double>& vx() const { return by_id(vx_, out_[2]); }
+    const std::vector<double>& vy() const { return by_id(vy_, out_[3]); }
+    const std::vector<double>& radius() const { return by_id(rad_, out_[4]); }
+    const std::vector<double>& mass() const { return by_id(mass_, out_[5]); }
+    const std::vector<double>& ax() const { return by_id(ax_, out_[6]); }
+    const std::vector<double>& ay() const { return by_id(ay_, out_[7]); }
     const WallImpactStats& wall_stats() const { return wall_; }
     void reset_wall_stats() { wall_ = {}; }
-    const std::vector<double>& ax() const { return ax_; }
-    const std::vector<double>& ay() const { return ay_; }
+    // Bytes held per grain by the engine's arrays and lists (capacity, not just size).
+    double bytes_per_grain() const {
+        std::size_t b = 0;
+        for (const auto* v : {&x_, &y_, &vx_, &vy_, &ax_, &ay_, &vpx_, &vpy_, &rad_, &mass_, &inv_mass_, &dispx_,
+                              &dispy_, &vy_at_touch_, &vx_at_touch_, &wall_impulse_y_})
+            b += v->capacity() * sizeof(double);
+        for (const auto& v : spare_) b += v.capacity() * sizeof(double);
+        b += (id_.capacity() + slot_of_id_.capacity() + spare_id_.capacity() + nb_.capacity() + nb_count_.capacity() +
+              nb_low_.capacity() + cell_of_.capacity() + order_.capacity() + cell_start_.capacity()) * sizeof(int);
+        b += wall_touch_.capacity() + spare_touch_.capacity();
+        return x_.empty() ? 0.0 : double(b) / double(x_.size());
+    }
 
     // Reference for tests: accelerations from all N^2 pairs and all wall grains in range, without
-    // the neighbour list, for the positions and the velocities the last force evaluation used.
+    // the neighbour list, for the positions and the velocities the last force evaluation used
+    // (in id order).
     void brute_force_accelerations(std::vector<double>& ax, std::vector<double>& ay) const {
         const std::size_t n = x_.size();
-        ax.assign(n, 0.0);
-        ay.assign(n, 0.0);
+        std::vector<double> bx(n, 0.0), by(n, 0.0);
         for (std::size_t i = 0; i < n; ++i)
             for (std::size_t j = i + 1; j < n; ++j) {
                 const double dx = x_[i] - x_[j], dy = min_image(y_[i] - y_[j]);
@@ -93,9 +140,11 @@ public:
                 double fx, fy;
                 contact(dx / d, dy / d, rs - d, vpx_[i] - vpx_[j], vpy_[i] - vpy_[j],
                         mass_[i] * mass_[j] / (mass_[i] + mass_[j]), fx, fy);
-                ax[i] += fx; ay[i] += fy; ax[j] -= fx; ay[j] -= fy;
+                bx[i] += fx; by[i] += fy; bx[j] -= fx; by[j] -= fy;
             }
         const long nw = std::lround(geo_.length / geo_.wall_spacing);
+        ax.assign(n, 0.0);
+        ay.assign(n, 0.0);
         for (std::size_t i = 0; i < n; ++i) {
             for (int side = 0; side < 2; ++side) {
                 const double xw = side ? geo_.width : 0.0, shift = side ? geo_.right_row_shift : 0.0;
@@ -106,72 +155,218 @@ public:
                     if (d >= rs) continue;
                     double fx, fy;
                     contact(dx / d, dy / d, rs - d, vpx_[i], vpy_[i], mass_[i], fx, fy);
-                    ax[i] += fx; ay[i] += fy;
+                    bx[i] += fx; by[i] += fy;
                 }
             }
-            ax[i] /= mass_[i];
-            ay[i] = ay[i] / mass_[i] - geo_.gravity;
+            ax[std::size_t(id_[i])] = bx[i] / mass_[i];
+            ay[std::size_t(id_[i])] = by[i] / mass_[i] - geo_.gravity;
         }
     }
 
     // Largest overlap seen in the last force evaluation, relative to the smaller diameter.
     double max_overlap_ratio() const { return max_overlap_; }
 
-    void step() {
+    void step() { advance(1); }
+
+    // `steps` time steps; the same as calling step() that often, with one hand-off to the threads.
+    void advance(long steps) {
         if (need_build_) throw std::logic_error("PipeEngine: call finalize() after adding grains");
-        const double h = 0.5 * dt_;
+        if (steps <= 0) return;
+        ++version_;
+        if (threads_ == 1) {
+            for (long s = 0; s < steps; ++s) one_step(0);
+        } else {
+            team_->run([&](int tid) {
+                for (long s = 0; s < steps; ++s) one_step(tid);
+            });
+        }
+    }
+
+    // Must be called once after all grains are added (sizes the per-grain scratch arrays).
+    void finalize() {
         const std::size_t n = x_.size();
-        for (std::size_t i = 0; i < n; ++i) {
-            vx_[i] += h * ax_[i];
-            vy_[i] += h * ay_[i];
-            const double dx = dt_ * vx_[i], dy = dt_ * vy_[i];
-            x_[i] += dx;
-            y_[i] += dy;
-            dispx_[i] += dx;
-            dispy_[i] += dy;
-        }
-        for (std::size_t i = 0; i < n; ++i) {
-            if (y_[i] < 0) y_[i] += geo_.length;
-            else if (y_[i] >= geo_.length) y_[i] -= geo_.length;
-        }
-        for (std::size_t i = 0; i < n; ++i) {
-            vpx_[i] = vx_[i] + h * ax_[i];
-            vpy_[i] = vy_[i] + h * ay_[i];
-        }
-        if (moved_too_far()) build_list();
-        compute_forces();
-        for (std::size_t i = 0; i < n; ++i) {
-            vx_[i] += h * ax_[i];
-            vy_[i] += h * ay_[i];
-        }
-        t_ += dt_;
-        wall_.time += dt_;
-        ++steps_;
-        track_wall_impacts();
+        wall_impulse_y_.assign(n, 0.0);
+        vpx_ = vx_;
+        vpy_ = vy_;
+        dispx_.assign(n, 0.0);
+        dispy_.assign(n, 0.0);
+        ax_.assign(n, 0.0);
+        ay_.assign(n, 0.0);
+        double rmax = 0;
+        for (double r : rad_) rmax = std::max(rmax, r);
+        range_ = 2 * rmax + skin_;
+        // Cells at least one interaction range wide, three or more along the periodic axis so
+        // that the rows iy-1, iy, iy+1 are distinct and no pair is listed twice.
+        if (geo_.length < 3 * range_)
+            throw std::invalid_argument("pipe length must be at least 3 interaction ranges (2 r_max + skin)");
+        cells_x_ = std::max(1, int(geo_.width / range_));
+        cells_y_ = int(geo_.length / range_);
+        cell_w_ = geo_.width / cells_x_;
+        cell_h_ = geo_.length / cells_y_;
+        for (auto& s : scratch_) s = Scratch{};
+        need_build_ = false;
+        ++version_;
+        // The first list and forces, as a step would compute them, without kicks or wall-impact
+        // bookkeeping (the wall impulse of this evaluation is kept, as it always was).
+        auto job = [&](int tid) {
+            rebuild(tid);
+            forces(tid, false);
+        };
+        if (threads_ == 1) job(0);
+        else team_->run(job);
+        finish_step_stats(false);
+        wall_ = {};
     }
 
 private:
+    // ---- per-thread state --------------------------------------------------------------------
+    struct Completion {
+        int id;
+        double dvy, vy_in, vx_in;
+    };
+    struct alignas(64) Scratch {
+        double sum_x = 0, sum_y = 0, max_abs = 0, max_q = 0; // rebuild-test partials of this step
+        double cprev_x = 0, cprev_y = 0;                     // mean displacement of the last step
+        double worst = 0;
+        long impacts = 0;
+        std::vector<Completion> completed;
+        std::size_t most_partners = 0;   // of the last list_share()
+        std::vector<std::uint64_t> keys; // list-build scratch
+    };
+
+    std::size_t begin_of(int tid) const { return x_.size() * std::size_t(tid) / std::size_t(threads_); }
+    std::size_t end_of(int tid) const { return x_.size() * std::size_t(tid + 1) / std::size_t(threads_); }
+
     double wrap(double y) const {
         y = std::fmod(y, geo_.length);
         return y < 0 ? y + geo_.length : y;
     }
 
-    void compute_forces_after_build() {
-        build_list();
-        compute_forces();
-        need_build_ = false;
+    double min_image(double dy) const {
+        if (dy > 0.5 * geo_.length) return dy - geo_.length;
+        if (dy < -0.5 * geo_.length) return dy + geo_.length;
+        return dy;
+    }
+
+    const std::vector<double>& by_id(const std::vector<double>& v, std::pair<long, std::vector<double>>& out) const {
+        if (out.first != version_ || out.second.size() != v.size()) {
+            out.second.resize(v.size());
+            for (std::size_t i = 0; i < v.size(); ++i) out.second[std::size_t(id_[i])] = v[i];
+            out.first = version_;
+        }
+        return out.second;
+    }
+
+    // ---- one step --------------------------------------------------------------------------
+    void one_step(int tid) {
+        drift(tid);
+        sync();
+        if (must_rebuild(tid)) rebuild(tid);
+        forces(tid, true);
+        sync();
+        if (tid == 0) {
+            finish_step_stats(true);
+            t_ += dt_;
+            wall_.time += dt_;
+            ++steps_;
+        }
+    }
+
+    void sync() {
+        if (team_) team_->barrier();
+    }
+
+    // Half kick, drift, periodic wrap, predicted velocity; partial sums for the rebuild test.
+    void drift(int tid) {
+        const double h = 0.5 * dt_, dt = dt_, len = geo_.length;
+        Scratch& s = scratch_[std::size_t(tid)];
+        const double cpx = s.cprev_x, cpy = s.cprev_y;
+        double sx = 0, sy = 0, amax = 0, qmax = 0;
+        double* __restrict x = x_.data();
+        double* __restrict y = y_.data();
+        double* __restrict vx = vx_.data();
+        double* __restrict vy = vy_.data();
+        double* __restrict vpx = vpx_.data();
+        double* __restrict vpy = vpy_.data();
+        double* __restrict ux = dispx_.data();
+        double* __restrict uy = dispy_.data();
+        const double* __restrict ax = ax_.data();
+        const double* __restrict ay = ay_.data();
+        for (std::size_t i = begin_of(tid), e = end_of(tid); i < e; ++i) {
+            const double vxi = vx[i] + h * ax[i], vyi = vy[i] + h * ay[i];
+            vx[i] = vxi;
+            vy[i] = vyi;
+            const double dx = dt * vxi, dy = dt * vyi;
+            x[i] += dx;
+            double yi = y[i] + dy;
+            yi = yi < 0 ? yi + len : (yi >= len ? yi - len : yi);
+            y[i] = yi;
+            const double uxi = ux[i] + dx, uyi = uy[i] + dy;
+            ux[i] = uxi;
+            uy[i] = uyi;
+            vpx[i] = vxi + h * ax[i];
+            vpy[i] = vyi + h * ay[i];
+            sx += uxi;
+            sy += uyi;
+            amax = std::max(amax, std::max(std::abs(uxi), std::abs(uyi)));
+            const double qx = uxi - cpx, qy = uyi - cpy;
+            qmax = std::max(qmax, qx * qx + qy * qy);
+        }
+        s.sum_x = sx;
+        s.sum_y = sy;
+        s.max_abs = amax;
+        s.max_q = qmax;
     }
 
     // A pair's distance changes by at most |u_i - u_j| <= |u_i - c| + |u_j - c| for any common
     // c, u the displacements since the last build. Measuring from the mean displacement c keeps
     // a fast but nearly rigid flow (all grains falling at 10 m/s) from rebuilding every few steps;
     // wall contacts are found afresh every step and do not use the list.
-    bool moved_too_far() const {
+    //
+    // The decision is that of the rule evaluated with c summed in id order (as the engine always
+    // did; a different rounding of c could move a rebuild by a step and change the force sums'
+    // order). It is mostly settled from the threads' partial sums: with c' their mean, c_prev
+    // the previous step's c' and Q = max_i |u_i - c_prev|^2, every |u_i - c| lies within
+    // sqrt(Q) + |c' - c_prev| + delta, where delta bounds |c - c'| from summation rounding
+    // (2 n eps max|u| per component). Only when lim falls inside that bracket is the rule
+    // evaluated exactly, in id order.
+    bool must_rebuild(int tid) {
+        const std::size_t n = x_.size();
+        if (n == 0) return false;
+        double sx = 0, sy = 0, amax = 0, qmax = 0;
+        for (const Scratch& s : scratch_) {
+            sx += s.sum_x;
+            sy += s.sum_y;
+            amax = std::max(amax, s.max_abs);
+            qmax = std::max(qmax, s.max_q);
+        }
+        Scratch& mine = scratch_[std::size_t(tid)];
+        const double cx = sx / double(n), cy = sy / double(n);
+        const double lim = 0.25 * skin_ * skin_;
+        const double shift = std::sqrt((cx - mine.cprev_x) * (cx - mine.cprev_x) + (cy - mine.cprev_y) * (cy - mine.cprev_y));
+        const double delta = 4.0 * double(n + 1) * std::numeric_limits<double>::epsilon() * amax;
+        const double r = std::sqrt(qmax), slack = 1e-12;
+        const double hi = (r + shift) * (1 + slack) + delta;
+        const double lo = std::max(0.0, r * (1 - slack) - shift * (1 + slack) - delta);
+        bool rebuild_now;
+        if (hi * hi * (1 + slack) <= lim) rebuild_now = false;
+        else if (lo * lo * (1 - slack) > lim) rebuild_now = true;
+        else {
+            // Undecided (or NaN): every thread evaluates the exact rule (the same answer).
+            rebuild_now = moved_too_far_exact();
+            if (tid == 0) ++exact_tests_;
+        }
+        mine.cprev_x = rebuild_now ? 0.0 : cx;
+        mine.cprev_y = rebuild_now ? 0.0 : cy;
+        return rebuild_now;
+    }
+
+    bool moved_too_far_exact() const {
         const std::size_t n = x_.size();
         double cx = 0, cy = 0;
-        for (std::size_t i = 0; i < n; ++i) {
-            cx += dispx_[i];
-            cy += dispy_[i];
+        for (std::size_t k = 0; k < n; ++k) {
+            cx += dispx_[std::size_t(slot_of_id_[k])];
+            cy += dispy_[std::size_t(slot_of_id_[k])];
         }
         cx /= double(n);
         cy /= double(n);
@@ -183,67 +378,141 @@ private:
         return false;
     }
 
-    // Linked cells of side >= the largest interaction range, then a half Verlet list.
-    void build_list() {
+    // ---- neighbour list ------------------------------------------------------------------
+    // Re-sorts the grains into cell order (thread 0 sorts, all move their share), then every
+    // thread lists its grains' partners within r_i + r_j + skin: partners with smaller id first,
+    // in increasing id, then those with larger id in cell order (see the header comment). The
+    // cells are those of range = 2 r_max + skin, as always; the cut-off per pair is tighter
+    // (a pair farther apart than r_i + r_j + skin cannot touch before the next build).
+    void rebuild(int tid) {
         const std::size_t n = x_.size();
-        dispx_.assign(n, 0.0);
-        dispy_.assign(n, 0.0);
-        double rmax = 0;
-        for (double r : rad_) rmax = std::max(rmax, r);
-        const double range = 2 * rmax + skin_;
-        // Cells at least one interaction range wide, three or more along the periodic axis so
-        // that the rows iy-1, iy, iy+1 are distinct and no pair is listed twice.
-        if (geo_.length < 3 * range)
-            throw std::invalid_argument("pipe length must be at least 3 interaction ranges (2 r_max + skin)");
-        const int cx = std::max(1, int(geo_.width / range));
-        const int cy = int(geo_.length / range);
-        const double sx = geo_.width / cx, sy = geo_.length / cy;
-        cell_start_.assign(std::size_t(cx * cy) + 1, 0);
-        std::vector<int> cell_of(n);
-        for (std::size_t i = 0; i < n; ++i) {
-            const int ix = std::clamp(int(x_[i] / sx), 0, cx - 1);
-            const int iy = std::clamp(int(y_[i] / sy), 0, cy - 1);
-            cell_of[i] = iy * cx + ix;
-            ++cell_start_[std::size_t(cell_of[i]) + 1];
+        if (tid == 0) {
+            ++builds_;
+            const int ncell = cells_x_ * cells_y_;
+            cell_start_.assign(std::size_t(ncell) + 1, 0);
+            cell_of_.resize(n);
+            for (std::size_t i = 0; i < n; ++i) {
+                const int ix = std::clamp(int(x_[i] / cell_w_), 0, cells_x_ - 1);
+                const int iy = std::clamp(int(y_[i] / cell_h_), 0, cells_y_ - 1);
+                cell_of_[i] = iy * cells_x_ + ix;
+                ++cell_start_[std::size_t(cell_of_[i]) + 1];
+            }
+            for (std::size_t c = 1; c < cell_start_.size(); ++c) cell_start_[c] += cell_start_[c - 1];
+            order_.resize(n);
+            fill_.assign(cell_start_.begin(), cell_start_.end() - 1);
+            for (std::size_t i = 0; i < n; ++i) order_[std::size_t(fill_[std::size_t(cell_of_[i])]++)] = int(i);
+            for (auto& v : spare_) v.resize(n);
+            spare_id_.resize(n);
+            spare_touch_.resize(n);
+            slot_of_id_.resize(n);
+            nb_count_.resize(n);
+            nb_low_.resize(n);
+            if (nb_.size() < n * std::size_t(stride_)) nb_.resize(n * std::size_t(stride_));
         }
-        for (std::size_t c = 1; c < cell_start_.size(); ++c) cell_start_[c] += cell_start_[c - 1];
-        cell_items_.resize(n);
-        std::vector<int> fill(cell_start_.begin(), cell_start_.end() - 1);
-        for (std::size_t i = 0; i < n; ++i) cell_items_[std::size_t(fill[std::size_t(cell_of[i])]++)] = int(i);
+        sync();
+        // Move this thread's share of the new order.
+        {
+            std::vector<double>* cur[] = {&x_, &y_, &vx_, &vy_, &vpx_, &vpy_, &rad_, &mass_, &inv_mass_,
+                                          &vy_at_touch_, &vx_at_touch_, &wall_impulse_y_};
+            for (std::size_t a = 0; a < kMoved; ++a) {
+                const double* __restrict src = cur[a]->data();
+                double* __restrict dst = spare_[a].data();
+                for (std::size_t i = begin_of(tid), e = end_of(tid); i < e; ++i) dst[i] = src[std::size_t(order_[i])];
+            }
+            for (std::size_t i = begin_of(tid), e = end_of(tid); i < e; ++i) {
+                const std::size_t o = std::size_t(order_[i]);
+                spare_id_[i] = id_[o];
+                spare_touch_[i] = wall_touch_[o];
+                dispx_[i] = 0;
+                dispy_[i] = 0;
+            }
+        }
+        sync();
+        if (tid == 0) {
+            std::vector<double>* cur[] = {&x_, &y_, &vx_, &vy_, &vpx_, &vpy_, &rad_, &mass_, &inv_mass_,
+                                          &vy_at_touch_, &vx_at_touch_, &wall_impulse_y_};
+            for (std::size_t a = 0; a < kMoved; ++a) cur[a]->swap(spare_[a]);
+            id_.swap(spare_id_);
+            wall_touch_.swap(spare_touch_);
+            for (std::size_t i = 0; i < n; ++i) slot_of_id_[std::size_t(id_[i])] = int(i);
+            for (std::size_t c = 0; c + 1 < cell_start_.size(); ++c)
+                for (int i = cell_start_[c]; i < cell_start_[c + 1]; ++i) cell_of_[std::size_t(i)] = int(c);
+        }
+        sync();
+        list_share(tid);
+        sync();
+        // A grain with more partners than the list's stride: widen it and list again (rare).
+        for (;;) {
+            std::size_t most = 0;
+            for (const Scratch& s : scratch_) most = std::max(most, s.most_partners);
+            if (most <= std::size_t(stride_)) break;
+            sync(); // everyone has read most_partners
+            if (tid == 0) {
+                while (std::size_t(stride_) < most) stride_ *= 2;
+                nb_.assign(n * std::size_t(stride_), 0);
+            }
+            sync();
+            list_share(tid);
+            sync();
+        }
+    }
 
-        nb_start_.assign(n + 1, 0);
-        nb_.clear();
-        const double range2 = range * range;
-        for (std::size_t i = 0; i < n; ++i) {
-            const int ix = cell_of[i] % cx, iy = cell_of[i] / cx;
+    // Lists the partners of this thread's grains; notes in scratch the most partners one had
+    // (a grain with more than the stride is not written and makes rebuild() widen the stride).
+    void list_share(int tid) {
+        Scratch& s = scratch_[std::size_t(tid)];
+        std::size_t most = 0;
+        std::vector<std::uint64_t>& keys = s.keys;
+        const double* __restrict x = x_.data();
+        const double* __restrict y = y_.data();
+        const double* __restrict r = rad_.data();
+        const double len = geo_.length;
+        for (std::size_t i = begin_of(tid), e = end_of(tid); i < e; ++i) {
+            keys.clear();
+            const int c = cell_of_[i];
+            const int ix = c % cells_x_, iy = c / cells_x_;
+            const std::uint64_t me = std::uint64_t(id_[i]);
+            const double xi = x[i], yi = y[i], ri = r[i];
+            std::uint64_t rank = 0;
             for (int ddy = -1; ddy <= 1; ++ddy) {
-                const int jy = (iy + ddy + cy) % cy;
-                for (int ddx = -1; ddx <= 1; ++ddx) {
+                const int jy = (iy + ddy + cells_y_) % cells_y_;
+                for (int ddx = -1; ddx <= 1; ++ddx, ++rank) {
                     const int jx = ix + ddx;
-                    if (jx < 0 || jx >= cx) continue;
-                    const int c = jy * cx + jx;
-                    for (int k = cell_start_[std::size_t(c)]; k < cell_start_[std::size_t(c) + 1]; ++k) {
-                        const int j = cell_items_[std::size_t(k)];
-                        if (j <= int(i)) continue;
-                        const double dx = x_[i] - x_[std::size_t(j)];
-                        const double dy = min_image(y_[i] - y_[std::size_t(j)]);
-                        if (dx * dx + dy * dy < range2) nb_.push_back(j);
+                    if (jx < 0 || jx >= cells_x_) continue;
+                    const int cj = jy * cells_x_ + jx;
+                    for (int j = cell_start_[std::size_t(cj)]; j < cell_start_[std::size_t(cj) + 1]; ++j) {
+                        const double dx = xi - x[j];
+                        double dy = yi - y[j];
+                        dy = dy > 0.5 * len ? dy - len : (dy < -0.5 * len ? dy + len : dy);
+                        const double cut = ri + r[j] + skin_;
+                        if (dx * dx + dy * dy >= cut * cut || std::size_t(j) == i) continue;
+                        // Sort key: a smaller id sorts first, by id; a larger id after all
+                        // of them, by (cell rank, id). The low 32 bits are the partner's id.
+                        const std::uint64_t other = std::uint64_t(id_[std::size_t(j)]);
+                        keys.push_back(other < me ? other : ((rank + 1) << 32) | other);
                     }
                 }
             }
-            nb_start_[i + 1] = int(nb_.size());
+            most = std::max(most, keys.size());
+            if (keys.size() > std::size_t(stride_)) continue;
+            std::sort(keys.begin(), keys.end());
+            int* out = nb_.data() + i * std::size_t(stride_);
+            int low = 0;
+            for (std::size_t k = 0; k < keys.size(); ++k) {
+                out[k] = slot_of_id_[std::size_t(keys[k] & 0xffffffffu)];
+                low += (keys[k] >> 32) == 0;
+            }
+            nb_count_[i] = int(keys.size());
+            nb_low_[i] = low;
         }
-        ++builds_;
+        s.most_partners = most;
     }
 
-    double min_image(double dy) const {
-        if (dy > 0.5 * geo_.length) return dy - geo_.length;
-        if (dy < -0.5 * geo_.length) return dy + geo_.length;
-        return dy;
-    }
-
+    // ---- forces ----------------------------------------------------------------------------
     // Force of one contact on grain i with unit normal (nx, ny) from the partner to i, overlap
-    // xi, relative velocity (rvx, rvy) = v_i - v_partner.
+    // xi, relative velocity (rvx, rvy) = v_i - v_partner. Swapping the grains negates n and the
+    // relative velocity exactly, leaves xi_dot and v_S unchanged ((-a)(-b) = ab and (-a)b = -(ab)
+    // in floating point), and so negates (fx, fy) exactly.
     inline void contact(double nx, double ny, double xi, double rvx, double rvy, double m_red, double& fx,
                         double& fy) const {
         const double xi_dot = -(rvx * nx + rvy * ny);
@@ -255,54 +524,82 @@ private:
         fy = fn * ny + fs * nx;
     }
 
-    void compute_forces() {
-        const std::size_t n = x_.size();
-        std::fill(ax_.begin(), ax_.end(), 0.0);
-        std::fill(ay_.begin(), ay_.end(), 0.0);
+    // Forces on this thread's grains, then (kick) the closing half kick and the wall-impact
+    // bookkeeping of each grain.
+    void forces(int tid, bool kick) {
+        Scratch& s = scratch_[std::size_t(tid)];
+        s.impacts = 0;
+        s.completed.clear();
+        const double h = 0.5 * dt_, len = geo_.length, half = 0.5 * geo_.length;
+        const double* __restrict x = x_.data();
+        const double* __restrict y = y_.data();
+        const double* __restrict r = rad_.data();
+        const double* __restrict m = mass_.data();
+        const double* __restrict vpx = vpx_.data();
+        const double* __restrict vpy = vpy_.data();
+        const int stride = stride_;
         double worst = 0;
-        for (std::size_t i = 0; i < n; ++i) {
-            const double xi_ = x_[i], yi = y_[i], ri = rad_[i], mi = mass_[i];
-            const double vxi = vpx_[i], vyi = vpy_[i];
-            double fxi = 0, fyi = 0;
-            for (int k = nb_start_[i]; k < nb_start_[i + 1]; ++k) {
-                const std::size_t j = std::size_t(nb_[std::size_t(k)]);
-                const double dx = xi_ - x_[j];
-                const double dy = min_image(yi - y_[j]);
-                const double rs = ri + rad_[j];
+        for (std::size_t i = begin_of(tid), e = end_of(tid); i < e; ++i) {
+            const double xi_ = x[i], yi = y[i], ri = r[i], mi = m[i];
+            const double vxi = vpx[i], vyi = vpy[i];
+            const int* nb = nb_.data() + i * std::size_t(stride);
+            const int low = nb_low_[i], count = nb_count_[i];
+            double sum[2][2] = {{0, 0}, {0, 0}}; // [partner id below / above][x, y]
+            for (int k = 0; k < count; ++k) {
+                const std::size_t j = std::size_t(nb[k]);
+                const double dx = xi_ - x[j];
+                double dy = yi - y[j];
+                if (dy > half) dy -= len;
+                else if (dy < -half) dy += len;
+                const double rs = ri + r[j];
                 const double d2 = dx * dx + dy * dy;
                 if (d2 >= rs * rs) continue;
                 const double d = std::sqrt(d2);
                 const double xi = rs - d;
-                worst = std::max(worst, xi / (2 * std::min(ri, rad_[j])));
-                const double m_red = mi * mass_[j] / (mi + mass_[j]);
+                worst = std::max(worst, xi / (2 * std::min(ri, r[j])));
+                const double m_red = mi * m[j] / (mi + m[j]);
                 double fx, fy;
-                contact(dx / d, dy / d, xi, vxi - vpx_[j], vyi - vpy_[j], m_red, fx, fy);
-                fxi += fx;
-                fyi += fy;
-                ax_[j] -= fx;
-                ay_[j] -= fy;
+                contact(dx / d, dy / d, xi, vxi - vpx[j], vyi - vpy[j], m_red, fx, fy);
+                const int side = k >= low;
+                sum[side][0] += fx;
+                sum[side][1] += fy;
             }
-            ax_[i] += fxi;
-            ay_[i] += fyi;
+            double fx = sum[0][0] + sum[1][0], fy = sum[0][1] + sum[1][1];
+            bool touched = false;
+            const double reach = ri + geo_.wall_radius;
+            if (xi_ < reach) touched |= wall_row(i, 0.0, 0.0, fx, fy, worst);
+            if (xi_ > geo_.width - reach) touched |= wall_row(i, geo_.width, geo_.right_row_shift, fx, fy, worst);
+            const double axi = fx * inv_mass_[i], ayi = fy * inv_mass_[i] - geo_.gravity;
+            ax_[i] = axi;
+            ay_[i] = ayi;
+            if (!kick) continue;
+            vx_[i] += h * axi;
+            vy_[i] += h * ayi;
+            // A wall impact lasts from the first step a grain touches any wall grain to the first
+            // step it touches none. Its Δv_y, as in Eq. (9) and the impact studies, is the
+            // velocity change caused by the wall: the wall force's impulse along +y over the
+            // impact, divided by the mass (gravity and collisions with other free grains during
+            // the impact are not counted).
+            if (touched && !wall_touch_[i]) {
+                ++s.impacts;
+                vy_at_touch_[i] = vy_[i];
+                vx_at_touch_[i] = vx_[i];
+            } else if (!touched && wall_touch_[i]) {
+                s.completed.push_back({id_[i], wall_impulse_y_[i] * inv_mass_[i], std::abs(vy_at_touch_[i]),
+                                       std::abs(vx_at_touch_[i])});
+            }
+            if (!touched) wall_impulse_y_[i] = 0;
+            wall_touch_[i] = touched;
         }
-        // Wall grains.
-        for (std::size_t i = 0; i < n; ++i) {
-            const double reach = rad_[i] + geo_.wall_radius;
-            if (x_[i] < reach) wall_row(i, 0.0, 0.0, worst);
-            if (x_[i] > geo_.width - reach) wall_row(i, geo_.width, geo_.right_row_shift, worst);
-        }
-        for (std::size_t i = 0; i < n; ++i) {
-            ax_[i] *= inv_mass_[i];
-            ay_[i] = ay_[i] * inv_mass_[i] - geo_.gravity;
-        }
-        max_overlap_ = worst;
+        s.worst = worst;
     }
 
-    void wall_row(std::size_t i, double xw, double shift, double& worst) {
+    bool wall_row(std::size_t i, double xw, double shift, double& fx_sum, double& fy_sum, double& worst) {
         const double reach = rad_[i] + geo_.wall_radius;
         const double lam = geo_.wall_spacing;
         const long k0 = long(std::floor((y_[i] - shift - reach) / lam));
         const long k1 = long(std::ceil((y_[i] - shift + reach) / lam));
+        bool touched = false;
         for (long k = k0; k <= k1; ++k) {
             const double dx = x_[i] - xw;
             const double dy = y_[i] - (shift + double(k) * lam);
@@ -313,65 +610,72 @@ private:
             worst = std::max(worst, xi / (2 * std::min(rad_[i], geo_.wall_radius)));
             double fx, fy;
             contact(dx / d, dy / d, xi, vpx_[i], vpy_[i], mass_[i], fx, fy);
-            ax_[i] += fx;
-            ay_[i] += fy;
+            fx_sum += fx;
+            fy_sum += fy;
             wall_impulse_y_[i] += fy * dt_;
-            touch_flag_[i] = 1;
+            touched = true;
+        }
+        return touched;
+    }
+
+    // After the forces of a step (thread 0): the largest overlap, and the wall impacts completed
+    // in this step, added in id order.
+    void finish_step_stats(bool count) {
+        double worst = 0;
+        long impacts = 0;
+        std::size_t ncomp = 0;
+        for (const Scratch& s : scratch_) {
+            worst = std::max(worst, s.worst);
+            impacts += s.impacts;
+            ncomp += s.completed.size();
+        }
+        max_overlap_ = worst;
+        if (!count) return;
+        wall_.impacts += impacts;
+        if (ncomp == 0) return;
+        merged_.clear();
+        for (const Scratch& s : scratch_) merged_.insert(merged_.end(), s.completed.begin(), s.completed.end());
+        std::sort(merged_.begin(), merged_.end(), [](const Completion& a, const Completion& b) { return a.id < b.id; });
+        for (const Completion& c : merged_) {
+            ++wall_.completed;
+            wall_.sum_dvy += c.dvy;
+            wall_.sum_vy_in += c.vy_in;
+            wall_.sum_vx_in += c.vx_in;
         }
     }
 
-    // A wall impact lasts from the first step a grain touches any wall grain to the first step it
-    // touches none. Its Δv_y, as in Eq. (9) and the impact studies, is the velocity change caused
-    // by the wall: the wall force's impulse along +y over the impact, divided by the mass (gravity
-    // and collisions with other free grains during the impact are not counted).
-    void track_wall_impacts() {
-        const std::size_t n = x_.size();
-        for (std::size_t i = 0; i < n; ++i) {
-            const bool now = touch_flag_.size() == n && touch_flag_[i];
-            if (now && !wall_touch_[i]) {
-                ++wall_.impacts;
-                vy_at_touch_[i] = vy_[i];
-                vx_at_touch_[i] = vx_[i];
-            } else if (!now && wall_touch_[i]) {
-                ++wall_.completed;
-                wall_.sum_dvy += wall_impulse_y_[i] * inv_mass_[i];
-                wall_.sum_vy_in += std::abs(vy_at_touch_[i]);
-                wall_.sum_vx_in += std::abs(vx_at_touch_[i]);
-            }
-            if (!now) wall_impulse_y_[i] = 0;
-            wall_touch_[i] = now;
-        }
-        std::fill(touch_flag_.begin(), touch_flag_.end(), 0);
-    }
+    static constexpr std::size_t kMoved = 12; // per-grain double arrays moved by a re-sort (ax, ay are recomputed)
 
-public:
-    // Must be called once after all grains are added (sizes the per-grain scratch arrays).
-    void finalize() {
-        touch_flag_.assign(x_.size(), 0);
-        wall_impulse_y_.assign(x_.size(), 0.0);
-        vpx_ = vx_;
-        vpy_ = vy_;
-        dispx_.assign(x_.size(), 0.0);
-        dispy_.assign(x_.size(), 0.0);
-        compute_forces_after_build();
-        std::fill(touch_flag_.begin(), touch_flag_.end(), 0);
-        wall_ = {};
-    }
-
-private:
     NormalLaw normal_;
     ShearLaw shear_;
     PipeGeometry geo_;
     double dt_, skin_;
     double t_ = 0;
-    long steps_ = 0, builds_ = 0;
+    long steps_ = 0, builds_ = 0, exact_tests_ = 0;
     bool need_build_ = true;
     double max_overlap_ = 0;
+    double range_ = 0, cell_w_ = 0, cell_h_ = 0;
+    int cells_x_ = 1, cells_y_ = 1;
+    // Per grain, in memory (cell) order; id_ maps a slot to the grain's id, slot_of_id_ back.
     std::vector<double> x_, y_, vx_, vy_, vpx_, vpy_, ax_, ay_, rad_, mass_, inv_mass_, dispx_, dispy_;
     std::vector<double> vy_at_touch_, vx_at_touch_, wall_impulse_y_;
-    std::vector<char> wall_touch_, touch_flag_;
-    std::vector<int> cell_start_, cell_items_, nb_start_, nb_;
+    std::vector<char> wall_touch_;
+    std::vector<int> id_, slot_of_id_;
+    std::vector<double> spare_[kMoved];
+    std::vector<int> spare_id_;
+    std::vector<char> spare_touch_;
+    // Cells (by slot after a build) and the list: partners of slot i at nb_[i * stride_ ...],
+    // nb_count_[i] of them, the first nb_low_[i] with smaller id.
+    std::vector<int> cell_start_, cell_of_, order_, fill_;
+    std::vector<int> nb_, nb_count_, nb_low_;
+    int stride_ = 16;
     WallImpactStats wall_;
+    int threads_ = 1;
+    std::unique_ptr<SpinTeam> team_;
+    std::vector<Scratch> scratch_ = std::vector<Scratch>(1);
+    std::vector<Completion> merged_;
+    long version_ = 0;
+    mutable std::pair<long, std::vector<double>> out_[8];
 };
 
 } // namespace granrepro
