@@ -14,6 +14,13 @@
 // when any grain has moved more than skin/2 relative to the mean displacement since the last
 // build, so every step costs O(N). At each build the grains are re-sorted into cell order, so
 // that neighbours are near in memory and a thread's share of the grains is a slab of the pipe.
+// A step: (1) half kick and drift of every grain, noting the grains near a wall; (2) contact
+// test of each listed pair, once per pair, as a branch-free pass that flags both of the pair's
+// list entries; (3) forces of the flagged entries, grain by grain in list order; (4) the wall
+// rows, for the grains near a wall; (5) accelerations and closing half kick of every grain;
+// (6) wall-impact bookkeeping of the grains that touch or touched a wall. (1) and (5) run two
+// grains per SSE2 instruction; contacts (a few per hundred list entries) and wall grains are
+// the only scalar work per grain.
 //
 // Determinism. Grains keep the index they were added with ("id"); every accessor speaks ids.
 // The force on grain I is summed in an order fixed by ids and by the cell grid at the last build,
@@ -32,6 +39,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <functional>
 #include <limits>
 #include <memory>
@@ -92,6 +100,7 @@ public:
         const double cpx = scratch_[0].cprev_x, cpy = scratch_[0].cprev_y;
         scratch_.assign(std::size_t(threads), Scratch{});
         for (auto& s : scratch_) s.cprev_x = cpx, s.cprev_y = cpy;
+        if (!need_build_) run_all([&](int tid) { thread_lists(tid); });
     }
     int threads() const { return threads_; }
 
@@ -119,9 +128,16 @@ public:
                               &dispy_, &vy_at_touch_, &vx_at_touch_, &wall_impulse_y_})
             b += v->capacity() * sizeof(double);
         for (const auto& v : spare_) b += v.capacity() * sizeof(double);
-        b += (id_.capacity() + slot_of_id_.capacity() + spare_id_.capacity() + nb_.capacity() + nb_count_.capacity() +
-              nb_low_.capacity() + cell_of_.capacity() + order_.capacity() + cell_start_.capacity()) * sizeof(int);
-        b += wall_touch_.capacity() + spare_touch_.capacity();
+        b += (id_.capacity() + slot_of_id_.capacity() + spare_id_.capacity() + nb_start_.capacity() + nb_owner_.capacity() +
+              nb_j_.capacity() + cell_of_.capacity() + cell_x_.capacity() + cell_y_.capacity() + order_.capacity() +
+              fill_.capacity() + cell_start_.capacity()) * sizeof(int);
+        b += nb_mirror_.capacity() * sizeof(int) + nb_flag_.capacity();
+        for (const Scratch& s : scratch_)
+            b += s.keys.capacity() * 8 + s.pairs.capacity() * sizeof(Pair) +
+                 (s.partners.capacity() + s.counts.capacity() + s.hits.capacity() + s.near.capacity() +
+                  s.touching.capacity()) * sizeof(int);
+        b += wall_touch_.capacity() + spare_touch_.capacity() + near_mark_.capacity();
+        b += (fx_.capacity() + fy_.capacity()) * sizeof(double);
         return x_.empty() ? 0.0 : double(b) / double(x_.size());
     }
 
@@ -173,13 +189,9 @@ public:
         if (need_build_) throw std::logic_error("PipeEngine: call finalize() after adding grains");
         if (steps <= 0) return;
         ++version_;
-        if (threads_ == 1) {
-            for (long s = 0; s < steps; ++s) one_step(0);
-        } else {
-            team_->run([&](int tid) {
-                for (long s = 0; s < steps; ++s) one_step(tid);
-            });
-        }
+        run_all([&](int tid) {
+            for (long s = 0; s < steps; ++s) one_step(tid);
+        });
     }
 
     // Must be called once after all grains are added (sizes the per-grain scratch arrays).
@@ -192,6 +204,9 @@ public:
         dispy_.assign(n, 0.0);
         ax_.assign(n, 0.0);
         ay_.assign(n, 0.0);
+        fx_.assign(n, 0.0);
+        fy_.assign(n, 0.0);
+        near_mark_.assign(n, 0);
         double rmax = 0;
         for (double r : rad_) rmax = std::max(rmax, r);
         range_ = 2 * rmax + skin_;
@@ -208,12 +223,13 @@ public:
         ++version_;
         // The first list and forces, as a step would compute them, without kicks or wall-impact
         // bookkeeping (the wall impulse of this evaluation is kept, as it always was).
-        auto job = [&](int tid) {
+        run_all([&](int tid) {
             rebuild(tid);
+            find_near(tid);
+            detect(tid);
+            sync();
             forces(tid, false);
-        };
-        if (threads_ == 1) job(0);
-        else team_->run(job);
+        });
         finish_step_stats(false);
         wall_ = {};
     }
@@ -224,15 +240,31 @@ private:
         int id;
         double dvy, vy_in, vx_in;
     };
+    struct Pair {
+        int i, j;      // slots, i < j
+        int k, mirror; // list entries i -> j and j -> i
+    };
     struct alignas(64) Scratch {
-        double sum_x = 0, sum_y = 0, max_abs = 0, max_q = 0; // rebuild-test partials of this step
-        double cprev_x = 0, cprev_y = 0;                     // mean displacement of the last step
+        double sum_x = 0, sum_y = 0, max_q = 0; // rebuild-test partials of this step
+        double cprev_x = 0, cprev_y = 0;        // mean displacement of the last step
         double worst = 0;
         long impacts = 0;
         std::vector<Completion> completed;
-        std::size_t most_partners = 0;   // of the last list_share()
-        std::vector<std::uint64_t> keys; // list-build scratch
+        std::vector<std::uint64_t> keys;   // list-build scratch
+        std::vector<int> partners, counts; // this thread's grains' partners (slots), per grain
+        std::size_t list_offset = 0;       // where they start in the whole list
+        std::vector<Pair> pairs;           // the pairs this thread tests (its grain has the lower slot)
+        std::vector<int> hits;             // list entries in contact this step
+        std::vector<int> near;             // slots near a wall this step (near_count of them)
+        std::size_t near_count = 0;
+        std::vector<int> touching;         // slots touching a wall (or holding wall impulse) after the last step
     };
+
+    template <class Job>
+    void run_all(Job&& job) {
+        if (threads_ == 1) job(0);
+        else team_->run(job);
+    }
 
     std::size_t begin_of(int tid) const { return x_.size() * std::size_t(tid) / std::size_t(threads_); }
     std::size_t end_of(int tid) const { return x_.size() * std::size_t(tid + 1) / std::size_t(threads_); }
@@ -261,7 +293,12 @@ private:
     void one_step(int tid) {
         drift(tid);
         sync();
-        if (must_rebuild(tid)) rebuild(tid);
+        if (must_rebuild(tid)) {
+            rebuild(tid);
+            find_near(tid);
+        }
+        detect(tid);
+        sync();
         forces(tid, true);
         sync();
         if (tid == 0) {
@@ -276,12 +313,25 @@ private:
         if (team_) team_->barrier();
     }
 
-    // Half kick, drift, periodic wrap, predicted velocity; partial sums for the rebuild test.
+    using v2d = double __attribute__((vector_size(16)));
+    static v2d load2(const double* p) {
+        v2d v;
+        std::memcpy(&v, p, sizeof v);
+        return v;
+    }
+    static void store2(double* p, v2d v) { std::memcpy(p, &v, sizeof v); }
+    static double load1(const double* p) { return *p; }
+    static void store1(double* p, double v) { *p = v; }
+    static int lanes(bool b) { return int(b); }
+    template <class M>
+    static int lanes(M m) {
+        return int(m[0] != 0) | int(m[1] != 0) << 1;
+    }
+
+    // Half kick, drift, periodic wrap, predicted velocity; partial sums for the rebuild test; the
+    // grains near a wall. Two grains at a time (SSE2 lanes, the same IEEE operations per grain).
     void drift(int tid) {
-        const double h = 0.5 * dt_, dt = dt_, len = geo_.length;
         Scratch& s = scratch_[std::size_t(tid)];
-        const double cpx = s.cprev_x, cpy = s.cprev_y;
-        double sx = 0, sy = 0, amax = 0, qmax = 0;
         double* __restrict x = x_.data();
         double* __restrict y = y_.data();
         double* __restrict vx = vx_.data();
@@ -292,30 +342,61 @@ private:
         double* __restrict uy = dispy_.data();
         const double* __restrict ax = ax_.data();
         const double* __restrict ay = ay_.data();
-        for (std::size_t i = begin_of(tid), e = end_of(tid); i < e; ++i) {
-            const double vxi = vx[i] + h * ax[i], vyi = vy[i] + h * ay[i];
-            vx[i] = vxi;
-            vy[i] = vyi;
-            const double dx = dt * vxi, dy = dt * vyi;
-            x[i] += dx;
-            double yi = y[i] + dy;
-            yi = yi < 0 ? yi + len : (yi >= len ? yi - len : yi);
-            y[i] = yi;
-            const double uxi = ux[i] + dx, uyi = uy[i] + dy;
-            ux[i] = uxi;
-            uy[i] = uyi;
-            vpx[i] = vxi + h * ax[i];
-            vpy[i] = vyi + h * ay[i];
+        const double* __restrict r = rad_.data();
+        int* __restrict near = s.near.data();
+        std::size_t nn = 0;
+        const double h = 0.5 * dt_, dt = dt_, len = geo_.length, wr = geo_.wall_radius, width = geo_.width;
+        auto body = [&](std::size_t i, auto one, auto cpx, auto cpy, auto& sx, auto& sy, auto& qmax, auto ld, auto st) {
+            const auto axi = ld(ax + i), ayi = ld(ay + i);
+            const auto vxi = ld(vx + i) + h * one * axi, vyi = ld(vy + i) + h * one * ayi;
+            st(vx + i, vxi);
+            st(vy + i, vyi);
+            const auto dx = dt * one * vxi, dy = dt * one * vyi;
+            const auto xi = ld(x + i) + dx;
+            st(x + i, xi);
+            auto yi = ld(y + i) + dy;
+            yi = yi < 0 * one ? yi + len * one : (yi >= len * one ? yi - len * one : yi);
+            st(y + i, yi);
+            const auto uxi = ld(ux + i) + dx, uyi = ld(uy + i) + dy;
+            st(ux + i, uxi);
+            st(uy + i, uyi);
+            st(vpx + i, vxi + h * one * axi);
+            st(vpy + i, vyi + h * one * ayi);
             sx += uxi;
             sy += uyi;
-            amax = std::max(amax, std::max(std::abs(uxi), std::abs(uyi)));
-            const double qx = uxi - cpx, qy = uyi - cpy;
-            qmax = std::max(qmax, qx * qx + qy * qy);
-        }
+            const auto qx = uxi - cpx, qy = uyi - cpy;
+            const auto q = qx * qx + qy * qy;
+            qmax = q > qmax ? q : qmax;
+            const auto reach = ld(r + i) + wr * one;
+            if (const int m = lanes(xi < reach || xi > width * one - reach)) {
+                near[nn] = int(i);
+                nn += m & 1;
+                near[nn] = int(i + 1);
+                nn += m >> 1;
+            }
+        };
+        std::size_t i = begin_of(tid);
+        const std::size_t e = end_of(tid);
+        v2d vsx{0, 0}, vsy{0, 0}, vqm{0, 0};
+        const v2d one{1, 1}, vcx{s.cprev_x, s.cprev_x}, vcy{s.cprev_y, s.cprev_y};
+        for (; i + 2 <= e; i += 2) body(i, one, vcx, vcy, vsx, vsy, vqm, load2, store2);
+        double sx = vsx[0] + vsx[1], sy = vsy[0] + vsy[1], qmax = std::max(vqm[0], vqm[1]);
+        for (; i < e; ++i) body(i, 1.0, s.cprev_x, s.cprev_y, sx, sy, qmax, load1, store1);
         s.sum_x = sx;
         s.sum_y = sy;
-        s.max_abs = amax;
         s.max_q = qmax;
+        s.near_count = nn;
+    }
+
+    // The grains near a wall, by a scan (after a re-sort moved them).
+    void find_near(int tid) {
+        Scratch& s = scratch_[std::size_t(tid)];
+        std::size_t nn = 0;
+        for (std::size_t i = begin_of(tid), e = end_of(tid); i < e; ++i) {
+            const double reach = rad_[i] + geo_.wall_radius;
+            if (x_[i] < reach || x_[i] > geo_.width - reach) s.near[nn++] = int(i);
+        }
+        s.near_count = nn;
     }
 
     // A pair's distance changes by at most |u_i - u_j| <= |u_i - c| + |u_j - c| for any common
@@ -328,31 +409,34 @@ private:
     // order). It is mostly settled from the threads' partial sums: with c' their mean, c_prev
     // the previous step's c' and Q = max_i |u_i - c_prev|^2, every |u_i - c| lies within
     // sqrt(Q) + |c' - c_prev| + delta, where delta bounds |c - c'| from summation rounding
-    // (2 n eps max|u| per component). Only when lim falls inside that bracket is the rule
-    // evaluated exactly, in id order.
+    // (2 n eps max|u| per component, max|u| <= sqrt(Q) + |c_prev|). Only when lim falls inside
+    // that bracket (in practice the step before a rebuild, or never) is the rule evaluated
+    // exactly, in id order.
     bool must_rebuild(int tid) {
         const std::size_t n = x_.size();
         if (n == 0) return false;
-        double sx = 0, sy = 0, amax = 0, qmax = 0;
+        double sx = 0, sy = 0, qmax = 0;
         for (const Scratch& s : scratch_) {
             sx += s.sum_x;
             sy += s.sum_y;
-            amax = std::max(amax, s.max_abs);
             qmax = std::max(qmax, s.max_q);
         }
         Scratch& mine = scratch_[std::size_t(tid)];
         const double cx = sx / double(n), cy = sy / double(n);
         const double lim = 0.25 * skin_ * skin_;
         const double shift = std::sqrt((cx - mine.cprev_x) * (cx - mine.cprev_x) + (cy - mine.cprev_y) * (cy - mine.cprev_y));
-        const double delta = 4.0 * double(n + 1) * std::numeric_limits<double>::epsilon() * amax;
         const double r = std::sqrt(qmax), slack = 1e-12;
+        const double umax = 2 * (r + std::abs(mine.cprev_x) + std::abs(mine.cprev_y));
+        const double delta = 4.0 * double(n + 1) * std::numeric_limits<double>::epsilon() * umax;
         const double hi = (r + shift) * (1 + slack) + delta;
         const double lo = std::max(0.0, r * (1 - slack) - shift * (1 + slack) - delta);
         bool rebuild_now;
-        if (hi * hi * (1 + slack) <= lim) rebuild_now = false;
-        else if (lo * lo * (1 - slack) > lim) rebuild_now = true;
+        if (std::isfinite(cx) && std::isfinite(cy) && std::isfinite(hi) && hi * hi * (1 + slack) <= lim)
+            rebuild_now = false;
+        else if (std::isfinite(cx) && std::isfinite(cy) && std::isfinite(hi) && lo * lo * (1 - slack) > lim)
+            rebuild_now = true;
         else {
-            // Undecided (or NaN): every thread evaluates the exact rule (the same answer).
+            // Undecided (or not finite): every thread evaluates the exact rule (the same answer).
             rebuild_now = moved_too_far_exact();
             if (tid == 0) ++exact_tests_;
         }
@@ -405,26 +489,36 @@ private:
             spare_id_.resize(n);
             spare_touch_.resize(n);
             slot_of_id_.resize(n);
-            nb_count_.resize(n);
-            nb_low_.resize(n);
-            if (nb_.size() < n * std::size_t(stride_)) nb_.resize(n * std::size_t(stride_));
+            cell_x_.resize(n);
+            cell_y_.resize(n);
+            nb_start_.resize(n + 1);
         }
         sync();
         // Move this thread's share of the new order.
         {
             std::vector<double>* cur[] = {&x_, &y_, &vx_, &vy_, &vpx_, &vpy_, &rad_, &mass_, &inv_mass_,
                                           &vy_at_touch_, &vx_at_touch_, &wall_impulse_y_};
+            const std::size_t b = begin_of(tid), e = end_of(tid);
+            const int* __restrict order = order_.data();
             for (std::size_t a = 0; a < kMoved; ++a) {
                 const double* __restrict src = cur[a]->data();
                 double* __restrict dst = spare_[a].data();
-                for (std::size_t i = begin_of(tid), e = end_of(tid); i < e; ++i) dst[i] = src[std::size_t(order_[i])];
+                for (std::size_t i = b; i < e; ++i) dst[i] = src[order[i]];
             }
-            for (std::size_t i = begin_of(tid), e = end_of(tid); i < e; ++i) {
-                const std::size_t o = std::size_t(order_[i]);
+            for (std::size_t i = b; i < e; ++i) {
+                const std::size_t o = std::size_t(order[i]);
                 spare_id_[i] = id_[o];
                 spare_touch_[i] = wall_touch_[o];
                 dispx_[i] = 0;
                 dispy_[i] = 0;
+                slot_of_id_[std::size_t(id_[o])] = int(i);
+            }
+            // Cell coordinates by slot: slot i is in the cell whose range holds it.
+            std::size_t c = std::size_t(std::upper_bound(cell_start_.begin(), cell_start_.end(), int(b)) - cell_start_.begin()) - 1;
+            for (std::size_t i = b; i < e; ++i) {
+                while (std::size_t(cell_start_[c + 1]) <= i) ++c;
+                cell_x_[i] = int(c) % cells_x_;
+                cell_y_[i] = int(c) / cells_x_;
             }
         }
         sync();
@@ -434,78 +528,118 @@ private:
             for (std::size_t a = 0; a < kMoved; ++a) cur[a]->swap(spare_[a]);
             id_.swap(spare_id_);
             wall_touch_.swap(spare_touch_);
-            for (std::size_t i = 0; i < n; ++i) slot_of_id_[std::size_t(id_[i])] = int(i);
-            for (std::size_t c = 0; c + 1 < cell_start_.size(); ++c)
-                for (int i = cell_start_[c]; i < cell_start_[c + 1]; ++i) cell_of_[std::size_t(i)] = int(c);
         }
         sync();
         list_share(tid);
         sync();
-        // A grain with more partners than the list's stride: widen it and list again (rare).
-        for (;;) {
-            std::size_t most = 0;
-            for (const Scratch& s : scratch_) most = std::max(most, s.most_partners);
-            if (most <= std::size_t(stride_)) break;
-            sync(); // everyone has read most_partners
-            if (tid == 0) {
-                while (std::size_t(stride_) < most) stride_ *= 2;
-                nb_.assign(n * std::size_t(stride_), 0);
+        // Concatenate the threads' lists into one, in slot order.
+        if (tid == 0) {
+            std::size_t total = 0;
+            for (Scratch& s : scratch_) {
+                s.list_offset = total;
+                total += s.partners.size();
             }
-            sync();
-            list_share(tid);
-            sync();
+            if (nb_j_.size() < total) {
+                const std::size_t cap = total + total / 4;
+                nb_j_.resize(cap);
+                nb_owner_.resize(cap);
+                nb_mirror_.resize(cap);
+                nb_flag_.resize(cap);
+            }
+            nb_start_[n] = int(total);
         }
+        sync();
+        {
+            Scratch& s = scratch_[std::size_t(tid)];
+            std::copy(s.partners.begin(), s.partners.end(), nb_j_.begin() + std::ptrdiff_t(s.list_offset));
+            std::size_t k = s.list_offset;
+            for (std::size_t i = begin_of(tid), e = end_of(tid); i < e; ++i) {
+                nb_start_[i] = int(k);
+                const std::size_t stop = k + std::size_t(s.counts[i - begin_of(tid)]);
+                for (; k < stop; ++k) nb_owner_[k] = int(i);
+            }
+        }
+        sync();
+        // Each entry i -> j finds its mirror j -> i.
+        for (std::size_t k = std::size_t(nb_start_[begin_of(tid)]), k1 = std::size_t(nb_start_[end_of(tid)]); k < k1; ++k) {
+            const int i = nb_owner_[k], j = nb_j_[k];
+            int m = nb_start_[std::size_t(j)];
+            while (nb_j_[std::size_t(m)] != i) ++m;
+            nb_mirror_[k] = m;
+        }
+        thread_lists(tid);
     }
 
-    // Lists the partners of this thread's grains; notes in scratch the most partners one had
-    // (a grain with more than the stride is not written and makes rebuild() widen the stride).
+    // What each thread derives from the whole list for its share of the grains: the pairs it
+    // tests (those whose lower slot is its own) and the grains that touch a wall.
+    void thread_lists(int tid) {
+        Scratch& s = scratch_[std::size_t(tid)];
+        const std::size_t b = begin_of(tid), e = end_of(tid);
+        const std::size_t k0 = std::size_t(nb_start_[b]), k1 = std::size_t(nb_start_[e]);
+        s.pairs.clear();
+        for (std::size_t k = k0; k < k1; ++k)
+            if (nb_j_[k] > nb_owner_[k]) s.pairs.push_back({nb_owner_[k], nb_j_[k], int(k), nb_mirror_[k]});
+        s.hits.resize(k1 - k0 + 1);
+        s.near.resize(e - b + 2);
+        s.touching.clear();
+        for (std::size_t i = b; i < e; ++i)
+            if (wall_touch_[i] || wall_impulse_y_[i] != 0) s.touching.push_back(int(i));
+    }
+
+    // Lists the partners of this thread's grains into its scratch (partners, counts).
     void list_share(int tid) {
         Scratch& s = scratch_[std::size_t(tid)];
-        std::size_t most = 0;
+        const std::size_t b = begin_of(tid), e = end_of(tid);
+        s.partners.clear();
+        s.counts.resize(e - b);
         std::vector<std::uint64_t>& keys = s.keys;
         const double* __restrict x = x_.data();
         const double* __restrict y = y_.data();
         const double* __restrict r = rad_.data();
-        const double len = geo_.length;
-        for (std::size_t i = begin_of(tid), e = end_of(tid); i < e; ++i) {
-            keys.clear();
-            const int c = cell_of_[i];
-            const int ix = c % cells_x_, iy = c / cells_x_;
-            const std::uint64_t me = std::uint64_t(id_[i]);
+        const int* __restrict cx = cell_x_.data();
+        const int* __restrict id = id_.data();
+        const double len = geo_.length, half = 0.5 * geo_.length, skin = skin_;
+        for (std::size_t i = b; i < e; ++i) {
+            const int ix = cx[i], iy = cell_y_[i];
+            const int jx0 = std::max(ix - 1, 0), jx1 = std::min(ix + 1, cells_x_ - 1);
+            int lo[3], hi[3];
+            std::size_t candidates = 0;
+            for (int row = 0; row < 3; ++row) {
+                const int jy = (iy + row - 1 + cells_y_) % cells_y_;
+                lo[row] = cell_start_[std::size_t(jy * cells_x_ + jx0)];
+                hi[row] = cell_start_[std::size_t(jy * cells_x_ + jx1 + 1)];
+                candidates += std::size_t(hi[row] - lo[row]);
+            }
+            if (keys.size() < candidates + 1) keys.resize(2 * candidates + 8);
+            std::uint64_t* __restrict out = keys.data();
+            const std::uint64_t me = std::uint64_t(id[i]);
             const double xi = x[i], yi = y[i], ri = r[i];
-            std::uint64_t rank = 0;
-            for (int ddy = -1; ddy <= 1; ++ddy) {
-                const int jy = (iy + ddy + cells_y_) % cells_y_;
-                for (int ddx = -1; ddx <= 1; ++ddx, ++rank) {
-                    const int jx = ix + ddx;
-                    if (jx < 0 || jx >= cells_x_) continue;
-                    const int cj = jy * cells_x_ + jx;
-                    for (int j = cell_start_[std::size_t(cj)]; j < cell_start_[std::size_t(cj) + 1]; ++j) {
-                        const double dx = xi - x[j];
-                        double dy = yi - y[j];
-                        dy = dy > 0.5 * len ? dy - len : (dy < -0.5 * len ? dy + len : dy);
-                        const double cut = ri + r[j] + skin_;
-                        if (dx * dx + dy * dy >= cut * cut || std::size_t(j) == i) continue;
-                        // Sort key: a smaller id sorts first, by id; a larger id after all
-                        // of them, by (cell rank, id). The low 32 bits are the partner's id.
-                        const std::uint64_t other = std::uint64_t(id_[std::size_t(j)]);
-                        keys.push_back(other < me ? other : ((rank + 1) << 32) | other);
-                    }
+            std::size_t cnt = 0;
+            for (int row = 0; row < 3; ++row) {
+                // rank of cell (row, column) in the order rows below/same/above, left to right
+                const std::uint64_t rank0 = std::uint64_t(row * 3 + 1 - ix);
+                for (int j = lo[row]; j < hi[row]; ++j) {
+                    const double dx = xi - x[j];
+                    double dy = yi - y[j];
+                    dy = dy > half ? dy - len : (dy < -half ? dy + len : dy);
+                    const double cut = ri + r[j] + skin;
+                    const bool hit = dx * dx + dy * dy < cut * cut && std::size_t(j) != i;
+                    const std::uint64_t other = std::uint64_t(id[j]);
+                    // Sort key: a smaller id sorts first, by id; a larger id after all of them,
+                    // by (cell rank, id). The low 32 bits are the partner's id.
+                    out[cnt] = other < me ? other : ((rank0 + std::uint64_t(cx[j]) + 1) << 32) | other;
+                    cnt += hit;
                 }
             }
-            most = std::max(most, keys.size());
-            if (keys.size() > std::size_t(stride_)) continue;
-            std::sort(keys.begin(), keys.end());
-            int* out = nb_.data() + i * std::size_t(stride_);
-            int low = 0;
-            for (std::size_t k = 0; k < keys.size(); ++k) {
-                out[k] = slot_of_id_[std::size_t(keys[k] & 0xffffffffu)];
-                low += (keys[k] >> 32) == 0;
+            for (std::size_t a = 1; a < cnt; ++a) { // insertion sort: a handful of partners
+                const std::uint64_t k = out[a];
+                std::size_t b2 = a;
+                for (; b2 > 0 && out[b2 - 1] > k; --b2) out[b2] = out[b2 - 1];
+                out[b2] = k;
             }
-            nb_count_[i] = int(keys.size());
-            nb_low_[i] = low;
+            for (std::size_t a = 0; a < cnt; ++a) s.partners.push_back(slot_of_id_[std::size_t(out[a] & 0xffffffffu)]);
+            s.counts[i - b] = int(cnt);
         }
-        s.most_partners = most;
     }
 
     // ---- forces ----------------------------------------------------------------------------
@@ -524,74 +658,158 @@ private:
         fy = fn * ny + fs * nx;
     }
 
+    // Contact test of this thread's pairs: one branch-free pass that flags both list entries of
+    // every pair (contact iff not d^2 >= (r_i + r_j)^2, the same in either direction).
+    void detect(int tid) {
+        Scratch& s = scratch_[std::size_t(tid)];
+        const double* __restrict x = x_.data();
+        const double* __restrict y = y_.data();
+        const double* __restrict r = rad_.data();
+        unsigned char* __restrict flag = nb_flag_.data();
+        const double len = geo_.length, half = 0.5 * geo_.length;
+        for (const Pair& p : s.pairs) {
+            const std::size_t i = std::size_t(p.i), j = std::size_t(p.j);
+            const double dx = x[i] - x[j];
+            double dy = y[i] - y[j];
+            dy = dy > half ? dy - len : (dy < -half ? dy + len : dy);
+            const double rs = r[i] + r[j];
+            const unsigned char hit = !(dx * dx + dy * dy >= rs * rs);
+            flag[p.k] = hit;
+            flag[p.mirror] = hit;
+        }
+    }
+
     // Forces on this thread's grains, then (kick) the closing half kick and the wall-impact
-    // bookkeeping of each grain.
+    // bookkeeping.
     void forces(int tid, bool kick) {
         Scratch& s = scratch_[std::size_t(tid)];
-        s.impacts = 0;
-        s.completed.clear();
-        const double h = 0.5 * dt_, len = geo_.length, half = 0.5 * geo_.length;
+        const std::size_t b = begin_of(tid), e = end_of(tid);
+        // The flagged entries, in list order (eight flags per test).
+        const std::size_t k0 = std::size_t(nb_start_[b]), k1 = std::size_t(nb_start_[e]);
+        const unsigned char* __restrict flag = nb_flag_.data();
+        int* __restrict hits = s.hits.data();
+        std::size_t nh = 0, k = k0;
+        for (; k < k1 && (k & 7); ++k) hits[nh] = int(k), nh += flag[k];
+        for (; k + 8 <= k1; k += 8) {
+            std::uint64_t w;
+            std::memcpy(&w, flag + k, 8);
+            if (w)
+                for (std::size_t a = k; a < k + 8; ++a) hits[nh] = int(a), nh += flag[a];
+        }
+        for (; k < k1; ++k) hits[nh] = int(k), nh += flag[k];
+
+        // Contact forces, grain by grain: partners with smaller id, then larger id, then both.
+        const double len = geo_.length, half = 0.5 * geo_.length;
         const double* __restrict x = x_.data();
         const double* __restrict y = y_.data();
         const double* __restrict r = rad_.data();
         const double* __restrict m = mass_.data();
         const double* __restrict vpx = vpx_.data();
         const double* __restrict vpy = vpy_.data();
-        const int stride = stride_;
+        const int* __restrict own = nb_owner_.data();
+        const int* __restrict nb = nb_j_.data();
+        const int* __restrict id = id_.data();
+        double* __restrict fxs = fx_.data();
+        double* __restrict fys = fy_.data();
         double worst = 0;
-        for (std::size_t i = begin_of(tid), e = end_of(tid); i < e; ++i) {
-            const double xi_ = x[i], yi = y[i], ri = r[i], mi = m[i];
-            const double vxi = vpx[i], vyi = vpy[i];
-            const int* nb = nb_.data() + i * std::size_t(stride);
-            const int low = nb_low_[i], count = nb_count_[i];
-            double sum[2][2] = {{0, 0}, {0, 0}}; // [partner id below / above][x, y]
-            for (int k = 0; k < count; ++k) {
-                const std::size_t j = std::size_t(nb[k]);
-                const double dx = xi_ - x[j];
-                double dy = yi - y[j];
+        for (std::size_t a = 0; a < nh;) {
+            const std::size_t i = std::size_t(own[hits[a]]);
+            double low_x = 0, low_y = 0, high_x = 0, high_y = 0;
+            for (; a < nh && std::size_t(own[hits[a]]) == i; ++a) {
+                const std::size_t j = std::size_t(nb[hits[a]]);
+                const double dx = x[i] - x[j];
+                double dy = y[i] - y[j];
                 if (dy > half) dy -= len;
                 else if (dy < -half) dy += len;
-                const double rs = ri + r[j];
-                const double d2 = dx * dx + dy * dy;
-                if (d2 >= rs * rs) continue;
-                const double d = std::sqrt(d2);
+                const double rs = r[i] + r[j];
+                const double d = std::sqrt(dx * dx + dy * dy);
                 const double xi = rs - d;
-                worst = std::max(worst, xi / (2 * std::min(ri, r[j])));
-                const double m_red = mi * m[j] / (mi + m[j]);
+                worst = std::max(worst, xi / (2 * std::min(r[i], r[j])));
+                const double m_red = m[i] * m[j] / (m[i] + m[j]);
                 double fx, fy;
-                contact(dx / d, dy / d, xi, vxi - vpx[j], vyi - vpy[j], m_red, fx, fy);
-                const int side = k >= low;
-                sum[side][0] += fx;
-                sum[side][1] += fy;
+                contact(dx / d, dy / d, xi, vpx[i] - vpx[j], vpy[i] - vpy[j], m_red, fx, fy);
+                if (id[j] < id[i]) {
+                    low_x += fx;
+                    low_y += fy;
+                } else {
+                    high_x += fx;
+                    high_y += fy;
+                }
             }
-            double fx = sum[0][0] + sum[1][0], fy = sum[0][1] + sum[1][1];
+            fxs[i] = low_x + high_x;
+            fys[i] = low_y + high_y;
+        }
+
+        // Wall rows, added after the pair forces.
+        const int* near = s.near.data();
+        const std::size_t nn = s.near_count;
+        for (std::size_t a = 0; a < nn; ++a) {
+            const std::size_t i = std::size_t(near[a]);
+            const double reach = r[i] + geo_.wall_radius;
             bool touched = false;
-            const double reach = ri + geo_.wall_radius;
-            if (xi_ < reach) touched |= wall_row(i, 0.0, 0.0, fx, fy, worst);
-            if (xi_ > geo_.width - reach) touched |= wall_row(i, geo_.width, geo_.right_row_shift, fx, fy, worst);
-            const double axi = fx * inv_mass_[i], ayi = fy * inv_mass_[i] - geo_.gravity;
-            ax_[i] = axi;
-            ay_[i] = ayi;
-            if (!kick) continue;
-            vx_[i] += h * axi;
-            vy_[i] += h * ayi;
-            // A wall impact lasts from the first step a grain touches any wall grain to the first
-            // step it touches none. Its Δv_y, as in Eq. (9) and the impact studies, is the
-            // velocity change caused by the wall: the wall force's impulse along +y over the
-            // impact, divided by the mass (gravity and collisions with other free grains during
-            // the impact are not counted).
-            if (touched && !wall_touch_[i]) {
+            if (x[i] < reach) touched |= wall_row(i, 0.0, 0.0, fxs[i], fys[i], worst);
+            if (x[i] > geo_.width - reach) touched |= wall_row(i, geo_.width, geo_.right_row_shift, fxs[i], fys[i], worst);
+            near_mark_[i] = 1 + touched;
+        }
+        s.worst = worst;
+
+        // Accelerations and the closing half kick, two grains at a time; the force sums are
+        // cleared for the next step.
+        {
+            double* __restrict ax = ax_.data();
+            double* __restrict ay = ay_.data();
+            double* __restrict vx = vx_.data();
+            double* __restrict vy = vy_.data();
+            const double* __restrict im = inv_mass_.data();
+            const double h = 0.5 * dt_, g = geo_.gravity;
+            auto body = [&](std::size_t i, auto one, auto ld, auto st) {
+                const auto axi = ld(fxs + i) * ld(im + i), ayi = ld(fys + i) * ld(im + i) - g * one;
+                st(ax + i, axi);
+                st(ay + i, ayi);
+                st(fxs + i, 0 * one);
+                st(fys + i, 0 * one);
+                if (kick) {
+                    st(vx + i, ld(vx + i) + h * one * axi);
+                    st(vy + i, ld(vy + i) + h * one * ayi);
+                }
+            };
+            std::size_t i = b;
+            const v2d one{1, 1};
+            for (; i + 2 <= e; i += 2) body(i, one, load2, store2);
+            for (; i < e; ++i) body(i, 1.0, load1, store1);
+        }
+
+        // Wall impacts. A wall impact lasts from the first step a grain touches any wall grain
+        // to the first step it touches none. Its Δv_y, as in Eq. (9) and the impact studies, is
+        // the velocity change caused by the wall: the wall force's impulse along +y over the
+        // impact, divided by the mass (gravity and collisions with other free grains during the
+        // impact are not counted). Only grains near a wall now, or touching (or holding wall
+        // impulse) after the last step, can change state.
+        s.impacts = 0;
+        s.completed.clear();
+        auto track = [&](std::size_t i, bool now) {
+            if (now && !wall_touch_[i]) {
                 ++s.impacts;
                 vy_at_touch_[i] = vy_[i];
                 vx_at_touch_[i] = vx_[i];
-            } else if (!touched && wall_touch_[i]) {
-                s.completed.push_back({id_[i], wall_impulse_y_[i] * inv_mass_[i], std::abs(vy_at_touch_[i]),
+            } else if (!now && wall_touch_[i]) {
+                s.completed.push_back({id[i], wall_impulse_y_[i] * inv_mass_[i], std::abs(vy_at_touch_[i]),
                                        std::abs(vx_at_touch_[i])});
             }
-            if (!touched) wall_impulse_y_[i] = 0;
-            wall_touch_[i] = touched;
+            if (!now) wall_impulse_y_[i] = 0;
+            wall_touch_[i] = now;
+        };
+        if (kick) {
+            for (int i : s.touching)
+                if (!near_mark_[std::size_t(i)]) track(std::size_t(i), false);
+            for (std::size_t a = 0; a < nn; ++a) track(std::size_t(near[a]), near_mark_[std::size_t(near[a])] == 2);
         }
-        s.worst = worst;
+        s.touching.clear();
+        for (std::size_t a = 0; a < nn; ++a) {
+            const std::size_t i = std::size_t(near[a]);
+            if (near_mark_[i] == 2) s.touching.push_back(int(i));
+            near_mark_[i] = 0;
+        }
     }
 
     bool wall_row(std::size_t i, double xw, double shift, double& fx_sum, double& fy_sum, double& worst) {
@@ -664,11 +882,14 @@ private:
     std::vector<double> spare_[kMoved];
     std::vector<int> spare_id_;
     std::vector<char> spare_touch_;
-    // Cells (by slot after a build) and the list: partners of slot i at nb_[i * stride_ ...],
-    // nb_count_[i] of them, the first nb_low_[i] with smaller id.
-    std::vector<int> cell_start_, cell_of_, order_, fill_;
-    std::vector<int> nb_, nb_count_, nb_low_;
-    int stride_ = 16;
+    // Cells (by slot after a build) and the list: the partners of slot i are the entries
+    // nb_start_[i] .. nb_start_[i+1]-1, entry k pairing nb_owner_[k] (= i) with nb_j_[k].
+    std::vector<int> cell_start_, cell_of_, cell_x_, cell_y_, order_, fill_;
+    // nb_mirror_[k] is the entry j -> i of entry k = i -> j; nb_flag_[k] says it is in contact.
+    std::vector<int> nb_start_, nb_owner_, nb_j_, nb_mirror_;
+    std::vector<unsigned char> nb_flag_;
+    std::vector<double> fx_, fy_;        // force sums of the step, zero between steps
+    std::vector<unsigned char> near_mark_; // 1: near a wall this step, 2: and touching; else 0
     WallImpactStats wall_;
     int threads_ = 1;
     std::unique_ptr<SpinTeam> team_;
