@@ -105,6 +105,8 @@ public:
     int threads() const { return threads_; }
 
     std::size_t size() const { return x_.size(); }
+    const NormalLaw& normal_law() const { return normal_; }
+    const ShearLaw& shear_law() const { return shear_; }
     double time() const { return t_; }
     double dt() const { return dt_; }
     long steps() const { return steps_; }

@@ -64,9 +64,10 @@ private:
         _mm_pause();
 #endif
     }
-    // Spin first; yield once the wait is long (another process may hold the core we wait for).
+    // Spin first; yield once the wait is long (a few microseconds: another process may hold the
+    // core we wait for).
     static void relax(unsigned& spins) {
-        if (++spins < 4096) pause();
+        if (++spins < 256) pause();
         else std::this_thread::yield();
     }
 
