@@ -15,8 +15,8 @@
 // build, so every step costs O(N). At each build the grains are re-sorted into cell order, so
 // that neighbours are near in memory and a thread's share of the grains is a slab of the pipe.
 // A step: (1) half kick and drift of every grain, noting the grains near a wall; (2) contact
-// test of each listed pair, once per pair, as a branch-free pass that flags both of the pair's
-// list entries; (3) forces of the flagged entries, grain by grain in list order; (4) the wall
+// test of each listed pair, once per pair (twice if its grains belong to different threads),
+// as a branch-free pass that flags the pair's list entries; (3) forces of the flagged entries, grain by grain in list order; (4) the wall
 // rows, for the grains near a wall; (5) accelerations and closing half kick of every grain;
 // (6) wall-impact bookkeeping of the grains that touch or touched a wall. (1) and (5) run two
 // grains per SSE2 instruction; contacts (a few per hundred list entries) and wall grains are
@@ -135,7 +135,7 @@ public:
               fill_.capacity() + cell_start_.capacity()) * sizeof(int);
         b += nb_mirror_.capacity() * sizeof(int) + nb_flag_.capacity();
         for (const Scratch& s : scratch_)
-            b += s.keys.capacity() * 8 + s.pairs.capacity() * sizeof(Pair) +
+            b += (s.low.capacity() + s.high.capacity()) * sizeof(int) + s.pairs.capacity() * sizeof(Pair) +
                  (s.partners.capacity() + s.counts.capacity() + s.hits.capacity() + s.near.capacity() +
                   s.touching.capacity()) * sizeof(int);
         b += wall_touch_.capacity() + spare_touch_.capacity() + near_mark_.capacity();
@@ -229,7 +229,6 @@ public:
             rebuild(tid);
             find_near(tid);
             detect(tid);
-            sync();
             forces(tid, false);
         });
         finish_step_stats(false);
@@ -243,8 +242,8 @@ private:
         double dvy, vy_in, vx_in;
     };
     struct Pair {
-        int i, j;      // slots, i < j
-        int k, mirror; // list entries i -> j and j -> i
+        int i, j;      // slots: i < j, or j another thread's grain
+        int k, mirror; // list entries i -> j and j -> i (k again when j is another thread's)
     };
     struct alignas(64) Scratch {
         double sum_x = 0, sum_y = 0, max_q = 0; // rebuild-test partials of this step
@@ -252,7 +251,7 @@ private:
         double worst = 0;
         long impacts = 0;
         std::vector<Completion> completed;
-        std::vector<std::uint64_t> keys;   // list-build scratch
+        std::vector<int> low, high;        // list-build scratch
         std::vector<int> partners, counts; // this thread's grains' partners (slots), per grain
         std::size_t list_offset = 0;       // where they start in the whole list
         std::vector<Pair> pairs;           // the pairs this thread tests (its grain has the lower slot)
@@ -300,7 +299,6 @@ private:
             find_near(tid);
         }
         detect(tid);
-        sync();
         forces(tid, true);
         sync();
         if (tid == 0) {
@@ -487,6 +485,15 @@ private:
             order_.resize(n);
             fill_.assign(cell_start_.begin(), cell_start_.end() - 1);
             for (std::size_t i = 0; i < n; ++i) order_[std::size_t(fill_[std::size_t(cell_of_[i])]++)] = int(i);
+            // Within a cell by id (the cells were sorted at the last build, so this is nearly so).
+            for (std::size_t c = 0; c + 1 < cell_start_.size(); ++c)
+                for (int a = cell_start_[c] + 1; a < cell_start_[c + 1]; ++a) {
+                    const int k = order_[std::size_t(a)];
+                    int b2 = a;
+                    for (; b2 > cell_start_[c] && id_[std::size_t(order_[std::size_t(b2 - 1)])] > id_[std::size_t(k)]; --b2)
+                        order_[std::size_t(b2)] = order_[std::size_t(b2 - 1)];
+                    order_[std::size_t(b2)] = k;
+                }
             for (auto& v : spare_) v.resize(n);
             spare_id_.resize(n);
             spare_touch_.resize(n);
@@ -573,14 +580,20 @@ private:
     }
 
     // What each thread derives from the whole list for its share of the grains: the pairs it
-    // tests (those whose lower slot is its own) and the grains that touch a wall.
+    // tests, and the grains that touch a wall. A pair of two of its grains is tested once and
+    // flags both entries; a pair with another thread's grain is tested by both threads, each
+    // flagging its own entry (the test is symmetric, so they agree), and no thread writes
+    // another's flags.
     void thread_lists(int tid) {
         Scratch& s = scratch_[std::size_t(tid)];
         const std::size_t b = begin_of(tid), e = end_of(tid);
         const std::size_t k0 = std::size_t(nb_start_[b]), k1 = std::size_t(nb_start_[e]);
         s.pairs.clear();
-        for (std::size_t k = k0; k < k1; ++k)
-            if (nb_j_[k] > nb_owner_[k]) s.pairs.push_back({nb_owner_[k], nb_j_[k], int(k), nb_mirror_[k]});
+        for (std::size_t k = k0; k < k1; ++k) {
+            const std::size_t j = std::size_t(nb_j_[k]);
+            if (j < b || j >= e) s.pairs.push_back({nb_owner_[k], int(j), int(k), int(k)});
+            else if (j > std::size_t(nb_owner_[k])) s.pairs.push_back({nb_owner_[k], int(j), int(k), nb_mirror_[k]});
+        }
         s.hits.resize(k1 - k0 + 1);
         s.near.resize(e - b + 2);
         s.touching.clear();
@@ -588,21 +601,22 @@ private:
             if (wall_touch_[i] || wall_impulse_y_[i] != 0) s.touching.push_back(int(i));
     }
 
-    // Lists the partners of this thread's grains into its scratch (partners, counts).
+    // Lists the partners of this thread's grains into its scratch (partners, counts). The cells
+    // are slot ranges, in a row left to right, each sorted by id (rebuild() sees to that), so
+    // the partners with larger id come out of the scan of rows below / same / above in the
+    // required order; those with smaller id are sorted by id (a handful).
     void list_share(int tid) {
         Scratch& s = scratch_[std::size_t(tid)];
         const std::size_t b = begin_of(tid), e = end_of(tid);
         s.partners.clear();
         s.counts.resize(e - b);
-        std::vector<std::uint64_t>& keys = s.keys;
         const double* __restrict x = x_.data();
         const double* __restrict y = y_.data();
         const double* __restrict r = rad_.data();
-        const int* __restrict cx = cell_x_.data();
         const int* __restrict id = id_.data();
         const double len = geo_.length, half = 0.5 * geo_.length, skin = skin_;
         for (std::size_t i = b; i < e; ++i) {
-            const int ix = cx[i], iy = cell_y_[i];
+            const int ix = cell_x_[i], iy = cell_y_[i];
             const int jx0 = std::max(ix - 1, 0), jx1 = std::min(ix + 1, cells_x_ - 1);
             int lo[3], hi[3];
             std::size_t candidates = 0;
@@ -612,35 +626,37 @@ private:
                 hi[row] = cell_start_[std::size_t(jy * cells_x_ + jx1 + 1)];
                 candidates += std::size_t(hi[row] - lo[row]);
             }
-            if (keys.size() < candidates + 1) keys.resize(2 * candidates + 8);
-            std::uint64_t* __restrict out = keys.data();
-            const std::uint64_t me = std::uint64_t(id[i]);
+            if (s.low.size() < candidates + 1) {
+                s.low.resize(2 * candidates + 8);
+                s.high.resize(2 * candidates + 8);
+            }
+            int* __restrict low = s.low.data();
+            int* __restrict high = s.high.data();
+            const int me = id[i];
             const double xi = x[i], yi = y[i], ri = r[i];
-            std::size_t cnt = 0;
-            for (int row = 0; row < 3; ++row) {
-                // rank of cell (row, column) in the order rows below/same/above, left to right
-                const std::uint64_t rank0 = std::uint64_t(row * 3 + 1 - ix);
+            std::size_t nl = 0, nh = 0;
+            for (int row = 0; row < 3; ++row)
                 for (int j = lo[row]; j < hi[row]; ++j) {
                     const double dx = xi - x[j];
                     double dy = yi - y[j];
                     dy = dy > half ? dy - len : (dy < -half ? dy + len : dy);
                     const double cut = ri + r[j] + skin;
                     const bool hit = dx * dx + dy * dy < cut * cut && std::size_t(j) != i;
-                    const std::uint64_t other = std::uint64_t(id[j]);
-                    // Sort key: a smaller id sorts first, by id; a larger id after all of them,
-                    // by (cell rank, id). The low 32 bits are the partner's id.
-                    out[cnt] = other < me ? other : ((rank0 + std::uint64_t(cx[j]) + 1) << 32) | other;
-                    cnt += hit;
+                    const bool below = id[j] < me;
+                    low[nl] = j;
+                    nl += hit & below;
+                    high[nh] = j;
+                    nh += hit & !below;
                 }
+            for (std::size_t a = 1; a < nl; ++a) { // insertion sort by id
+                const int k = low[a];
+                std::size_t c = a;
+                for (; c > 0 && id[low[c - 1]] > id[k]; --c) low[c] = low[c - 1];
+                low[c] = k;
             }
-            for (std::size_t a = 1; a < cnt; ++a) { // insertion sort: a handful of partners
-                const std::uint64_t k = out[a];
-                std::size_t b2 = a;
-                for (; b2 > 0 && out[b2 - 1] > k; --b2) out[b2] = out[b2 - 1];
-                out[b2] = k;
-            }
-            for (std::size_t a = 0; a < cnt; ++a) s.partners.push_back(slot_of_id_[std::size_t(out[a] & 0xffffffffu)]);
-            s.counts[i - b] = int(cnt);
+            s.partners.insert(s.partners.end(), low, low + nl);
+            s.partners.insert(s.partners.end(), high, high + nh);
+            s.counts[i - b] = int(nl + nh);
         }
     }
 
@@ -660,8 +676,8 @@ private:
         fy = fn * ny + fs * nx;
     }
 
-    // Contact test of this thread's pairs: one branch-free pass that flags both list entries of
-    // every pair (contact iff not d^2 >= (r_i + r_j)^2, the same in either direction).
+    // Contact test of this thread's pairs: one branch-free pass that flags their list entries
+    // (contact iff not d^2 >= (r_i + r_j)^2, the same in either direction).
     void detect(int tid) {
         Scratch& s = scratch_[std::size_t(tid)];
         const double* __restrict x = x_.data();

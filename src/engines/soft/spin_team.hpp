@@ -1,9 +1,10 @@
 // A fixed team of threads for work split inside one time step: run(job) calls job(tid) on every
 // member (the caller is member 0) and returns when all are done; barrier() inside a job waits for
-// every member. Both spin (with a pause, then yielding) rather than sleep: a soft-sphere step of
-// ~1500 grains lasts a few microseconds, and std::barrier or a condition variable parks waiting
-// threads in the kernel, whose wake-up alone costs about as much as a step. Between runs, idle
-// members spin for about a millisecond and then sleep on the epoch counter (atomic wait).
+// every member. Waits spin for a few microseconds before they sleep (futex, via atomic wait): a
+// soft-sphere step of ~1500 grains lasts a few microseconds, and std::barrier or a condition
+// variable parks a waiting thread in the kernel at once, whose wake-up alone costs about as much
+// as a step. On a busy machine (the partner thread descheduled) the sleep keeps a waiting thread
+// from burning the core the partner needs.
 #pragma once
 #include <atomic>
 #include <functional>
@@ -24,8 +25,8 @@ public:
     SpinTeam(const SpinTeam&) = delete;
     SpinTeam& operator=(const SpinTeam&) = delete;
     ~SpinTeam() {
-        stop_.store(true, std::memory_order_release);
-        epoch_.fetch_add(1, std::memory_order_acq_rel);
+        stop_.store(true);
+        epoch_.fetch_add(1);
         epoch_.notify_all();
         for (auto& w : workers_) w.join();
     }
@@ -39,50 +40,52 @@ public:
             return;
         }
         job_ = &job;
-        done_.store(0, std::memory_order_relaxed);
-        epoch_.fetch_add(1, std::memory_order_acq_rel);
-        epoch_.notify_all();
+        epoch_.fetch_add(1);
+        if (sleepers_.load() > 0) epoch_.notify_all();
         job(0);
-        for (unsigned spins = 0; done_.load(std::memory_order_acquire) != size_ - 1;) relax(spins);
+        barrier();
     }
 
     // Waits until every member has arrived (inside run only).
     void barrier() {
         if (size_ == 1) return;
         const unsigned phase = phase_.load(std::memory_order_acquire);
-        if (arrived_.fetch_add(1, std::memory_order_acq_rel) == size_ - 1) {
+        if (arrived_.fetch_add(1, std::memory_order_acq_rel) == unsigned(size_ - 1)) {
             arrived_.store(0, std::memory_order_relaxed);
-            phase_.store(phase + 1, std::memory_order_release);
+            phase_.fetch_add(1);
+            if (sleepers_.load() > 0) phase_.notify_all();
             return;
         }
-        for (unsigned spins = 0; phase_.load(std::memory_order_acquire) == phase;) relax(spins);
+        wait_while(phase_, phase);
     }
 
 private:
-    static void pause() {
+    // Spins while a == old, then sleeps until a changes. The sleeper count is incremented before
+    // the value is checked a last time and read by the writer after it changes the value (all
+    // sequentially consistent), so a writer either sees the sleeper and notifies it or the
+    // sleeper sees the new value.
+    void wait_while(std::atomic<unsigned>& a, unsigned old) {
+        for (unsigned spins = 0; a.load(std::memory_order_acquire) == old; ++spins) {
+            if (spins < 2000) {
 #if defined(__x86_64__) || defined(__i386__)
-        _mm_pause();
+                _mm_pause();
 #endif
-    }
-    // Spin first; yield once the wait is long (a few microseconds: another process may hold the
-    // core we wait for).
-    static void relax(unsigned& spins) {
-        if (++spins < 256) pause();
-        else std::this_thread::yield();
+                continue;
+            }
+            sleepers_.fetch_add(1);
+            a.wait(old);
+            sleepers_.fetch_sub(1);
+        }
     }
 
     void work(int tid) {
         unsigned seen = 0;
         for (;;) {
-            unsigned now;
-            for (long spins = 0; (now = epoch_.load(std::memory_order_acquire)) == seen; ++spins) {
-                if (spins < 200000) pause();
-                else epoch_.wait(seen, std::memory_order_acquire);
-            }
-            seen = now;
-            if (stop_.load(std::memory_order_acquire)) return;
+            wait_while(epoch_, seen);
+            seen = epoch_.load();
+            if (stop_.load()) return;
             (*job_)(tid);
-            done_.fetch_add(1, std::memory_order_acq_rel);
+            barrier();
         }
     }
 
@@ -90,9 +93,9 @@ private:
     std::vector<std::thread> workers_;
     const std::function<void(int)>* job_ = nullptr;
     alignas(64) std::atomic<unsigned> epoch_{0};
-    alignas(64) std::atomic<int> done_{0};
-    alignas(64) std::atomic<int> arrived_{0};
+    alignas(64) std::atomic<unsigned> arrived_{0};
     alignas(64) std::atomic<unsigned> phase_{0};
+    alignas(64) std::atomic<int> sleepers_{0};
     std::atomic<bool> stop_{false};
 };
 
