@@ -14,13 +14,14 @@
 // when any grain has moved more than skin/2 relative to the mean displacement since the last
 // build, so every step costs O(N). At each build the grains are re-sorted into cell order, so
 // that neighbours are near in memory and a thread's share of the grains is a slab of the pipe.
-// A step: (1) half kick and drift of every grain, noting the grains near a wall; (2) contact
-// test of each listed pair, once per pair (twice if its grains belong to different threads),
-// as a branch-free pass that flags the pair's list entries; (3) forces of the flagged entries, grain by grain in list order; (4) the wall
-// rows, for the grains near a wall; (5) accelerations and closing half kick of every grain;
-// (6) wall-impact bookkeeping of the grains that touch or touched a wall. (1) and (5) run two
-// grains per SSE2 instruction; contacts (a few per hundred list entries) and wall grains are
-// the only scalar work per grain.
+// A step: (1) accelerations from the last force sums, the last step's closing half kick (kept
+// pending so that it shares this pass), this step's half kick and drift of every grain, noting
+// the grains near a wall; (2) contact test of each listed pair, once per pair (by both threads
+// if its grains belong to two), as a branch-free pass that flags the pair's list entries;
+// (3) forces of the flagged entries, grain by grain in list order; (4) the wall rows, for the
+// grains near a wall; (5) wall-impact bookkeeping of the grains that touch or touched a wall.
+// (1) runs two grains per SSE2 instruction; contacts and wall grains are the only scalar work
+// per grain.
 //
 // Determinism. Grains keep the index they were added with ("id"); every accessor speaks ids.
 // The force on grain I is summed in an order fixed by ids and by the cell grid at the last build,
@@ -83,7 +84,7 @@ public:
     void add_grain(double x, double y, double vx, double vy, double radius, double mass) {
         id_.push_back(int(x_.size()));
         x_.push_back(x); y_.push_back(wrap(y)); vx_.push_back(vx); vy_.push_back(vy);
-        ax_.push_back(0); ay_.push_back(0); rad_.push_back(radius); mass_.push_back(mass);
+        fx_.push_back(0); fy_.push_back(0); rad_.push_back(radius); mass_.push_back(mass);
         inv_mass_.push_back(1.0 / mass);
         wall_touch_.push_back(0); vy_at_touch_.push_back(0); vx_at_touch_.push_back(0);
         need_build_ = true;
@@ -97,10 +98,11 @@ public:
         threads_ = threads;
         team_.reset();
         if (threads > 1) team_ = std::make_unique<SpinTeam>(threads);
-        const double cpx = scratch_[0].cprev_x, cpy = scratch_[0].cprev_y;
-        scratch_.assign(std::size_t(threads), Scratch{});
-        for (auto& s : scratch_) s.cprev_x = cpx, s.cprev_y = cpy;
-        if (!need_build_) run_all([&](int tid) { thread_lists(tid); });
+        Scratch carried;
+        carried.kick_pending = scratch_[0].kick_pending;
+        carried.cprev_x = scratch_[0].cprev_x, carried.cprev_y = scratch_[0].cprev_y;
+        scratch_.assign(std::size_t(threads), carried);
+        if (!need_build_) run_all([&](int tid) { thread_lists(tid, false); });
     }
     int threads() const { return threads_; }
 
@@ -113,20 +115,26 @@ public:
     long list_builds() const { return builds_; }
     long exact_rebuild_tests() const { return exact_tests_; }
     // Per-grain arrays in id order (the order grains were added).
-    const std::vector<double>& x() const { return by_id(x_, out_[0]); }
-    const std::vector<double>& y() const { return by_id(y_, out_[1]); }
-    const std::vector<double>& vx() const { return by_id(vx_, out_[2]); }
-    const std::vector<double>& vy() const { return by_id(vy_, out_[3]); }
-    const std::vector<double>& radius() const { return by_id(rad_, out_[4]); }
-    const std::vector<double>& mass() const { return by_id(mass_, out_[5]); }
-    const std::vector<double>& ax() const { return by_id(ax_, out_[6]); }
-    const std::vector<double>& ay() const { return by_id(ay_, out_[7]); }
+    // (A step ends with its closing half kick pending: the next step's drift applies it, and
+    // these accessors add it, with the same operations.)
+    const std::vector<double>& x() const { return by_id(out_[0], [&](std::size_t i) { return x_[i]; }); }
+    const std::vector<double>& y() const { return by_id(out_[1], [&](std::size_t i) { return y_[i]; }); }
+    const std::vector<double>& vx() const {
+        return by_id(out_[2], [&](std::size_t i) { return kick_pending() ? vx_[i] + 0.5 * dt_ * accel_x(i) : vx_[i]; });
+    }
+    const std::vector<double>& vy() const {
+        return by_id(out_[3], [&](std::size_t i) { return kick_pending() ? vy_[i] + 0.5 * dt_ * accel_y(i) : vy_[i]; });
+    }
+    const std::vector<double>& radius() const { return by_id(out_[4], [&](std::size_t i) { return rad_[i]; }); }
+    const std::vector<double>& mass() const { return by_id(out_[5], [&](std::size_t i) { return mass_[i]; }); }
+    const std::vector<double>& ax() const { return by_id(out_[6], [&](std::size_t i) { return accel_x(i); }); }
+    const std::vector<double>& ay() const { return by_id(out_[7], [&](std::size_t i) { return accel_y(i); }); }
     const WallImpactStats& wall_stats() const { return wall_; }
     void reset_wall_stats() { wall_ = {}; }
     // Bytes held per grain by the engine's arrays and lists (capacity, not just size).
     double bytes_per_grain() const {
         std::size_t b = 0;
-        for (const auto* v : {&x_, &y_, &vx_, &vy_, &ax_, &ay_, &vpx_, &vpy_, &rad_, &mass_, &inv_mass_, &dispx_,
+        for (const auto* v : {&x_, &y_, &vx_, &vy_, &vpx_, &vpy_, &rad_, &mass_, &inv_mass_, &dispx_,
                               &dispy_, &vy_at_touch_, &vx_at_touch_, &wall_impulse_y_})
             b += v->capacity() * sizeof(double);
         for (const auto& v : spare_) b += v.capacity() * sizeof(double);
@@ -140,6 +148,7 @@ public:
                   s.touching.capacity()) * sizeof(int);
         b += wall_touch_.capacity() + spare_touch_.capacity() + near_mark_.capacity();
         b += (fx_.capacity() + fy_.capacity()) * sizeof(double);
+        for (const auto& o : out_) b += o.second.capacity() * sizeof(double);
         return x_.empty() ? 0.0 : double(b) / double(x_.size());
     }
 
@@ -204,8 +213,6 @@ public:
         vpy_ = vy_;
         dispx_.assign(n, 0.0);
         dispy_.assign(n, 0.0);
-        ax_.assign(n, 0.0);
-        ay_.assign(n, 0.0);
         fx_.assign(n, 0.0);
         fy_.assign(n, 0.0);
         near_mark_.assign(n, 0);
@@ -248,15 +255,19 @@ private:
     struct alignas(64) Scratch {
         double sum_x = 0, sum_y = 0, max_q = 0; // rebuild-test partials of this step
         double cprev_x = 0, cprev_y = 0;        // mean displacement of the last step
+        bool kick_pending = false;              // the last step's closing half kick is still to come
+        bool band_valid = false;                // band was made at the last build
+        bool band_holds = false;                // near_from_band() is exact this step
         double worst = 0;
         long impacts = 0;
         std::vector<Completion> completed;
-        std::vector<int> low, high;        // list-build scratch
+        std::vector<int> low, high, found; // list-build scratch
         std::vector<int> partners, counts; // this thread's grains' partners (slots), per grain
         std::size_t list_offset = 0;       // where they start in the whole list
         std::vector<Pair> pairs;           // the pairs this thread tests (its grain has the lower slot)
         std::vector<int> hits;             // list entries in contact this step
         std::vector<int> near;             // slots near a wall this step (near_count of them)
+        std::vector<int> band;             // slots that can come near a wall before the next build
         std::size_t near_count = 0;
         std::vector<int> touching;         // slots touching a wall (or holding wall impulse) after the last step
     };
@@ -281,14 +292,19 @@ private:
         return dy;
     }
 
-    const std::vector<double>& by_id(const std::vector<double>& v, std::pair<long, std::vector<double>>& out) const {
-        if (out.first != version_ || out.second.size() != v.size()) {
-            out.second.resize(v.size());
-            for (std::size_t i = 0; i < v.size(); ++i) out.second[std::size_t(id_[i])] = v[i];
+    template <class Value>
+    const std::vector<double>& by_id(std::pair<long, std::vector<double>>& out, Value value) const {
+        const std::size_t n = x_.size();
+        if (out.first != version_ || out.second.size() != n) {
+            out.second.resize(n);
+            for (std::size_t i = 0; i < n; ++i) out.second[std::size_t(id_[i])] = value(i);
             out.first = version_;
         }
         return out.second;
     }
+    bool kick_pending() const { return scratch_[0].kick_pending; }
+    double accel_x(std::size_t i) const { return fx_[i] * inv_mass_[i]; }
+    double accel_y(std::size_t i) const { return fy_[i] * inv_mass_[i] - geo_.gravity; }
 
     // ---- one step --------------------------------------------------------------------------
     void one_step(int tid) {
@@ -296,6 +312,10 @@ private:
         sync();
         if (must_rebuild(tid)) {
             rebuild(tid);
+            find_near(tid);
+        } else if (scratch_[std::size_t(tid)].band_holds) {
+            near_from_band(tid);
+        } else {
             find_near(tid);
         }
         detect(tid);
@@ -322,15 +342,25 @@ private:
     static void store2(double* p, v2d v) { std::memcpy(p, &v, sizeof v); }
     static double load1(const double* p) { return *p; }
     static void store1(double* p, double v) { *p = v; }
-    static int lanes(bool b) { return int(b); }
+    // v where m holds, else +0: a select by bit mask for SSE2 lanes, a branch for one grain.
+    static double masked(bool m, double v) { return m ? v : 0.0; }
     template <class M>
-    static int lanes(M m) {
-        return int(m[0] != 0) | int(m[1] != 0) << 1;
+    static v2d masked(M m, v2d v) {
+        return v2d(M(v) & m);
     }
 
-    // Half kick, drift, periodic wrap, predicted velocity; partial sums for the rebuild test; the
-    // grains near a wall. Two grains at a time (SSE2 lanes, the same IEEE operations per grain).
+    // Accelerations from the last force sums (clearing them), the last step's closing half kick,
+    // this step's half kick, drift, periodic wrap, predicted velocity; partial sums for the
+    // rebuild test; the grains near a wall. Two grains at a time (SSE2
+    // lanes, the same IEEE operations per grain as one at a time).
     void drift(int tid) {
+        if (scratch_[std::size_t(tid)].kick_pending) drift_impl<true>(tid);
+        else drift_impl<false>(tid);
+        scratch_[std::size_t(tid)].kick_pending = true; // at the end of this step
+    }
+
+    template <bool Pending>
+    void drift_impl(int tid) {
         Scratch& s = scratch_[std::size_t(tid)];
         double* __restrict x = x_.data();
         double* __restrict y = y_.data();
@@ -340,22 +370,29 @@ private:
         double* __restrict vpy = vpy_.data();
         double* __restrict ux = dispx_.data();
         double* __restrict uy = dispy_.data();
-        const double* __restrict ax = ax_.data();
-        const double* __restrict ay = ay_.data();
-        const double* __restrict r = rad_.data();
-        int* __restrict near = s.near.data();
-        std::size_t nn = 0;
-        const double h = 0.5 * dt_, dt = dt_, len = geo_.length, wr = geo_.wall_radius, width = geo_.width;
+        double* __restrict fx = fx_.data();
+        double* __restrict fy = fy_.data();
+        const double* __restrict im = inv_mass_.data();
+        const double h = 0.5 * dt_, dt = dt_, len = geo_.length, g = geo_.gravity;
         auto body = [&](std::size_t i, auto one, auto cpx, auto cpy, auto& sx, auto& sy, auto& qmax, auto ld, auto st) {
-            const auto axi = ld(ax + i), ayi = ld(ay + i);
-            const auto vxi = ld(vx + i) + h * one * axi, vyi = ld(vy + i) + h * one * ayi;
+            const auto imi = ld(im + i);
+            const auto axi = ld(fx + i) * imi, ayi = ld(fy + i) * imi - g * one;
+            st(fx + i, 0 * one);
+            st(fy + i, 0 * one);
+            auto vx0 = ld(vx + i), vy0 = ld(vy + i);
+            if constexpr (Pending) {
+                vx0 = vx0 + h * one * axi;
+                vy0 = vy0 + h * one * ayi;
+            }
+            const auto vxi = vx0 + h * one * axi, vyi = vy0 + h * one * ayi;
             st(vx + i, vxi);
             st(vy + i, vyi);
             const auto dx = dt * one * vxi, dy = dt * one * vyi;
             const auto xi = ld(x + i) + dx;
             st(x + i, xi);
             auto yi = ld(y + i) + dy;
-            yi = yi < 0 * one ? yi + len * one : (yi >= len * one ? yi - len * one : yi);
+            // periodic wrap: yi + len if yi < 0, yi - len if yi >= len (x - 0 = x, also for -0)
+            yi = (yi - masked(yi >= len * one, len * one)) - masked(yi < 0 * one, -len * one);
             st(y + i, yi);
             const auto uxi = ld(ux + i) + dx, uyi = ld(uy + i) + dy;
             st(ux + i, uxi);
@@ -367,13 +404,6 @@ private:
             const auto qx = uxi - cpx, qy = uyi - cpy;
             const auto q = qx * qx + qy * qy;
             qmax = q > qmax ? q : qmax;
-            const auto reach = ld(r + i) + wr * one;
-            if (const int m = lanes(xi < reach || xi > width * one - reach)) {
-                near[nn] = int(i);
-                nn += m & 1;
-                near[nn] = int(i + 1);
-                nn += m >> 1;
-            }
         };
         std::size_t i = begin_of(tid);
         const std::size_t e = end_of(tid);
@@ -385,10 +415,25 @@ private:
         s.sum_x = sx;
         s.sum_y = sy;
         s.max_q = qmax;
-        s.near_count = nn;
     }
 
-    // The grains near a wall, by a scan (after a re-sort moved them).
+    // The grains near a wall, from the band of grains that were near enough at the last build:
+    // no grain has moved more than skin/2 from the mean displacement c since then, so a grain
+    // outside the band is farther than its reach from both walls while |c_x| stays below the
+    // band's margin (must_rebuild() checks).
+    void near_from_band(int tid) {
+        Scratch& s = scratch_[std::size_t(tid)];
+        std::size_t nn = 0;
+        for (int k : s.band) {
+            const std::size_t i = std::size_t(k);
+            const double reach = rad_[i] + geo_.wall_radius;
+            if (x_[i] < reach || x_[i] > geo_.width - reach) s.near[nn++] = int(i);
+        }
+        s.near_count = nn;
+    }
+    double band_margin() const { return skin_; }
+
+    // The grains near a wall, by a scan.
     void find_near(int tid) {
         Scratch& s = scratch_[std::size_t(tid)];
         std::size_t nn = 0;
@@ -442,6 +487,7 @@ private:
         }
         mine.cprev_x = rebuild_now ? 0.0 : cx;
         mine.cprev_y = rebuild_now ? 0.0 : cy;
+        mine.band_holds = mine.band_valid && std::abs(cx) + delta + 1e-9 * geo_.width < band_margin();
         return rebuild_now;
     }
 
@@ -562,10 +608,12 @@ private:
             Scratch& s = scratch_[std::size_t(tid)];
             std::copy(s.partners.begin(), s.partners.end(), nb_j_.begin() + std::ptrdiff_t(s.list_offset));
             std::size_t k = s.list_offset;
-            for (std::size_t i = begin_of(tid), e = end_of(tid); i < e; ++i) {
+            const std::size_t b = begin_of(tid), e = end_of(tid);
+            int* __restrict owner = nb_owner_.data();
+            for (std::size_t i = b; i < e; ++i) {
                 nb_start_[i] = int(k);
-                const std::size_t stop = k + std::size_t(s.counts[i - begin_of(tid)]);
-                for (; k < stop; ++k) nb_owner_[k] = int(i);
+                const std::size_t stop = k + std::size_t(s.counts[i - b]);
+                for (; k < stop; ++k) owner[k] = int(i);
             }
         }
         sync();
@@ -576,7 +624,7 @@ private:
             while (nb_j_[std::size_t(m)] != i) ++m;
             nb_mirror_[k] = m;
         }
-        thread_lists(tid);
+        thread_lists(tid, true);
     }
 
     // What each thread derives from the whole list for its share of the grains: the pairs it
@@ -584,7 +632,7 @@ private:
     // flags both entries; a pair with another thread's grain is tested by both threads, each
     // flagging its own entry (the test is symmetric, so they agree), and no thread writes
     // another's flags.
-    void thread_lists(int tid) {
+    void thread_lists(int tid, bool at_build) {
         Scratch& s = scratch_[std::size_t(tid)];
         const std::size_t b = begin_of(tid), e = end_of(tid);
         const std::size_t k0 = std::size_t(nb_start_[b]), k1 = std::size_t(nb_start_[e]);
@@ -596,6 +644,13 @@ private:
         }
         s.hits.resize(k1 - k0 + 1);
         s.near.resize(e - b + 2);
+        double rmax = 0;
+        for (double r : rad_) rmax = std::max(rmax, r);
+        const double band = rmax + geo_.wall_radius + 0.5 * skin_ + band_margin();
+        s.band.clear();
+        for (std::size_t i = b; i < e; ++i)
+            if (x_[i] < band || x_[i] > geo_.width - band) s.band.push_back(int(i));
+        s.band_valid = at_build; // (the band is measured from the positions at the build)
         s.touching.clear();
         for (std::size_t i = b; i < e; ++i)
             if (wall_touch_[i] || wall_impulse_y_[i] != 0) s.touching.push_back(int(i));
@@ -614,40 +669,47 @@ private:
         const double* __restrict y = y_.data();
         const double* __restrict r = rad_.data();
         const int* __restrict id = id_.data();
-        const double len = geo_.length, half = 0.5 * geo_.length, skin = skin_;
+        const double len = geo_.length, skin = skin_;
         for (std::size_t i = b; i < e; ++i) {
             const int ix = cell_x_[i], iy = cell_y_[i];
             const int jx0 = std::max(ix - 1, 0), jx1 = std::min(ix + 1, cells_x_ - 1);
             int lo[3], hi[3];
+            double shift[3]; // the image of the row nearest to grain i (L >= 3 ranges: unique)
             std::size_t candidates = 0;
             for (int row = 0; row < 3; ++row) {
-                const int jy = (iy + row - 1 + cells_y_) % cells_y_;
-                lo[row] = cell_start_[std::size_t(jy * cells_x_ + jx0)];
-                hi[row] = cell_start_[std::size_t(jy * cells_x_ + jx1 + 1)];
+                const int jy = iy + row - 1;
+                const int wy = (jy + cells_y_) % cells_y_;
+                shift[row] = jy < 0 ? -len : (jy >= cells_y_ ? len : 0.0);
+                lo[row] = cell_start_[std::size_t(wy * cells_x_ + jx0)];
+                hi[row] = cell_start_[std::size_t(wy * cells_x_ + jx1 + 1)];
                 candidates += std::size_t(hi[row] - lo[row]);
             }
             if (s.low.size() < candidates + 1) {
                 s.low.resize(2 * candidates + 8);
                 s.high.resize(2 * candidates + 8);
+                s.found.resize(2 * candidates + 8);
             }
             int* __restrict low = s.low.data();
             int* __restrict high = s.high.data();
+            int* __restrict found = s.found.data();
             const int me = id[i];
-            const double xi = x[i], yi = y[i], ri = r[i];
-            std::size_t nl = 0, nh = 0;
-            for (int row = 0; row < 3; ++row)
+            const double xi = x[i], yi = y[i], ri = r[i] + skin;
+            std::size_t nf = 0; // candidates within reach, grain i itself among them
+            for (int row = 0; row < 3; ++row) {
+                const double yr = yi - shift[row];
                 for (int j = lo[row]; j < hi[row]; ++j) {
-                    const double dx = xi - x[j];
-                    double dy = yi - y[j];
-                    dy = dy > half ? dy - len : (dy < -half ? dy + len : dy);
-                    const double cut = ri + r[j] + skin;
-                    const bool hit = dx * dx + dy * dy < cut * cut && std::size_t(j) != i;
-                    const bool below = id[j] < me;
-                    low[nl] = j;
-                    nl += hit & below;
-                    high[nh] = j;
-                    nh += hit & !below;
+                    const double dx = xi - x[j], dy = yr - y[j], cut = ri + r[j];
+                    found[nf] = j;
+                    nf += dx * dx + dy * dy < cut * cut;
                 }
+            }
+            std::size_t nl = 0, nh = 0;
+            for (std::size_t a = 0; a < nf; ++a) {
+                const int j = found[a];
+                if (std::size_t(j) == i) continue;
+                if (id[j] < me) low[nl++] = j;
+                else high[nh++] = j;
+            }
             for (std::size_t a = 1; a < nl; ++a) { // insertion sort by id
                 const int k = low[a];
                 std::size_t c = a;
@@ -697,9 +759,9 @@ private:
         }
     }
 
-    // Forces on this thread's grains, then (kick) the closing half kick and the wall-impact
+    // Force sums of this thread's grains, then (unless finalize() calls) the wall-impact
     // bookkeeping.
-    void forces(int tid, bool kick) {
+    void forces(int tid, bool track_walls) {
         Scratch& s = scratch_[std::size_t(tid)];
         const std::size_t b = begin_of(tid), e = end_of(tid);
         // The flagged entries, in list order (eight flags per test).
@@ -771,32 +833,6 @@ private:
         }
         s.worst = worst;
 
-        // Accelerations and the closing half kick, two grains at a time; the force sums are
-        // cleared for the next step.
-        {
-            double* __restrict ax = ax_.data();
-            double* __restrict ay = ay_.data();
-            double* __restrict vx = vx_.data();
-            double* __restrict vy = vy_.data();
-            const double* __restrict im = inv_mass_.data();
-            const double h = 0.5 * dt_, g = geo_.gravity;
-            auto body = [&](std::size_t i, auto one, auto ld, auto st) {
-                const auto axi = ld(fxs + i) * ld(im + i), ayi = ld(fys + i) * ld(im + i) - g * one;
-                st(ax + i, axi);
-                st(ay + i, ayi);
-                st(fxs + i, 0 * one);
-                st(fys + i, 0 * one);
-                if (kick) {
-                    st(vx + i, ld(vx + i) + h * one * axi);
-                    st(vy + i, ld(vy + i) + h * one * ayi);
-                }
-            };
-            std::size_t i = b;
-            const v2d one{1, 1};
-            for (; i + 2 <= e; i += 2) body(i, one, load2, store2);
-            for (; i < e; ++i) body(i, 1.0, load1, store1);
-        }
-
         // Wall impacts. A wall impact lasts from the first step a grain touches any wall grain
         // to the first step it touches none. Its Δv_y, as in Eq. (9) and the impact studies, is
         // the velocity change caused by the wall: the wall force's impulse along +y over the
@@ -805,11 +841,13 @@ private:
         // impulse) after the last step, can change state.
         s.impacts = 0;
         s.completed.clear();
+        const double h = 0.5 * dt_;
         auto track = [&](std::size_t i, bool now) {
             if (now && !wall_touch_[i]) {
                 ++s.impacts;
-                vy_at_touch_[i] = vy_[i];
-                vx_at_touch_[i] = vx_[i];
+                // the velocities after this step's closing half kick (applied by the next drift)
+                vy_at_touch_[i] = vy_[i] + h * accel_y(i);
+                vx_at_touch_[i] = vx_[i] + h * accel_x(i);
             } else if (!now && wall_touch_[i]) {
                 s.completed.push_back({id[i], wall_impulse_y_[i] * inv_mass_[i], std::abs(vy_at_touch_[i]),
                                        std::abs(vx_at_touch_[i])});
@@ -817,7 +855,7 @@ private:
             if (!now) wall_impulse_y_[i] = 0;
             wall_touch_[i] = now;
         };
-        if (kick) {
+        if (track_walls) {
             for (int i : s.touching)
                 if (!near_mark_[std::size_t(i)]) track(std::size_t(i), false);
             for (std::size_t a = 0; a < nn; ++a) track(std::size_t(near[a]), near_mark_[std::size_t(near[a])] == 2);
@@ -893,7 +931,7 @@ private:
     double range_ = 0, cell_w_ = 0, cell_h_ = 0;
     int cells_x_ = 1, cells_y_ = 1;
     // Per grain, in memory (cell) order; id_ maps a slot to the grain's id, slot_of_id_ back.
-    std::vector<double> x_, y_, vx_, vy_, vpx_, vpy_, ax_, ay_, rad_, mass_, inv_mass_, dispx_, dispy_;
+    std::vector<double> x_, y_, vx_, vy_, vpx_, vpy_, rad_, mass_, inv_mass_, dispx_, dispy_;
     std::vector<double> vy_at_touch_, vx_at_touch_, wall_impulse_y_;
     std::vector<char> wall_touch_;
     std::vector<int> id_, slot_of_id_;
@@ -906,7 +944,7 @@ private:
     // nb_mirror_[k] is the entry j -> i of entry k = i -> j; nb_flag_[k] says it is in contact.
     std::vector<int> nb_start_, nb_owner_, nb_j_, nb_mirror_;
     std::vector<unsigned char> nb_flag_;
-    std::vector<double> fx_, fy_;        // force sums of the step, zero between steps
+    std::vector<double> fx_, fy_;        // force sums of the last force evaluation (cleared by drift)
     std::vector<unsigned char> near_mark_; // 1: near a wall this step, 2: and touching; else 0
     WallImpactStats wall_;
     int threads_ = 1;
