@@ -108,6 +108,22 @@ double restitution_error(double e_N, double steps_per_contact) {
     return sum / 4;
 }
 
+#if defined(__GNUC__) && defined(__x86_64__)
+// The drift pass gives the same bits four (AVX2), two (SSE2) or one grain at a time.
+TEST(PipeEngine, DriftLanesGiveTheSameBits) {
+    if (!__builtin_cpu_supports("avx2")) GTEST_SKIP() << "no AVX2 on this processor";
+    PipeSpec s = hot_pipe();
+    auto run = [&](bool avx2) {
+        pipe_detail::use_avx2() = avx2;
+        auto eng = build_pipe(s);
+        eng.advance(2000);
+        pipe_detail::use_avx2() = __builtin_cpu_supports("avx2");
+        return std::vector<std::vector<double>>{eng.x(), eng.y(), eng.vx(), eng.vy(), eng.ax(), eng.ay()};
+    };
+    EXPECT_TRUE(run(true) == run(false));
+}
+#endif
+
 TEST(PipeEngine, HeadOnRestitutionMatchesEq4AndConverges) {
     for (double e : {0.5, 0.7, 0.9}) {
         const double coarse = restitution_error(e, 50), fine = restitution_error(e, 400);

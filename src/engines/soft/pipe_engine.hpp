@@ -20,8 +20,8 @@
 // if its grains belong to two), as a branch-free pass that flags the pair's list entries;
 // (3) forces of the flagged entries, grain by grain in list order; (4) the wall rows, for the
 // grains near a wall; (5) wall-impact bookkeeping of the grains that touch or touched a wall.
-// (1) runs two grains per SSE2 instruction; contacts and wall grains are the only scalar work
-// per grain.
+// (1) runs several grains per instruction (pipe_drift.hpp); contacts and wall grains are the
+// only scalar work per grain.
 //
 // Determinism. Grains keep the index they were added with ("id"); every accessor speaks ids.
 // The force on grain I is summed in an order fixed by ids and by the cell grid at the last build,
@@ -47,6 +47,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "engines/soft/pipe_drift.hpp"
 #include "engines/soft/spin_team.hpp"
 #include "models/normal_force.hpp"
 
@@ -333,88 +334,20 @@ private:
         if (team_) team_->barrier();
     }
 
-    using v2d = double __attribute__((vector_size(16)));
-    static v2d load2(const double* p) {
-        v2d v;
-        std::memcpy(&v, p, sizeof v);
-        return v;
-    }
-    static void store2(double* p, v2d v) { std::memcpy(p, &v, sizeof v); }
-    static double load1(const double* p) { return *p; }
-    static void store1(double* p, double v) { *p = v; }
-    // v where m holds, else +0: a select by bit mask for SSE2 lanes, a branch for one grain.
-    static double masked(bool m, double v) { return m ? v : 0.0; }
-    template <class M>
-    static v2d masked(M m, v2d v) {
-        return v2d(M(v) & m);
-    }
-
     // Accelerations from the last force sums (clearing them), the last step's closing half kick,
     // this step's half kick, drift, periodic wrap, predicted velocity; partial sums for the
-    // rebuild test; the grains near a wall. Two grains at a time (SSE2
-    // lanes, the same IEEE operations per grain as one at a time).
+    // rebuild test (pipe_drift.hpp: several grains per instruction, bit-identical).
     void drift(int tid) {
-        if (scratch_[std::size_t(tid)].kick_pending) drift_impl<true>(tid);
-        else drift_impl<false>(tid);
-        scratch_[std::size_t(tid)].kick_pending = true; // at the end of this step
-    }
-
-    template <bool Pending>
-    void drift_impl(int tid) {
         Scratch& s = scratch_[std::size_t(tid)];
-        double* __restrict x = x_.data();
-        double* __restrict y = y_.data();
-        double* __restrict vx = vx_.data();
-        double* __restrict vy = vy_.data();
-        double* __restrict vpx = vpx_.data();
-        double* __restrict vpy = vpy_.data();
-        double* __restrict ux = dispx_.data();
-        double* __restrict uy = dispy_.data();
-        double* __restrict fx = fx_.data();
-        double* __restrict fy = fy_.data();
-        const double* __restrict im = inv_mass_.data();
-        const double h = 0.5 * dt_, dt = dt_, len = geo_.length, g = geo_.gravity;
-        auto body = [&](std::size_t i, auto one, auto cpx, auto cpy, auto& sx, auto& sy, auto& qmax, auto ld, auto st) {
-            const auto imi = ld(im + i);
-            const auto axi = ld(fx + i) * imi, ayi = ld(fy + i) * imi - g * one;
-            st(fx + i, 0 * one);
-            st(fy + i, 0 * one);
-            auto vx0 = ld(vx + i), vy0 = ld(vy + i);
-            if constexpr (Pending) {
-                vx0 = vx0 + h * one * axi;
-                vy0 = vy0 + h * one * ayi;
-            }
-            const auto vxi = vx0 + h * one * axi, vyi = vy0 + h * one * ayi;
-            st(vx + i, vxi);
-            st(vy + i, vyi);
-            const auto dx = dt * one * vxi, dy = dt * one * vyi;
-            const auto xi = ld(x + i) + dx;
-            st(x + i, xi);
-            auto yi = ld(y + i) + dy;
-            // periodic wrap: yi + len if yi < 0, yi - len if yi >= len (x - 0 = x, also for -0)
-            yi = (yi - masked(yi >= len * one, len * one)) - masked(yi < 0 * one, -len * one);
-            st(y + i, yi);
-            const auto uxi = ld(ux + i) + dx, uyi = ld(uy + i) + dy;
-            st(ux + i, uxi);
-            st(uy + i, uyi);
-            st(vpx + i, vxi + h * one * axi);
-            st(vpy + i, vyi + h * one * ayi);
-            sx += uxi;
-            sy += uyi;
-            const auto qx = uxi - cpx, qy = uyi - cpy;
-            const auto q = qx * qx + qy * qy;
-            qmax = q > qmax ? q : qmax;
-        };
-        std::size_t i = begin_of(tid);
-        const std::size_t e = end_of(tid);
-        v2d vsx{0, 0}, vsy{0, 0}, vqm{0, 0};
-        const v2d one{1, 1}, vcx{s.cprev_x, s.cprev_x}, vcy{s.cprev_y, s.cprev_y};
-        for (; i + 2 <= e; i += 2) body(i, one, vcx, vcy, vsx, vsy, vqm, load2, store2);
-        double sx = vsx[0] + vsx[1], sy = vsy[0] + vsy[1], qmax = std::max(vqm[0], vqm[1]);
-        for (; i < e; ++i) body(i, 1.0, s.cprev_x, s.cprev_y, sx, sy, qmax, load1, store1);
-        s.sum_x = sx;
-        s.sum_y = sy;
-        s.max_q = qmax;
+        const pipe_detail::DriftArrays a{x_.data(), y_.data(), vx_.data(), vy_.data(), vpx_.data(), vpy_.data(),
+                                         dispx_.data(), dispy_.data(), fx_.data(), fy_.data(), inv_mass_.data(),
+                                         0.5 * dt_, dt_, geo_.length, geo_.gravity, s.cprev_x, s.cprev_y};
+        const pipe_detail::DriftSums sums = s.kick_pending ? pipe_detail::drift<true>(a, begin_of(tid), end_of(tid))
+                                                           : pipe_detail::drift<false>(a, begin_of(tid), end_of(tid));
+        s.sum_x = sums.sx;
+        s.sum_y = sums.sy;
+        s.max_q = sums.qmax;
+        s.kick_pending = true; // at the end of this step
     }
 
     // The grains near a wall, from the band of grains that were near enough at the last build:
