@@ -17,7 +17,8 @@
 // A step: (1) accelerations from the last force sums, the last step's closing half kick (kept
 // pending so that it shares this pass), this step's half kick and drift of every grain, noting
 // the grains near a wall; (2) contact test of each listed pair, once per pair (by both threads
-// if its grains belong to two), as a branch-free pass that flags the pair's list entries;
+// if its grains belong to two), four pairs per instruction with AVX2 (pipe_detect.hpp),
+// flagging the list entries of the pairs in contact;
 // (3) forces of the flagged entries, grain by grain in list order; (4) the wall rows, for the
 // grains near a wall; (5) wall-impact bookkeeping of the grains that touch or touched a wall.
 // (1) runs several grains per instruction (pipe_drift.hpp); contacts and wall grains are the
@@ -47,6 +48,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "engines/soft/pipe_detect.hpp"
 #include "engines/soft/pipe_drift.hpp"
 #include "engines/soft/spin_team.hpp"
 #include "models/normal_force.hpp"
@@ -144,7 +146,8 @@ public:
               fill_.capacity() + cell_start_.capacity()) * sizeof(int);
         b += nb_mirror_.capacity() * sizeof(int) + nb_flag_.capacity();
         for (const Scratch& s : scratch_)
-            b += (s.low.capacity() + s.high.capacity()) * sizeof(int) + s.pairs.capacity() * sizeof(Pair) +
+            b += (s.low.capacity() + s.high.capacity() + s.pi.capacity() + s.pj.capacity() + s.pk.capacity() +
+                  s.pm.capacity()) * sizeof(int) +
                  (s.partners.capacity() + s.counts.capacity() + s.hits.capacity() + s.near.capacity() +
                   s.touching.capacity()) * sizeof(int);
         b += wall_touch_.capacity() + spare_touch_.capacity() + near_mark_.capacity();
@@ -249,10 +252,6 @@ private:
         int id;
         double dvy, vy_in, vx_in;
     };
-    struct Pair {
-        int i, j;      // slots: i < j, or j another thread's grain
-        int k, mirror; // list entries i -> j and j -> i (k again when j is another thread's)
-    };
     struct alignas(64) Scratch {
         double sum_x = 0, sum_y = 0, max_q = 0; // rebuild-test partials of this step
         double cprev_x = 0, cprev_y = 0;        // mean displacement of the last step
@@ -265,7 +264,9 @@ private:
         std::vector<int> low, high, found; // list-build scratch
         std::vector<int> partners, counts; // this thread's grains' partners (slots), per grain
         std::size_t list_offset = 0;       // where they start in the whole list
-        std::vector<Pair> pairs;           // the pairs this thread tests (its grain has the lower slot)
+        // The pairs this thread tests: slots pi < pj (or pj another thread's grain), list entries
+        // pk = pi -> pj and pm = pj -> pi (pk again when pj is another thread's).
+        std::vector<int> pi, pj, pk, pm;
         std::vector<int> hits;             // list entries in contact this step
         std::vector<int> near;             // slots near a wall this step (near_count of them)
         std::vector<int> band;             // slots that can come near a wall before the next build
@@ -569,11 +570,16 @@ private:
         Scratch& s = scratch_[std::size_t(tid)];
         const std::size_t b = begin_of(tid), e = end_of(tid);
         const std::size_t k0 = std::size_t(nb_start_[b]), k1 = std::size_t(nb_start_[e]);
-        s.pairs.clear();
+        s.pi.clear(), s.pj.clear(), s.pk.clear(), s.pm.clear();
         for (std::size_t k = k0; k < k1; ++k) {
             const std::size_t j = std::size_t(nb_j_[k]);
-            if (j < b || j >= e) s.pairs.push_back({nb_owner_[k], int(j), int(k), int(k)});
-            else if (j > std::size_t(nb_owner_[k])) s.pairs.push_back({nb_owner_[k], int(j), int(k), nb_mirror_[k]});
+            const bool foreign = j < b || j >= e;
+            if (foreign || j > std::size_t(nb_owner_[k])) {
+                s.pi.push_back(nb_owner_[k]);
+                s.pj.push_back(int(j));
+                s.pk.push_back(int(k));
+                s.pm.push_back(foreign ? int(k) : nb_mirror_[k]);
+            }
         }
         s.hits.resize(k1 - k0 + 1);
         s.near.resize(e - b + 2);
@@ -671,25 +677,14 @@ private:
         fy = fn * ny + fs * nx;
     }
 
-    // Contact test of this thread's pairs: one branch-free pass that flags their list entries
-    // (contact iff not d^2 >= (r_i + r_j)^2, the same in either direction).
+    // Contact test of this thread's pairs (pipe_detect.hpp): flags their list entries in
+    // contact (not d^2 >= (r_i + r_j)^2, the same in either direction).
     void detect(int tid) {
         Scratch& s = scratch_[std::size_t(tid)];
-        const double* __restrict x = x_.data();
-        const double* __restrict y = y_.data();
-        const double* __restrict r = rad_.data();
-        unsigned char* __restrict flag = nb_flag_.data();
-        const double len = geo_.length, half = 0.5 * geo_.length;
-        for (const Pair& p : s.pairs) {
-            const std::size_t i = std::size_t(p.i), j = std::size_t(p.j);
-            const double dx = x[i] - x[j];
-            double dy = y[i] - y[j];
-            dy = dy > half ? dy - len : (dy < -half ? dy + len : dy);
-            const double rs = r[i] + r[j];
-            const unsigned char hit = !(dx * dx + dy * dy >= rs * rs);
-            flag[p.k] = hit;
-            flag[p.mirror] = hit;
-        }
+        const std::size_t k0 = std::size_t(nb_start_[begin_of(tid)]), k1 = std::size_t(nb_start_[end_of(tid)]);
+        std::memset(nb_flag_.data() + k0, 0, k1 - k0);
+        pipe_detail::detect({s.pi.data(), s.pj.data(), s.pk.data(), s.pm.data(), s.pi.size()},
+                            {x_.data(), y_.data(), rad_.data(), geo_.length}, nb_flag_.data());
     }
 
     // Force sums of this thread's grains, then (unless finalize() calls) the wall-impact
