@@ -109,8 +109,7 @@ double restitution_error(double e_N, double steps_per_contact) {
 }
 
 #if defined(__GNUC__) && defined(__x86_64__)
-// The drift pass gives the same bits four (AVX2), two (SSE2) or one grain at a time, and the
-// contact test the same decisions four pairs (AVX2) or one at a time.
+// The drift pass gives the same bits four (AVX2), two (SSE2) or one grain at a time.
 TEST(PipeEngine, VectorLanesGiveTheSameBits) {
     if (!__builtin_cpu_supports("avx2")) GTEST_SKIP() << "no AVX2 on this processor";
     PipeSpec s = hot_pipe();

@@ -17,9 +17,8 @@
 // A step: (1) accelerations from the last force sums, the last step's closing half kick (kept
 // pending so that it shares this pass), this step's half kick and drift of every grain, noting
 // the grains near a wall; (2) contact test of each listed pair, once per pair (by both threads
-// if its grains belong to two), four pairs per instruction with AVX2 (pipe_detect.hpp),
-// flagging the list entries of the pairs in contact;
-// (3) forces of the flagged entries, grain by grain in list order; (4) the wall rows, for the
+// if its grains belong to two), listing the entries of the pairs in contact (pipe_detect.hpp);
+// (3) forces of those entries, grain by grain in list order; (4) the wall rows, for the
 // grains near a wall; (5) wall-impact bookkeeping of the grains that touch or touched a wall.
 // (1) runs several grains per instruction (pipe_drift.hpp); contacts and wall grains are the
 // only scalar work per grain.
@@ -89,7 +88,7 @@ public:
         x_.push_back(x); y_.push_back(wrap(y)); vx_.push_back(vx); vy_.push_back(vy);
         fx_.push_back(0); fy_.push_back(0); rad_.push_back(radius); mass_.push_back(mass);
         inv_mass_.push_back(1.0 / mass);
-        wall_touch_.push_back(0); vy_at_touch_.push_back(0); vx_at_touch_.push_back(0);
+        wall_touch_.push_back(0); vy_at_touch_.push_back(0); vx_at_touch_.push_back(0); wall_impulse_y_.push_back(0);
         need_build_ = true;
         ++version_;
     }
@@ -143,14 +142,15 @@ public:
         for (const auto& v : spare_) b += v.capacity() * sizeof(double);
         b += (id_.capacity() + slot_of_id_.capacity() + spare_id_.capacity() + nb_start_.capacity() + nb_owner_.capacity() +
               nb_j_.capacity() + cell_of_.capacity() + cell_x_.capacity() + cell_y_.capacity() + order_.capacity() +
-              fill_.capacity() + cell_start_.capacity()) * sizeof(int);
-        b += nb_mirror_.capacity() * sizeof(int) + nb_flag_.capacity();
+              cell_col_.capacity() + cell_row_.capacity() + cell_start_.capacity()) * sizeof(int);
+        b += nb_mirror_.capacity() * sizeof(int);
         for (const Scratch& s : scratch_)
-            b += (s.low.capacity() + s.high.capacity() + s.pi.capacity() + s.pj.capacity() + s.pk.capacity() +
+            b += (s.low.capacity() + s.high.capacity() + s.found.capacity() + s.cell_count.capacity() +
+                  s.owners.capacity() + s.pi.capacity() + s.pj.capacity() + s.pk.capacity() +
                   s.pm.capacity()) * sizeof(int) +
                  (s.partners.capacity() + s.counts.capacity() + s.hits.capacity() + s.near.capacity() +
                   s.touching.capacity()) * sizeof(int);
-        b += wall_touch_.capacity() + spare_touch_.capacity() + near_mark_.capacity();
+        b += wall_touch_.capacity() + near_mark_.capacity();
         b += (fx_.capacity() + fy_.capacity()) * sizeof(double);
         for (const auto& o : out_) b += o.second.capacity() * sizeof(double);
         return x_.empty() ? 0.0 : double(b) / double(x_.size());
@@ -231,6 +231,19 @@ public:
         cells_y_ = int(geo_.length / range_);
         cell_w_ = geo_.width / cells_x_;
         cell_h_ = geo_.length / cells_y_;
+        const int ncell = cells_x_ * cells_y_;
+        cell_start_.assign(std::size_t(ncell) + 1, 0);
+        cell_col_.resize(std::size_t(ncell));
+        cell_row_.resize(std::size_t(ncell));
+        for (int c = 0; c < ncell; ++c) cell_col_[std::size_t(c)] = c % cells_x_, cell_row_[std::size_t(c)] = c / cells_x_;
+        cell_of_.resize(n);
+        order_.resize(n);
+        for (auto& v : spare_) v.resize(n);
+        spare_id_.resize(n);
+        slot_of_id_.resize(n);
+        cell_x_.resize(n);
+        cell_y_.resize(n);
+        nb_start_.resize(n + 1);
         for (auto& s : scratch_) s = Scratch{};
         need_build_ = false;
         ++version_;
@@ -262,12 +275,15 @@ private:
         long impacts = 0;
         std::vector<Completion> completed;
         std::vector<int> low, high, found; // list-build scratch
-        std::vector<int> partners, counts; // this thread's grains' partners (slots), per grain
+        std::vector<int> cell_count;       // grains per cell in this thread's share, then where they go
+        std::vector<int> partners, owners, counts; // this thread's list entries (partner, owner slots) and the
+                                                   // entries before each of its grains
         std::size_t list_offset = 0;       // where they start in the whole list
         // The pairs this thread tests: slots pi < pj (or pj another thread's grain), list entries
         // pk = pi -> pj and pm = pj -> pi (pk again when pj is another thread's).
         std::vector<int> pi, pj, pk, pm;
-        std::vector<int> hits;             // list entries in contact this step
+        std::vector<int> hits;             // list entries in contact this step (nhits of them)
+        std::size_t nhits = 0;
         std::vector<int> near;             // slots near a wall this step (near_count of them)
         std::vector<int> band;             // slots that can come near a wall before the next build
         std::size_t near_count = 0;
@@ -450,23 +466,41 @@ private:
     // (a pair farther apart than r_i + r_j + skin cannot touch before the next build).
     void rebuild(int tid) {
         const std::size_t n = x_.size();
+        const std::size_t ncell = std::size_t(cells_x_) * std::size_t(cells_y_);
+        const std::size_t b = begin_of(tid), e = end_of(tid);
+        Scratch& s = scratch_[std::size_t(tid)];
+        // A counting sort by cell, shared by the threads: each counts its share, thread 0 turns
+        // the counts into offsets (cell by cell, thread by thread: a stable sort), each places
+        // its share, then sorts by id the cells that start in its share.
+        s.cell_count.assign(ncell, 0);
+        for (std::size_t i = b; i < e; ++i) {
+            const int ix = std::clamp(int(x_[i] / cell_w_), 0, cells_x_ - 1);
+            const int iy = std::clamp(int(y_[i] / cell_h_), 0, cells_y_ - 1);
+            cell_of_[i] = iy * cells_x_ + ix;
+            ++s.cell_count[std::size_t(cell_of_[i])];
+        }
+        sync();
         if (tid == 0) {
             ++builds_;
-            const int ncell = cells_x_ * cells_y_;
-            cell_start_.assign(std::size_t(ncell) + 1, 0);
-            cell_of_.resize(n);
-            for (std::size_t i = 0; i < n; ++i) {
-                const int ix = std::clamp(int(x_[i] / cell_w_), 0, cells_x_ - 1);
-                const int iy = std::clamp(int(y_[i] / cell_h_), 0, cells_y_ - 1);
-                cell_of_[i] = iy * cells_x_ + ix;
-                ++cell_start_[std::size_t(cell_of_[i]) + 1];
+            int total = 0;
+            for (std::size_t c = 0; c < ncell; ++c) {
+                cell_start_[c] = total;
+                for (Scratch& t : scratch_) {
+                    const int count = t.cell_count[c];
+                    t.cell_count[c] = total;
+                    total += count;
+                }
             }
-            for (std::size_t c = 1; c < cell_start_.size(); ++c) cell_start_[c] += cell_start_[c - 1];
-            order_.resize(n);
-            fill_.assign(cell_start_.begin(), cell_start_.end() - 1);
-            for (std::size_t i = 0; i < n; ++i) order_[std::size_t(fill_[std::size_t(cell_of_[i])]++)] = int(i);
-            // Within a cell by id (the cells were sorted at the last build, so this is nearly so).
-            for (std::size_t c = 0; c + 1 < cell_start_.size(); ++c)
+            cell_start_[ncell] = total;
+        }
+        sync();
+        for (std::size_t i = b; i < e; ++i) order_[std::size_t(s.cell_count[std::size_t(cell_of_[i])]++)] = int(i);
+        sync();
+        // Within a cell by id (the cells were sorted at the last build, so this is nearly so).
+        {
+            const std::size_t c0 = std::size_t(std::lower_bound(cell_start_.begin(), cell_start_.end() - 1, int(b)) - cell_start_.begin());
+            const std::size_t c1 = std::size_t(std::lower_bound(cell_start_.begin(), cell_start_.end() - 1, int(e)) - cell_start_.begin());
+            for (std::size_t c = c0; c < c1; ++c)
                 for (int a = cell_start_[c] + 1; a < cell_start_[c + 1]; ++a) {
                     const int k = order_[std::size_t(a)];
                     int b2 = a;
@@ -474,20 +508,11 @@ private:
                         order_[std::size_t(b2)] = order_[std::size_t(b2 - 1)];
                     order_[std::size_t(b2)] = k;
                 }
-            for (auto& v : spare_) v.resize(n);
-            spare_id_.resize(n);
-            spare_touch_.resize(n);
-            slot_of_id_.resize(n);
-            cell_x_.resize(n);
-            cell_y_.resize(n);
-            nb_start_.resize(n + 1);
         }
         sync();
         // Move this thread's share of the new order.
         {
-            std::vector<double>* cur[] = {&x_, &y_, &vx_, &vy_, &vpx_, &vpy_, &rad_, &mass_, &inv_mass_,
-                                          &vy_at_touch_, &vx_at_touch_, &wall_impulse_y_};
-            const std::size_t b = begin_of(tid), e = end_of(tid);
+            std::vector<double>* cur[] = {&x_, &y_, &vx_, &vy_, &vpx_, &vpy_, &rad_, &mass_, &inv_mass_};
             const int* __restrict order = order_.data();
             for (std::size_t a = 0; a < kMoved; ++a) {
                 const double* __restrict src = cur[a]->data();
@@ -496,27 +521,20 @@ private:
             }
             for (std::size_t i = b; i < e; ++i) {
                 const std::size_t o = std::size_t(order[i]);
+                const int c = cell_of_[o];
                 spare_id_[i] = id_[o];
-                spare_touch_[i] = wall_touch_[o];
-                dispx_[i] = 0;
-                dispy_[i] = 0;
+                cell_x_[i] = cell_col_[std::size_t(c)];
+                cell_y_[i] = cell_row_[std::size_t(c)];
                 slot_of_id_[std::size_t(id_[o])] = int(i);
             }
-            // Cell coordinates by slot: slot i is in the cell whose range holds it.
-            std::size_t c = std::size_t(std::upper_bound(cell_start_.begin(), cell_start_.end(), int(b)) - cell_start_.begin()) - 1;
-            for (std::size_t i = b; i < e; ++i) {
-                while (std::size_t(cell_start_[c + 1]) <= i) ++c;
-                cell_x_[i] = int(c) % cells_x_;
-                cell_y_[i] = int(c) / cells_x_;
-            }
+            std::fill(dispx_.begin() + std::ptrdiff_t(b), dispx_.begin() + std::ptrdiff_t(e), 0.0);
+            std::fill(dispy_.begin() + std::ptrdiff_t(b), dispy_.begin() + std::ptrdiff_t(e), 0.0);
         }
         sync();
         if (tid == 0) {
-            std::vector<double>* cur[] = {&x_, &y_, &vx_, &vy_, &vpx_, &vpy_, &rad_, &mass_, &inv_mass_,
-                                          &vy_at_touch_, &vx_at_touch_, &wall_impulse_y_};
+            std::vector<double>* cur[] = {&x_, &y_, &vx_, &vy_, &vpx_, &vpy_, &rad_, &mass_, &inv_mass_};
             for (std::size_t a = 0; a < kMoved; ++a) cur[a]->swap(spare_[a]);
             id_.swap(spare_id_);
-            wall_touch_.swap(spare_touch_);
         }
         sync();
         list_share(tid);
@@ -528,60 +546,66 @@ private:
                 s.list_offset = total;
                 total += s.partners.size();
             }
-            if (nb_j_.size() < total) {
-                const std::size_t cap = total + total / 4;
+            if (nb_j_.size() < total + 8) { // (+8: the mirror scan reads up to 8 entries past a start)
+                const std::size_t cap = total + total / 4 + 8;
                 nb_j_.resize(cap);
                 nb_owner_.resize(cap);
                 nb_mirror_.resize(cap);
-                nb_flag_.resize(cap);
             }
             nb_start_[n] = int(total);
         }
         sync();
         {
-            Scratch& s = scratch_[std::size_t(tid)];
             std::copy(s.partners.begin(), s.partners.end(), nb_j_.begin() + std::ptrdiff_t(s.list_offset));
-            std::size_t k = s.list_offset;
-            const std::size_t b = begin_of(tid), e = end_of(tid);
-            int* __restrict owner = nb_owner_.data();
-            for (std::size_t i = b; i < e; ++i) {
-                nb_start_[i] = int(k);
-                const std::size_t stop = k + std::size_t(s.counts[i - b]);
-                for (; k < stop; ++k) owner[k] = int(i);
-            }
+            std::copy(s.owners.begin(), s.owners.end(), nb_owner_.begin() + std::ptrdiff_t(s.list_offset));
+            for (std::size_t i = b; i < e; ++i) nb_start_[i] = int(s.list_offset) + s.counts[i - b];
         }
         sync();
-        // Each entry i -> j finds its mirror j -> i.
-        for (std::size_t k = std::size_t(nb_start_[begin_of(tid)]), k1 = std::size_t(nb_start_[end_of(tid)]); k < k1; ++k) {
-            const int i = nb_owner_[k], j = nb_j_[k];
-            int m = nb_start_[std::size_t(j)];
-            while (nb_j_[std::size_t(m)] != i) ++m;
-            nb_mirror_[k] = m;
+        // Each entry i -> j finds its mirror j -> i among j's entries: a fixed, branch-free scan
+        // of the first eight (more only for a grain with more partners).
+        {
+            const int* __restrict start = nb_start_.data();
+            const int* __restrict nbj = nb_j_.data();
+            const int* __restrict own = nb_owner_.data();
+            int* __restrict mirror = nb_mirror_.data();
+            for (std::size_t k = std::size_t(start[begin_of(tid)]), k1 = std::size_t(start[end_of(tid)]); k < k1; ++k) {
+                const int i = own[k], j = nbj[k];
+                const int s0 = start[j], count = start[j + 1] - s0;
+                int m = 0; // (exactly one q matches: m = the sum of (s0 + q) [match])
+                if (count <= 8) {
+                    for (int q = 0; q < 8; ++q) m += (s0 + q) * int((nbj[s0 + q] == i) & (q < count));
+                } else {
+                    for (int q = 0; q < count; ++q) m += (s0 + q) * int(nbj[s0 + q] == i);
+                }
+                mirror[k] = m;
+            }
         }
         thread_lists(tid, true);
     }
 
     // What each thread derives from the whole list for its share of the grains: the pairs it
     // tests, and the grains that touch a wall. A pair of two of its grains is tested once and
-    // flags both entries; a pair with another thread's grain is tested by both threads, each
-    // flagging its own entry (the test is symmetric, so they agree), and no thread writes
-    // another's flags.
+    // yields both entries; a pair with another thread's grain is tested by both threads, each
+    // taking its own entry (the test is symmetric, so they agree), so every thread's contacts
+    // are its own entries.
     void thread_lists(int tid, bool at_build) {
         Scratch& s = scratch_[std::size_t(tid)];
         const std::size_t b = begin_of(tid), e = end_of(tid);
         const std::size_t k0 = std::size_t(nb_start_[b]), k1 = std::size_t(nb_start_[e]);
-        s.pi.clear(), s.pj.clear(), s.pk.clear(), s.pm.clear();
+        const std::size_t most = k1 - k0 + 1;
+        s.pi.resize(most), s.pj.resize(most), s.pk.resize(most), s.pm.resize(most);
+        std::size_t np = 0;
         for (std::size_t k = k0; k < k1; ++k) {
             const std::size_t j = std::size_t(nb_j_[k]);
-            const bool foreign = j < b || j >= e;
-            if (foreign || j > std::size_t(nb_owner_[k])) {
-                s.pi.push_back(nb_owner_[k]);
-                s.pj.push_back(int(j));
-                s.pk.push_back(int(k));
-                s.pm.push_back(foreign ? int(k) : nb_mirror_[k]);
-            }
+            const bool foreign = (j < b) | (j >= e);
+            s.pi[np] = nb_owner_[k];
+            s.pj[np] = int(j);
+            s.pk[np] = int(k);
+            s.pm[np] = foreign ? int(k) : nb_mirror_[k];
+            np += foreign | (j > std::size_t(nb_owner_[k]));
         }
-        s.hits.resize(k1 - k0 + 1);
+        s.pi.resize(np), s.pj.resize(np), s.pk.resize(np), s.pm.resize(np);
+        s.hits.resize(2 * np + 1);
         s.near.resize(e - b + 2);
         double rmax = 0;
         for (double r : rad_) rmax = std::max(rmax, r);
@@ -591,8 +615,10 @@ private:
             if (x_[i] < band || x_[i] > geo_.width - band) s.band.push_back(int(i));
         s.band_valid = at_build; // (the band is measured from the positions at the build)
         s.touching.clear();
-        for (std::size_t i = b; i < e; ++i)
-            if (wall_touch_[i] || wall_impulse_y_[i] != 0) s.touching.push_back(int(i));
+        for (std::size_t i = b; i < e; ++i) {
+            const std::size_t g = std::size_t(id_[i]);
+            if (wall_touch_[g] || wall_impulse_y_[g] != 0) s.touching.push_back(int(i));
+        }
     }
 
     // Lists the partners of this thread's grains into its scratch (partners, counts). The cells
@@ -602,13 +628,13 @@ private:
     void list_share(int tid) {
         Scratch& s = scratch_[std::size_t(tid)];
         const std::size_t b = begin_of(tid), e = end_of(tid);
-        s.partners.clear();
         s.counts.resize(e - b);
         const double* __restrict x = x_.data();
         const double* __restrict y = y_.data();
         const double* __restrict r = rad_.data();
         const int* __restrict id = id_.data();
         const double len = geo_.length, skin = skin_;
+        std::size_t used = 0; // entries written to s.partners / s.owners
         for (std::size_t i = b; i < e; ++i) {
             const int ix = cell_x_[i], iy = cell_y_[i];
             const int jx0 = std::max(ix - 1, 0), jx1 = std::min(ix + 1, cells_x_ - 1);
@@ -623,10 +649,14 @@ private:
                 hi[row] = cell_start_[std::size_t(wy * cells_x_ + jx1 + 1)];
                 candidates += std::size_t(hi[row] - lo[row]);
             }
-            if (s.low.size() < candidates + 1) {
+            if (s.found.size() < candidates + 1) {
                 s.low.resize(2 * candidates + 8);
                 s.high.resize(2 * candidates + 8);
                 s.found.resize(2 * candidates + 8);
+            }
+            if (s.partners.size() < used + candidates) {
+                s.partners.resize(2 * (used + candidates) + 64);
+                s.owners.resize(2 * (used + candidates) + 64);
             }
             int* __restrict low = s.low.data();
             int* __restrict high = s.high.data();
@@ -645,9 +675,11 @@ private:
             std::size_t nl = 0, nh = 0;
             for (std::size_t a = 0; a < nf; ++a) {
                 const int j = found[a];
-                if (std::size_t(j) == i) continue;
-                if (id[j] < me) low[nl++] = j;
-                else high[nh++] = j;
+                const bool other = std::size_t(j) != i, below = id[j] < me;
+                low[nl] = j;
+                nl += other & below;
+                high[nh] = j;
+                nh += other & !below;
             }
             for (std::size_t a = 1; a < nl; ++a) { // insertion sort by id
                 const int k = low[a];
@@ -655,10 +687,15 @@ private:
                 for (; c > 0 && id[low[c - 1]] > id[k]; --c) low[c] = low[c - 1];
                 low[c] = k;
             }
-            s.partners.insert(s.partners.end(), low, low + nl);
-            s.partners.insert(s.partners.end(), high, high + nh);
-            s.counts[i - b] = int(nl + nh);
+            s.counts[i - b] = int(used);
+            int* __restrict out = s.partners.data() + used;
+            int* __restrict own = s.owners.data() + used;
+            for (std::size_t a = 0; a < nl; ++a) out[a] = low[a], own[a] = int(i);
+            for (std::size_t a = 0; a < nh; ++a) out[nl + a] = high[a], own[nl + a] = int(i);
+            used += nl + nh;
         }
+        s.partners.resize(used);
+        s.owners.resize(used);
     }
 
     // ---- forces ----------------------------------------------------------------------------
@@ -677,34 +714,21 @@ private:
         fy = fn * ny + fs * nx;
     }
 
-    // Contact test of this thread's pairs (pipe_detect.hpp): flags their list entries in
-    // contact (not d^2 >= (r_i + r_j)^2, the same in either direction).
+    // Contact test of this thread's pairs (pipe_detect.hpp): the list entries in contact (not
+    // d^2 >= (r_i + r_j)^2, the same in either direction), sorted into list order.
     void detect(int tid) {
         Scratch& s = scratch_[std::size_t(tid)];
-        const std::size_t k0 = std::size_t(nb_start_[begin_of(tid)]), k1 = std::size_t(nb_start_[end_of(tid)]);
-        std::memset(nb_flag_.data() + k0, 0, k1 - k0);
-        pipe_detail::detect({s.pi.data(), s.pj.data(), s.pk.data(), s.pm.data(), s.pi.size()},
-                            {x_.data(), y_.data(), rad_.data(), geo_.length}, nb_flag_.data());
+        s.nhits = pipe_detail::detect({s.pi.data(), s.pj.data(), s.pk.data(), s.pm.data(), s.pi.size()},
+                                      {x_.data(), y_.data(), rad_.data(), geo_.length}, s.hits.data());
+        std::sort(s.hits.begin(), s.hits.begin() + std::ptrdiff_t(s.nhits)); // list order
     }
 
     // Force sums of this thread's grains, then (unless finalize() calls) the wall-impact
     // bookkeeping.
     void forces(int tid, bool track_walls) {
         Scratch& s = scratch_[std::size_t(tid)];
-        const std::size_t b = begin_of(tid), e = end_of(tid);
-        // The flagged entries, in list order (eight flags per test).
-        const std::size_t k0 = std::size_t(nb_start_[b]), k1 = std::size_t(nb_start_[e]);
-        const unsigned char* __restrict flag = nb_flag_.data();
-        int* __restrict hits = s.hits.data();
-        std::size_t nh = 0, k = k0;
-        for (; k < k1 && (k & 7); ++k) hits[nh] = int(k), nh += flag[k];
-        for (; k + 8 <= k1; k += 8) {
-            std::uint64_t w;
-            std::memcpy(&w, flag + k, 8);
-            if (w)
-                for (std::size_t a = k; a < k + 8; ++a) hits[nh] = int(a), nh += flag[a];
-        }
-        for (; k < k1; ++k) hits[nh] = int(k), nh += flag[k];
+        const int* __restrict hits = s.hits.data();
+        const std::size_t nh = s.nhits;
 
         // Contact forces, grain by grain: partners with smaller id, then larger id, then both.
         const double len = geo_.length, half = 0.5 * geo_.length;
@@ -736,13 +760,12 @@ private:
                 const double m_red = m[i] * m[j] / (m[i] + m[j]);
                 double fx, fy;
                 contact(dx / d, dy / d, xi, vpx[i] - vpx[j], vpy[i] - vpy[j], m_red, fx, fy);
-                if (id[j] < id[i]) {
-                    low_x += fx;
-                    low_y += fy;
-                } else {
-                    high_x += fx;
-                    high_y += fy;
-                }
+                // Branch-free: the sums start at +0 and so are never -0, and x + 0 = x otherwise.
+                const bool below = id[j] < id[i];
+                low_x += below ? fx : 0.0;
+                low_y += below ? fy : 0.0;
+                high_x += below ? 0.0 : fx;
+                high_y += below ? 0.0 : fy;
             }
             fxs[i] = low_x + high_x;
             fys[i] = low_y + high_y;
@@ -771,17 +794,18 @@ private:
         s.completed.clear();
         const double h = 0.5 * dt_;
         auto track = [&](std::size_t i, bool now) {
-            if (now && !wall_touch_[i]) {
+            const std::size_t g = std::size_t(id[i]); // wall-impact state is kept by id
+            if (now && !wall_touch_[g]) {
                 ++s.impacts;
                 // the velocities after this step's closing half kick (applied by the next drift)
-                vy_at_touch_[i] = vy_[i] + h * accel_y(i);
-                vx_at_touch_[i] = vx_[i] + h * accel_x(i);
-            } else if (!now && wall_touch_[i]) {
-                s.completed.push_back({id[i], wall_impulse_y_[i] * inv_mass_[i], std::abs(vy_at_touch_[i]),
-                                       std::abs(vx_at_touch_[i])});
+                vy_at_touch_[g] = vy_[i] + h * accel_y(i);
+                vx_at_touch_[g] = vx_[i] + h * accel_x(i);
+            } else if (!now && wall_touch_[g]) {
+                s.completed.push_back({id[i], wall_impulse_y_[g] * inv_mass_[i], std::abs(vy_at_touch_[g]),
+                                       std::abs(vx_at_touch_[g])});
             }
-            if (!now) wall_impulse_y_[i] = 0;
-            wall_touch_[i] = now;
+            if (!now) wall_impulse_y_[g] = 0;
+            wall_touch_[g] = now;
         };
         if (track_walls) {
             for (int i : s.touching)
@@ -814,7 +838,7 @@ private:
             contact(dx / d, dy / d, xi, vpx_[i], vpy_[i], mass_[i], fx, fy);
             fx_sum += fx;
             fy_sum += fy;
-            wall_impulse_y_[i] += fy * dt_;
+            wall_impulse_y_[std::size_t(id_[i])] += fy * dt_;
             touched = true;
         }
         return touched;
@@ -846,7 +870,9 @@ private:
         }
     }
 
-    static constexpr std::size_t kMoved = 12; // per-grain double arrays moved by a re-sort (ax, ay are recomputed)
+    // Per-grain double arrays moved by a re-sort (the force sums are zero at that point; the
+    // wall-impact state is kept by id).
+    static constexpr std::size_t kMoved = 9;
 
     NormalLaw normal_;
     ShearLaw shear_;
@@ -860,18 +886,16 @@ private:
     int cells_x_ = 1, cells_y_ = 1;
     // Per grain, in memory (cell) order; id_ maps a slot to the grain's id, slot_of_id_ back.
     std::vector<double> x_, y_, vx_, vy_, vpx_, vpy_, rad_, mass_, inv_mass_, dispx_, dispy_;
-    std::vector<double> vy_at_touch_, vx_at_touch_, wall_impulse_y_;
-    std::vector<char> wall_touch_;
+    std::vector<double> vy_at_touch_, vx_at_touch_, wall_impulse_y_; // by id
+    std::vector<char> wall_touch_;                                   // by id
     std::vector<int> id_, slot_of_id_;
     std::vector<double> spare_[kMoved];
     std::vector<int> spare_id_;
-    std::vector<char> spare_touch_;
     // Cells (by slot after a build) and the list: the partners of slot i are the entries
     // nb_start_[i] .. nb_start_[i+1]-1, entry k pairing nb_owner_[k] (= i) with nb_j_[k].
-    std::vector<int> cell_start_, cell_of_, cell_x_, cell_y_, order_, fill_;
-    // nb_mirror_[k] is the entry j -> i of entry k = i -> j; nb_flag_[k] says it is in contact.
+    std::vector<int> cell_start_, cell_of_, cell_x_, cell_y_, order_, cell_col_, cell_row_;
+    // nb_mirror_[k] is the entry j -> i of entry k = i -> j.
     std::vector<int> nb_start_, nb_owner_, nb_j_, nb_mirror_;
-    std::vector<unsigned char> nb_flag_;
     std::vector<double> fx_, fy_;        // force sums of the last force evaluation (cleared by drift)
     std::vector<unsigned char> near_mark_; // 1: near a wall this step, 2: and touching; else 0
     WallImpactStats wall_;
