@@ -390,9 +390,22 @@ void comparison(const BenchOptions& opt) {
 
 // ---- cost against size --------------------------------------------------------------------
 
-long cache_bytes(int name) {
-    const long b = sysconf(name);
-    return b > 0 ? b : 0;
+// Size of the level-`level` data (or unified) cache of CPU 0 from sysfs [bytes], 0 if unknown.
+// (sysconf's _SC_LEVEL3_CACHE_SIZE reports 320 MiB on this VM, sysfs and lscpu 32 MiB.)
+long cache_bytes(int level) {
+    for (int k = 0; k < 8; ++k) {
+        const std::string dir = "/sys/devices/system/cpu/cpu0/cache/index" + std::to_string(k) + "/";
+        std::ifstream lv(dir + "level"), ty(dir + "type"), sz(dir + "size");
+        int l = 0;
+        std::string type, size;
+        if (!(lv >> l) || !(ty >> type) || !(sz >> size)) break;
+        if (l != level || type == "Instruction") continue;
+        long v = std::atol(size.c_str());
+        if (size.back() == 'K') v *= 1024;
+        if (size.back() == 'M') v *= 1024 * 1024;
+        return v;
+    }
+    return 0;
 }
 
 void sizes(const BenchOptions& opt) {
@@ -401,8 +414,7 @@ void sizes(const BenchOptions& opt) {
     std::printf("bench soft --sizes: the bench pipe (width 20 mm, k_N 2000 N/m, e_N 0.95, area fraction 0.55) at "
                 "several lengths;\n  steps %ld-%ld after the slow start (repeated for small pipes to >= 0.5 s), medians "
                 "of %d runs. Caches: L2 %ld KiB, L3 %ld MiB.\n",
-                warm, warm + timed, opt.repeats, cache_bytes(_SC_LEVEL2_CACHE_SIZE) / 1024,
-                cache_bytes(_SC_LEVEL3_CACHE_SIZE) / 1024 / 1024);
+                warm, warm + timed, opt.repeats, cache_bytes(2) / 1024, cache_bytes(3) / 1024 / 1024);
     const double load_before = load_average();
     std::printf("  %8s %8s %14s %10s %14s %10s %10s %10s\n", "grains", "length", "1 thread", "ns/grain", "threads",
                 "speed-up", "bytes/", "builds/");
@@ -419,8 +431,8 @@ void sizes(const BenchOptions& opt) {
         double bytes = 0, builds = 0;
         std::size_t n = 0;
         for (int rep = 0; rep < opt.repeats; ++rep) {
-            for (int t : {1, threads}) {
-                if (t == threads && threads == 1) continue;
+            for (int k = 0; k < (threads > 1 ? 2 : 1); ++k) {
+                const int t = k == 0 ? 1 : threads;
                 double cpu = 0, wall = 0, work = 0;
                 while ((t == 1 ? cpu : wall) < 0.5) {
                     Engine eng = build_pipe(spec);
