@@ -1,4 +1,5 @@
 #include "cli/bench.hpp"
+#include "cli/soft_bench.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -8,15 +9,9 @@
 #include <random>
 #include <vector>
 #include <cmath>
-#include <cstdlib>
-#include <filesystem>
-#include <fstream>
-#include <sstream>
-#include <unistd.h>
 
 #include "core/input_error.hpp"
 #include "experiments/impact_shot.hpp"
-#include "experiments/pipe_setup.hpp"
 #include "engines/dsmc/dsmc_bench.hpp"
 #include "bench/ed_bench.hpp"
 #include "engines/ed/huge_page_allocator.hpp"
@@ -50,92 +45,6 @@ Measurement bench_impact(double seconds) {
         elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     }
     return {double(impacts) / elapsed, "impacts/s"};
-}
-
-// The Fig. 6 pipe at about 1500 free grains (length 11 cm), k_N = 2000 N/m, e_N = 0.95, slow
-// start: free-grain steps per second of our engine.
-PipeSpec bench_pipe_spec() {
-    PipeSpec s;
-    s.geo.wall_spacing = 1.0e-3;
-    s.geo.length = 0.111;
-    s.e_N = 0.95;
-    return s;
-}
-
-Measurement bench_soft(double seconds) {
-    auto eng = build_pipe(bench_pipe_spec());
-    const auto t0 = std::chrono::steady_clock::now();
-    long steps = 0;
-    double elapsed = 0;
-    while (elapsed < seconds) {
-        for (int k = 0; k < 200; ++k) eng.step();
-        steps += 200;
-        elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    }
-    return {double(steps) * double(eng.size()) / elapsed, "free-grain steps/s"};
-}
-
-// The same pipe in LAMMPS (pair gran/hooke, wall grains not integrated, fix enforce2d), if `lmp`
-// is installed: writes the identical initial configuration as a data file, runs `steps` steps and
-// returns free-grain steps per second from LAMMPS' own loop time. NaN when LAMMPS is absent.
-double lammps_free_grain_rate(long steps) {
-    if (std::system("command -v lmp > /dev/null 2>&1") != 0) return NAN;
-    const PipeSpec spec = bench_pipe_spec();
-    auto eng = build_pipe(spec);
-    const auto dir = std::filesystem::temp_directory_path() / ("granrepro-lammps-" + std::to_string(getpid()));
-    std::filesystem::create_directories(dir);
-    const long n_free = long(eng.size());
-    const long n_wall_row = std::lround(spec.geo.length / spec.geo.wall_spacing);
-    {
-        std::ofstream data(dir / "pipe.data");
-        data.precision(12);
-        data << "granrepro pipe\n\n" << n_free + 2 * n_wall_row << " atoms\n2 atom types\n\n"
-             << -2e-3 << " " << spec.geo.width + 2e-3 << " xlo xhi\n0 " << spec.geo.length << " ylo yhi\n"
-             << "-0.5e-3 0.5e-3 zlo zhi\n\nAtoms # sphere\n\n";
-        // LAMMPS reads the density of a data file per volume, m = density * 4/3 pi r^3, also in 2d.
-        for (long i = 0; i < n_free; ++i) {
-            const double r = eng.radius()[std::size_t(i)];
-            data << i + 1 << " 1 " << 2 * r << " " << eng.mass()[std::size_t(i)] / (4.0 / 3.0 * M_PI * r * r * r) << " "
-                 << eng.x()[std::size_t(i)] << " " << eng.y()[std::size_t(i)] << " 0\n";
-        }
-        for (long k = 0; k < 2 * n_wall_row; ++k)
-            data << n_free + k + 1 << " 2 " << 2 * spec.geo.wall_radius << " 1e6 "
-                 << (k < n_wall_row ? 0.0 : spec.geo.width) << " " << double(k % n_wall_row) * spec.geo.wall_spacing
-                 << " 0\n";
-        data << "\nVelocities\n\n";
-        for (long i = 0; i < n_free; ++i)
-            data << i + 1 << " " << eng.vx()[std::size_t(i)] << " " << eng.vy()[std::size_t(i)] << " 0 0 0 0\n";
-        for (long k = 0; k < 2 * n_wall_row; ++k) data << n_free + k + 1 << " 0 0 0 0 0 0\n";
-    }
-    const LinearSpringDashpot law = pipe_law(spec.k_N, spec.e_N, spec.m_mean);
-    {
-        std::ofstream in(dir / "in.pipe");
-        in.precision(12);
-        // gran/hooke: F_n = k_n delta - m_eff gamma_n v_n (= Eq. 1); a huge gamma_t makes the
-        // tangential force always the Coulomb cap mu F_n (= Eq. 2); no history, no rotation used.
-        in << "units si\ndimension 2\nboundary f p p\natom_style sphere\n"
-           << "read_data pipe.data\n"
-           << "group free type 1\ngroup wall type 2\n"
-           << "pair_style gran/hooke " << law.k_N << " 0 " << law.gamma_N << " 1e12 " << spec.mu << " 0\n"
-           << "pair_coeff * *\nneighbor " << spec.skin << " bin\nneigh_modify delay 0 every 1 check yes exclude type 2 2\n"
-           << "comm_modify vel yes\n"
-           << "fix grav free gravity " << spec.geo.gravity << " vector 0 -1 0\n"
-           << "fix integrate free nve/sphere disc\nfix twod all enforce2d\n"
-           << "timestep " << eng.dt() << "\nthermo 100000\nrun " << steps << "\n";
-    }
-    const std::string cmd = "cd '" + dir.string() + "' && lmp -in in.pipe -log none > lmp.out 2>&1";
-    const int rc = std::system(cmd.c_str());
-    double loop = NAN;
-    std::ifstream out(dir / "lmp.out");
-    for (std::string line; std::getline(out, line);)
-        if (line.rfind("Loop time of ", 0) == 0) loop = std::atof(line.c_str() + 13);
-    if (rc != 0 || !(loop > 0)) {
-        std::fprintf(stderr, "granrepro: LAMMPS run failed; input and output kept in %s\n", dir.c_str());
-        return NAN;
-    }
-    if (std::getenv("GRANREPRO_KEEP_LAMMPS")) std::fprintf(stderr, "LAMMPS files kept in %s\n", dir.c_str());
-    else std::filesystem::remove_all(dir);
-    return double(n_free) * double(steps) / loop;
 }
 
 double median(std::vector<double> v) {
@@ -172,26 +81,6 @@ void report_simple(const char* name, const char* description, Measurement (*fn)(
 
 void bench_impact_report(const BenchOptions& opt) {
     report_simple("impact", "few-body soft-sphere impacts on a wall row (Schäfer-Wolf Fig. 4 set-up)", bench_impact, opt);
-}
-
-void bench_soft_report(const BenchOptions& opt) {
-    std::vector<double> ours;
-    for (int k = 0; k < opt.repeats; ++k) ours.push_back(bench_soft(opt.seconds).rate);
-    const double m = median(ours);
-    std::printf("bench soft: many-body soft-sphere pipe, ~1500 free grains (Schäfer-Wolf Fig. 6 set-up), one core\n"
-                "  granrepro: median %.4g free-grain steps/s over %d runs\n", m, opt.repeats);
-    std::vector<double> lmp;
-    for (int k = 0; k < opt.repeats; ++k) {
-        const double rate = lammps_free_grain_rate(std::max(2000L, long(m * opt.seconds / 1500.0 / 3)));
-        if (std::isnan(rate)) break;
-        lmp.push_back(rate);
-    }
-    if (lmp.empty()) {
-        std::printf("  LAMMPS: not installed (Debian package lammps) or failed; no comparison\n");
-        return;
-    }
-    std::printf("  LAMMPS (same pipe, gran/hooke): median %.4g free-grain steps/s over %zu runs\n"
-                "  ratio granrepro / LAMMPS = %.2f\n", median(lmp), lmp.size(), m / median(lmp));
 }
 
 // Latency [ns] of one dependent load at a random cache line of a `bytes` large block, allocated

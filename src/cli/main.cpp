@@ -256,6 +256,12 @@ int main(int argc, char** argv) {
     bench->add_option("--seconds", bench_opt.seconds, "time budget of one run [s]")
         ->capture_default_str()
         ->check(CLI::Range(0.01, 3600.0));
+    bench->add_option("--steps", bench_opt.steps, "soft: time steps of one timed run (default 400000)")
+        ->check(CLI::Range(1L, 1000000000L));
+    bench->add_option("--threads", bench_opt.threads, "soft: threads of the multi-core comparison")
+        ->capture_default_str()
+        ->check(CLI::Range(1, 256));
+    bench->add_flag("--sizes", bench_opt.sizes, "soft: steps/s and memory against the number of grains");
     bench->callback([&] { rc = run_bench(bench_target, bench_opt); });
 
     // An unknown subcommand gets the list of known ones, in one line.

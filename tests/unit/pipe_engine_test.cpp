@@ -1,8 +1,10 @@
-// The many-body pipe engine: neighbour list against the O(N^2) reference on the same state, and
-// two-grain collisions against Eq. (4).
+// The many-body pipe engine: neighbour list against the O(N^2) reference on the same state,
+// results independent of the thread count, and two-grain collisions against Eq. (4).
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <utility>
+#include <vector>
 
 #include "experiments/pipe_setup.hpp"
 
@@ -12,7 +14,7 @@ namespace {
 
 // A dense, hot pipe (many overlaps, fast relative motion) after some steps, so that the list has
 // been rebuilt across the periodic boundary and against the walls.
-TEST(PipeEngine, NeighbourListForcesEqualBruteForce) {
+PipeSpec hot_pipe() {
     PipeSpec s;
     s.geo.width = 0.012;
     s.geo.length = 0.012;
@@ -20,7 +22,13 @@ TEST(PipeEngine, NeighbourListForcesEqualBruteForce) {
     s.phi = 0.6;
     s.agitation = 2.0;
     s.v0 = 3.0;
+    return s;
+}
+
+void expect_list_forces_equal_brute_force(int threads) {
+    const PipeSpec s = hot_pipe();
     auto eng = build_pipe(s);
+    eng.set_threads(threads);
     for (int k = 0; k < 3000; ++k) eng.step();
     ASSERT_GT(eng.list_builds(), 5);
     ASSERT_GT(eng.max_overlap_ratio(), 0.0); // there are contacts
@@ -33,6 +41,47 @@ TEST(PipeEngine, NeighbourListForcesEqualBruteForce) {
     }
     ASSERT_GT(scale, 100.0); // contact accelerations much larger than g
     EXPECT_LT(worst / scale, 1e-12);
+}
+
+TEST(PipeEngine, NeighbourListForcesEqualBruteForce) { expect_list_forces_equal_brute_force(1); }
+TEST(PipeEngine, NeighbourListForcesEqualBruteForceWithThreads) { expect_list_forces_equal_brute_force(2); }
+
+// Determinism: the state and the wall statistics after many steps (list rebuilds, re-sorts,
+// wall impacts) are the same bits for 1, 2 and 3 threads, and when the thread count changes
+// in the middle of a run.
+TEST(PipeEngine, ResultsBitIdenticalForAnyThreadCount) {
+    PipeSpec s;
+    s.geo.wall_spacing = 1.0e-3;
+    s.geo.length = 0.03;
+    s.e_N = 0.8;
+    s.v0 = 2.0;
+    struct Run {
+        std::vector<double> x, y, vx, vy;
+        WallImpactStats wall;
+        long builds;
+    };
+    auto run = [&](int first, int second) {
+        auto eng = build_pipe(s);
+        eng.set_threads(first);
+        eng.advance(3000);
+        eng.set_threads(second);
+        for (int k = 0; k < 3000; ++k) eng.step();
+        return Run{eng.x(), eng.y(), eng.vx(), eng.vy(), eng.wall_stats(), eng.list_builds()};
+    };
+    const Run one = run(1, 1);
+    ASSERT_GT(one.builds, 20);
+    ASSERT_GT(one.wall.completed, 20);
+    for (auto [a, b] : {std::pair{2, 2}, std::pair{3, 3}, std::pair{1, 2}, std::pair{2, 1}}) {
+        const Run other = run(a, b);
+        EXPECT_EQ(other.builds, one.builds) << a << " then " << b << " threads";
+        EXPECT_TRUE(other.x == one.x && other.y == one.y && other.vx == one.vx && other.vy == one.vy)
+            << a << " then " << b << " threads";
+        EXPECT_EQ(other.wall.impacts, one.wall.impacts);
+        EXPECT_EQ(other.wall.completed, one.wall.completed);
+        EXPECT_EQ(other.wall.sum_dvy, one.wall.sum_dvy);
+        EXPECT_EQ(other.wall.sum_vy_in, one.wall.sum_vy_in);
+        EXPECT_EQ(other.wall.sum_vx_in, one.wall.sum_vx_in);
+    }
 }
 
 // Head-on free-free collisions in the middle of the pipe (gravity off), with the contact starting
@@ -58,6 +107,22 @@ double restitution_error(double e_N, double steps_per_contact) {
     }
     return sum / 4;
 }
+
+#if defined(__GNUC__) && defined(__x86_64__)
+// The drift pass gives the same bits four (AVX2), two (SSE2) or one grain at a time.
+TEST(PipeEngine, VectorLanesGiveTheSameBits) {
+    if (!__builtin_cpu_supports("avx2")) GTEST_SKIP() << "no AVX2 on this processor";
+    PipeSpec s = hot_pipe();
+    auto run = [&](bool avx2) {
+        pipe_detail::use_avx2() = avx2;
+        auto eng = build_pipe(s);
+        eng.advance(2000);
+        pipe_detail::use_avx2() = __builtin_cpu_supports("avx2");
+        return std::vector<std::vector<double>>{eng.x(), eng.y(), eng.vx(), eng.vy(), eng.ax(), eng.ay()};
+    };
+    EXPECT_TRUE(run(true) == run(false));
+}
+#endif
 
 TEST(PipeEngine, HeadOnRestitutionMatchesEq4AndConverges) {
     for (double e : {0.5, 0.7, 0.9}) {

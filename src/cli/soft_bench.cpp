@@ -1,0 +1,468 @@
+#include "cli/soft_bench.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <ctime>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <unistd.h>
+#include <vector>
+
+#include "experiments/pipe_setup.hpp"
+
+namespace granrepro {
+
+namespace {
+
+using Engine = PipeEngine<LinearSpringDashpot, CoulombShear>;
+
+// gran/hooke caps the shear force at mu |F_N| of the whole normal force (dashpot included): the
+// magnitude reading of Eq. (2). Whatever reading the experiments use, the comparison with LAMMPS
+// runs this one (PipeSpec names the reading once the experiments choose it).
+template <class Spec>
+void use_magnitude_reading(Spec& s) {
+    if constexpr (requires { s.friction_normal; }) s.friction_normal = FrictionNormal::Magnitude;
+}
+
+// The Fig. 6 pipe of the bench: width 2 cm, wall grains 0.66 mm at 1 mm spacing, k_N = 2000 N/m,
+// e_N = 0.95, mu = 0.5, area fraction 0.55, slow start; `length` sets the number of grains
+// (0.111 m: 1498 free grains).
+PipeSpec bench_spec(double length) {
+    PipeSpec s;
+    s.geo.wall_spacing = 1.0e-3;
+    s.geo.length = std::round(length / s.geo.wall_spacing) * s.geo.wall_spacing;
+    s.e_N = 0.95;
+    use_magnitude_reading(s);
+    return s;
+}
+
+double load_average() {
+    double l[1] = {NAN};
+    return getloadavg(l, 1) == 1 ? l[0] : NAN;
+}
+
+double cpu_now() {
+    timespec t{};
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+    return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
+}
+
+struct Timing {
+    double wall = NAN, cpu = NAN; // [s]
+};
+
+Timing time_advance(Engine& eng, long steps) {
+    const double c0 = cpu_now();
+    const auto t0 = std::chrono::steady_clock::now();
+    eng.advance(steps);
+    Timing t;
+    t.wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    t.cpu = cpu_now() - c0;
+    return t;
+}
+
+// FNV-1a over the bits of the state in id order.
+std::uint64_t state_hash(const Engine& eng) {
+    std::uint64_t h = 1469598103934665603ull;
+    for (const auto* v : {&eng.x(), &eng.y(), &eng.vx(), &eng.vy(), &eng.ax(), &eng.ay()})
+        for (double d : *v) {
+            std::uint64_t b;
+            std::memcpy(&b, &d, sizeof b);
+            h = (h ^ b) * 1099511628211ull;
+        }
+    return h;
+}
+
+double median(std::vector<double> v) {
+    if (v.empty()) return NAN;
+    std::sort(v.begin(), v.end());
+    const std::size_t n = v.size();
+    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+std::string shell_output(const std::string& cmd) {
+    std::string out;
+    if (FILE* f = popen(cmd.c_str(), "r")) {
+        char buf[512];
+        while (std::fgets(buf, sizeof buf, f)) out += buf;
+        pclose(f);
+    }
+    while (!out.empty() && (out.back() == '\n' || out.back() == ' ')) out.pop_back();
+    return out;
+}
+
+// ---- LAMMPS ----------------------------------------------------------------------------------
+
+struct Lammps {
+    std::string lmp;     // the binary, empty if absent
+    std::string mpirun;  // mpirun with its flags, empty if absent
+    std::string version; // first line of its output
+    std::string why_not; // why the comparison is skipped
+};
+
+Lammps find_lammps() {
+    Lammps l;
+    l.lmp = shell_output("for b in lmp lmp_serial lmp_openmpi lmp_mpich lmp_mpi; do command -v $b && break; done 2>/dev/null");
+    if (l.lmp.empty()) {
+        l.why_not = "LAMMPS is not installed (no lmp, lmp_serial, lmp_openmpi on PATH; Debian package lammps)";
+        return l;
+    }
+    l.version = shell_output("echo | '" + l.lmp + "' -log none 2>&1 | head -1");
+    const std::string mpirun = shell_output("command -v mpirun 2>/dev/null");
+    // OpenMPI refuses root without --allow-run-as-root; --oversubscribe lets np exceed its slot count.
+    if (!mpirun.empty()) l.mpirun = mpirun + (geteuid() == 0 ? " --allow-run-as-root" : "") + " --oversubscribe";
+    return l;
+}
+
+// Writes pipe.data (the engine's present state: free grains type 1, wall grains type 2) and
+// in.pipe, the same physics in pair gran/hooke:
+//   F_n = k_n delta - m_eff gamma_n v_n                         = Eq. (1), gamma_n = gamma_N;
+//   F_t = -min(mu |F_n|, m_eff gamma_t |v_t|) v_t / |v_t|       with dampflag 1 and gamma_t = 1e12 1/s
+//         this is mu |F_n| sgn(v_t), Eq. (2) in the magnitude reading, except below
+//         |v_t| = mu |F_n| / (m_eff gamma_t) ~ 1e-9 m/s, where it falls linearly to 0;
+//   fix freeze on the wall grains: zero force, and gran/hooke then uses m_eff = m of the free
+//   grain (infinite wall mass); fix nve on the free grains only (no rotation: omega stays 0, so
+//   v_t has no rolling part); enforce2d; gravity on the free grains; the same dt and skin (LAMMPS
+//   rebuilds when a grain moved skin/2, we when one moved skin/2 relative to the mean: lists
+//   only, no physics). The one difference in the integrator: LAMMPS evaluates the dashpot and
+//   friction at the half-step velocity, we at the predicted full-step velocity (pipe_engine.hpp).
+// dump_every > 0 adds a dump of the free grains (id mass x y vx vy) every dump_every steps.
+void write_lammps_case(const std::filesystem::path& dir, const Engine& eng, const PipeSpec& spec, long steps,
+                       long dump_every) {
+    const LinearSpringDashpot law = pipe_law(spec.k_N, spec.e_N, spec.m_mean);
+    const long n_free = long(eng.size());
+    const long n_row = std::lround(spec.geo.length / spec.geo.wall_spacing);
+    std::ofstream data(dir / "pipe.data");
+    data.precision(17);
+    data << "granrepro pipe\n\n" << n_free + 2 * n_row << " atoms\n2 atom types\n\n"
+         << -2e-3 << " " << spec.geo.width + 2e-3 << " xlo xhi\n0 " << spec.geo.length << " ylo yhi\n"
+         << "-0.5e-3 0.5e-3 zlo zhi\n\nAtoms # sphere\n\n";
+    // LAMMPS reads a data file's density per volume, m = density * 4/3 pi r^3, also in 2d (the
+    // trajectory check below compares the masses it reports with ours).
+    for (long i = 0; i < n_free; ++i) {
+        const std::size_t k = std::size_t(i);
+        const double r = eng.radius()[k];
+        data << i + 1 << " 1 " << 2 * r << " " << eng.mass()[k] / (4.0 / 3.0 * M_PI * r * r * r) << " "
+             << eng.x()[k] << " " << eng.y()[k] << " 0\n";
+    }
+    for (long k = 0; k < 2 * n_row; ++k) {
+        const bool right = k >= n_row;
+        double y = (right ? spec.geo.right_row_shift : 0.0) + double(k % n_row) * spec.geo.wall_spacing;
+        y = std::fmod(y, spec.geo.length);
+        if (y < 0) y += spec.geo.length;
+        data << n_free + k + 1 << " 2 " << 2 * spec.geo.wall_radius << " 1000 " << (right ? spec.geo.width : 0.0)
+             << " " << y << " 0\n";
+    }
+    data << "\nVelocities\n\n";
+    for (long i = 0; i < n_free; ++i)
+        data << i + 1 << " " << eng.vx()[std::size_t(i)] << " " << eng.vy()[std::size_t(i)] << " 0 0 0 0\n";
+    for (long k = 0; k < 2 * n_row; ++k) data << n_free + k + 1 << " 0 0 0 0 0 0\n";
+
+    std::ofstream in(dir / "in.pipe");
+    in.precision(17);
+    in << "units si\ndimension 2\nboundary f p p\natom_style sphere\nread_data pipe.data\n"
+       << "group free type 1\ngroup wall type 2\n"
+       << "pair_style gran/hooke " << law.k_N << " 0 " << law.gamma_N << " 1e12 " << spec.mu << " 1\n"
+       << "pair_coeff * *\n"
+       << "neighbor " << spec.skin << " bin\nneigh_modify delay 0 every 1 check yes exclude type 2 2\n"
+       << "comm_modify vel yes\n"
+       << "fix grav free gravity " << spec.geo.gravity << " vector 0 -1 0\n"
+       << "fix integrate free nve\nfix frz wall freeze\nfix twod all enforce2d\n"
+       << "timestep " << eng.dt() << "\nthermo " << std::max(steps, 1L) << "\n";
+    if (dump_every > 0)
+        in << "dump traj free custom " << dump_every << " traj.dump id mass x y vx vy\n"
+           << "dump_modify traj sort id format float %.17g\n";
+    in << "run " << steps << "\n";
+}
+
+struct LammpsRun {
+    double loop_wall = NAN; // "Loop time" [s]
+    double cpu = NAN;       // loop time x CPU use x tasks [s]
+    long neighbor_builds = -1;
+};
+
+LammpsRun run_lammps(const Lammps& l, const std::filesystem::path& dir, int np) {
+    const std::string exe = (np > 1 ? l.mpirun + " -np " + std::to_string(np) + " " : std::string()) + "'" + l.lmp + "'";
+    const std::string cmd = "cd '" + dir.string() + "' && " + exe + " -in in.pipe -log none > lmp.out 2>&1";
+    const int rc = std::system(cmd.c_str());
+    LammpsRun r;
+    std::ifstream out(dir / "lmp.out");
+    for (std::string line; std::getline(out, line);) {
+        if (line.rfind("Loop time of ", 0) == 0) r.loop_wall = std::atof(line.c_str() + 13);
+        const auto pct = line.find("% CPU use with ");
+        if (pct != std::string::npos) {
+            const double use = std::atof(line.c_str()) / 100.0;
+            const long tasks = std::atol(line.c_str() + pct + 15);
+            r.cpu = r.loop_wall * use * double(tasks);
+        }
+        if (line.rfind("Neighbor list builds = ", 0) == 0) r.neighbor_builds = std::atol(line.c_str() + 23);
+    }
+    if (rc != 0 || !(r.loop_wall > 0)) {
+        std::fprintf(stderr, "granrepro: LAMMPS run failed (%s); input and output kept in %s\n", cmd.c_str(),
+                     dir.c_str());
+        r.loop_wall = NAN;
+    }
+    return r;
+}
+
+struct Frame {
+    long step = 0;
+    std::vector<double> mass, x, y, vx, vy; // by id
+};
+
+std::vector<Frame> read_dump(const std::filesystem::path& file, std::size_t n) {
+    std::vector<Frame> frames;
+    std::ifstream in(file);
+    for (std::string line; std::getline(in, line);) {
+        if (line.rfind("ITEM: TIMESTEP", 0) == 0) {
+            frames.emplace_back();
+            in >> frames.back().step;
+            Frame& f = frames.back();
+            f.mass.assign(n, NAN), f.x.assign(n, NAN), f.y.assign(n, NAN), f.vx.assign(n, NAN), f.vy.assign(n, NAN);
+        } else if (line.rfind("ITEM: ATOMS", 0) == 0 && !frames.empty()) {
+            Frame& f = frames.back();
+            for (std::size_t k = 0; k < n; ++k) {
+                long id;
+                double m, x, y, vx, vy;
+                if (!(in >> id >> m >> x >> y >> vx >> vy) || id < 1 || std::size_t(id) > n) break;
+                const std::size_t i = std::size_t(id - 1);
+                f.mass[i] = m, f.x[i] = x, f.y[i] = y, f.vx[i] = vx, f.vy[i] = vy;
+            }
+        }
+    }
+    return frames;
+}
+
+double kinetic_energy(const std::vector<double>& m, const std::vector<double>& vx, const std::vector<double>& vy) {
+    double e = 0;
+    for (std::size_t i = 0; i < m.size(); ++i) e += 0.5 * m[i] * (vx[i] * vx[i] + vy[i] * vy[i]);
+    return e;
+}
+
+// The same 5000 steps in both codes from the same start: kinetic energy, mean velocity and the
+// grains' positions every 1000 steps; beside them, how far two granrepro runs drift apart when one
+// grain starts 1e-12 m (1e-9 diameters) away, which is what chaos alone does to such a comparison.
+void trajectory_check(const Lammps& l, const std::filesystem::path& dir, const PipeSpec& spec) {
+    const long steps = 5000, every = 1000;
+    Engine eng = build_pipe(spec);
+    write_lammps_case(dir, eng, spec, steps, every);
+    const LammpsRun run = run_lammps(l, dir, 1);
+    if (std::isnan(run.loop_wall)) return;
+    const std::size_t n = eng.size();
+    const std::vector<Frame> frames = read_dump(dir / "traj.dump", n);
+    const std::vector<double> mass = eng.mass();
+    // The twin: the same grains, the first one displaced by 1e-12 m along x.
+    Engine twin(eng.normal_law(), eng.shear_law(), spec.geo, eng.dt(), spec.skin);
+    for (std::size_t i = 0; i < n; ++i)
+        twin.add_grain(eng.x()[i] + (i == 0 ? 1e-12 : 0.0), eng.y()[i], eng.vx()[i], eng.vy()[i], eng.radius()[i],
+                       eng.mass()[i]);
+    twin.finalize();
+    double mass_dev = 0;
+    if (!frames.empty())
+        for (std::size_t i = 0; i < n; ++i) mass_dev = std::max(mass_dev, std::abs(frames[0].mass[i] / mass[i] - 1));
+    std::printf("  Trajectories: 5000 steps from the same start (LAMMPS masses = ours to %.1e); 'twin' is granrepro\n"
+                "  with one grain moved by 1e-12 m at the start (chaos alone):\n", mass_dev);
+    std::printf("    %6s %13s %13s %11s %11s %11s %11s %17s\n", "step", "KE ours [J]", "KE LAMMPS", "LAMMPS/ours",
+                "twin/ours", "<v_y> ours", "<v_y> LAMMPS", "rms |dr| / d");
+    std::printf("    %6s %13s %13s %11s %11s %11s %11s %17s\n", "", "", "", "- 1", "- 1", "[m/s]", "[m/s]", "LAMMPS    twin");
+    auto rms_dr = [&](const std::vector<double>& x, const std::vector<double>& y) {
+        double sum2 = 0;
+        for (std::size_t i = 0; i < n; ++i) {
+            double dy = eng.y()[i] - y[i];
+            dy -= spec.geo.length * std::round(dy / spec.geo.length);
+            sum2 += (eng.x()[i] - x[i]) * (eng.x()[i] - x[i]) + dy * dy;
+        }
+        return std::sqrt(sum2 / double(n)) / spec.d_mean;
+    };
+    for (const Frame& f : frames) {
+        if (f.step == 0) continue;
+        eng.advance(f.step - eng.steps());
+        twin.advance(f.step - twin.steps());
+        const double ke_us = kinetic_energy(mass, eng.vx(), eng.vy()), ke_l = kinetic_energy(mass, f.vx, f.vy);
+        const double ke_twin = kinetic_energy(mass, twin.vx(), twin.vy());
+        double vy_us = 0, vy_l = 0;
+        for (std::size_t i = 0; i < n; ++i) {
+            vy_us += eng.vy()[i];
+            vy_l += f.vy[i];
+        }
+        std::printf("    %6ld %13.6e %13.6e %11.2e %11.2e %11.5f %11.5f %8.1e %8.1e\n", f.step, ke_us, ke_l,
+                    ke_l / ke_us - 1, ke_twin / ke_us - 1, vy_us / double(n), vy_l / double(n), rms_dr(f.x, f.y),
+                    rms_dr(twin.x(), twin.y()));
+    }
+}
+
+// ---- the comparison ------------------------------------------------------------------------
+
+void comparison(const BenchOptions& opt) {
+    const long steps = opt.steps > 0 ? opt.steps : 400000;
+    const int threads = std::max(1, opt.threads);
+    const PipeSpec spec = bench_spec(0.111);
+    const Engine probe = build_pipe(spec);
+    const std::size_t n = probe.size();
+    std::printf("bench soft: the Schäfer-Wolf Fig. 6 pipe, %zu free grains (width %.0f mm, length %.0f mm, k_N %g N/m, "
+                "e_N %g, mu %g, slow start), dt = %.4g s, skin %g mm\n",
+                n, spec.geo.width * 1e3, spec.geo.length * 1e3, spec.k_N, spec.e_N, spec.mu, probe.dt(), spec.skin * 1e3);
+    std::printf("  Coulomb friction in the magnitude reading of Eq. (2), mu |F_N| with the dashpot (gran/hooke's cap);\n"
+                "  the comparison keeps this physics whatever reading the experiments use.\n");
+    std::printf("  Window: steps 0-%ld (t = 0-%.3f s) from the same start in both codes; medians of %d interleaved rounds.\n",
+                steps, double(steps) * probe.dt(), opt.repeats);
+
+    const Lammps l = find_lammps();
+    const auto dir = std::filesystem::temp_directory_path() / ("granrepro-bench-soft-" + std::to_string(getpid()));
+    if (l.lmp.empty()) {
+        std::printf("  LAMMPS: skipped: %s\n", l.why_not.c_str());
+    } else {
+        std::filesystem::create_directories(dir);
+        std::printf("  LAMMPS: %s (%s)%s\n", l.version.c_str(), l.lmp.c_str(),
+                    l.mpirun.empty() ? "; no mpirun, so no multi-core comparison" : "");
+        trajectory_check(l, dir, spec);
+        write_lammps_case(dir, probe, spec, steps, 0);
+    }
+    const bool multi_lmp = !l.lmp.empty() && !l.mpirun.empty() && threads > 1;
+
+    std::vector<double> us1_cpu, us1_wall, usT_cpu, usT_wall, l1_cpu, l1_wall, lT_cpu, lT_wall;
+    std::uint64_t hash1 = 0, hashT = 0;
+    bool identical = true;
+    long builds = 0, lmp_builds = -1;
+    const double load_before = load_average();
+    for (int r = 0; r < opt.repeats; ++r) {
+        {
+            Engine eng = build_pipe(spec);
+            const Timing t = time_advance(eng, steps);
+            us1_cpu.push_back(t.cpu);
+            us1_wall.push_back(t.wall);
+            hash1 = state_hash(eng);
+            builds = eng.list_builds();
+        }
+        if (!l.lmp.empty()) {
+            const LammpsRun lr = run_lammps(l, dir, 1);
+            l1_cpu.push_back(lr.cpu);
+            l1_wall.push_back(lr.loop_wall);
+            lmp_builds = lr.neighbor_builds;
+        }
+        if (threads > 1) {
+            Engine eng = build_pipe(spec);
+            eng.set_threads(threads);
+            const Timing t = time_advance(eng, steps);
+            usT_cpu.push_back(t.cpu);
+            usT_wall.push_back(t.wall);
+            hashT = state_hash(eng);
+            identical = identical && hashT == hash1;
+        }
+        if (multi_lmp) {
+            const LammpsRun lr = run_lammps(l, dir, threads);
+            lT_cpu.push_back(lr.cpu);
+            lT_wall.push_back(lr.loop_wall);
+        }
+    }
+    const double load_after = load_average();
+    if (!l.lmp.empty() && !std::getenv("GRANREPRO_KEEP_LAMMPS")) std::filesystem::remove_all(dir);
+    else if (!l.lmp.empty()) std::printf("  LAMMPS files kept in %s\n", dir.c_str());
+
+    const double work = double(n) * double(steps);
+    auto row = [&](const char* what, const std::vector<double>& ours, const std::vector<double>& theirs) {
+        const double a = work / median(ours), b = work / median(theirs);
+        if (theirs.empty()) std::printf("  %-34s %12.4g %12s %8s\n", what, a, "-", "-");
+        else std::printf("  %-34s %12.4g %12.4g %8.2f\n", what, a, b, a / b);
+    };
+    std::printf("  Load average (1 min) %.2f before, %.2f after. List builds in the window: ours %ld, LAMMPS %ld.\n",
+                load_before, load_after, builds, lmp_builds);
+    std::printf("  %-34s %12s %12s %8s\n", "free-grain steps per second", "granrepro", "LAMMPS", "ratio");
+    row("1 core, per CPU second", us1_cpu, l1_cpu);
+    row("1 core, per wall second", us1_wall, l1_wall);
+    if (threads > 1) {
+        char what[64];
+        std::snprintf(what, sizeof what, "%d threads / np %d, per wall second", threads, threads);
+        row(what, usT_wall, lT_wall);
+        std::snprintf(what, sizeof what, "%d threads / np %d, per CPU second", threads, threads);
+        row(what, usT_cpu, lT_cpu);
+        std::printf("  granrepro with %d threads ends in the state of 1 thread, bit for bit: %s\n", threads,
+                    identical ? "yes" : "NO");
+    }
+}
+
+// ---- cost against size --------------------------------------------------------------------
+
+// Size of the level-`level` data (or unified) cache of CPU 0 from sysfs [bytes], 0 if unknown.
+// (sysconf's _SC_LEVEL3_CACHE_SIZE reports 320 MiB on this VM, sysfs and lscpu 32 MiB.)
+long cache_bytes(int level) {
+    for (int k = 0; k < 8; ++k) {
+        const std::string dir = "/sys/devices/system/cpu/cpu0/cache/index" + std::to_string(k) + "/";
+        std::ifstream lv(dir + "level"), ty(dir + "type"), sz(dir + "size");
+        int l = 0;
+        std::string type, size;
+        if (!(lv >> l) || !(ty >> type) || !(sz >> size)) break;
+        if (l != level || type == "Instruction") continue;
+        long v = std::atol(size.c_str());
+        if (size.back() == 'K') v *= 1024;
+        if (size.back() == 'M') v *= 1024 * 1024;
+        return v;
+    }
+    return 0;
+}
+
+void sizes(const BenchOptions& opt) {
+    const int threads = std::max(1, opt.threads);
+    const long warm = 1000, timed = opt.steps > 0 ? opt.steps : 4000;
+    std::printf("bench soft --sizes: the bench pipe (width 20 mm, k_N 2000 N/m, e_N 0.95, area fraction 0.55) at "
+                "several lengths;\n  steps %ld-%ld after the slow start (repeated for small pipes to >= 0.5 s), medians "
+                "of %d runs. Caches: L2 %ld KiB, L3 %ld MiB.\n",
+                warm, warm + timed, opt.repeats, cache_bytes(2) / 1024, cache_bytes(3) / 1024 / 1024);
+    const double load_before = load_average();
+    std::printf("  %8s %8s %14s %10s %14s %10s %10s %10s\n", "grains", "length", "1 thread", "ns/grain", "threads",
+                "speed-up", "bytes/", "builds/");
+    std::printf("  %8s %8s %14s %10s %14s %10s %10s %10s\n", "", "[m]", "[g-steps/cpu-s]", "-step", "[g-steps/s]", "",
+                "grain", "1000 steps");
+    for (const long target : {500L, 1500L, 5000L, 20000L, 100000L}) {
+        // Area fraction 0.55 of (width - d_wall) x length with <d^2> = d_mean^2 (1 + p^2/3).
+        const PipeSpec probe_spec = bench_spec(1.0);
+        const double per_metre = probe_spec.phi * (probe_spec.geo.width - 2 * probe_spec.geo.wall_radius) /
+                                 (M_PI / 4 * probe_spec.d_mean * probe_spec.d_mean *
+                                  (1 + probe_spec.polydispersity * probe_spec.polydispersity / 3));
+        const PipeSpec spec = bench_spec(double(target) / per_metre);
+        std::vector<double> r1, rT;
+        double bytes = 0, builds = 0;
+        std::size_t n = 0;
+        for (int rep = 0; rep < opt.repeats; ++rep) {
+            for (int k = 0; k < (threads > 1 ? 2 : 1); ++k) {
+                const int t = k == 0 ? 1 : threads;
+                double cpu = 0, wall = 0, work = 0;
+                while ((t == 1 ? cpu : wall) < 0.5) {
+                    Engine eng = build_pipe(spec);
+                    eng.set_threads(t);
+                    eng.advance(warm);
+                    const long b0 = eng.list_builds();
+                    const Timing tm = time_advance(eng, timed);
+                    cpu += tm.cpu;
+                    wall += tm.wall;
+                    n = eng.size();
+                    work += double(n) * double(timed);
+                    bytes = eng.bytes_per_grain();
+                    builds = double(eng.list_builds() - b0) * 1000.0 / double(timed);
+                }
+                (t == 1 ? r1 : rT).push_back(work / (t == 1 ? cpu : wall));
+            }
+        }
+        const double a = median(r1), b = median(rT);
+        std::printf("  %8zu %8.3f %14.4g %10.2f %14.4g %10.2f %10.0f %10.1f\n", n, spec.geo.length, a, 1e9 / a, b, b / a,
+                    bytes, builds);
+    }
+    std::printf("  (threads = %d, per wall second; 1 thread per CPU second.) Load average (1 min) %.2f before, %.2f after.\n",
+                threads, load_before, load_average());
+}
+
+} // namespace
+
+void bench_soft_report(const BenchOptions& opt) {
+    if (opt.sizes) sizes(opt);
+    else comparison(opt);
+}
+
+} // namespace granrepro
