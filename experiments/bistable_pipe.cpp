@@ -283,22 +283,21 @@ ImpactMean impact_mean(const PipeSpec& base, double k, double e, double vx, doub
     return mean;
 }
 
-// The paper's construction (text below Eq. 9): on the impact curve Δv_y(v_y^i) of the wall at
-// v_x^i = σ_vx (the paper's association), the speed where Δv_y = g/ṅ with positive slope (a
-// stable intersection) nearest to the measured mean speed; NaN if there is none in 0.1-3 times it.
+// The paper's construction (text below Eq. 9): on the impact curve Δv_y(v_y^i) of the wall, the
+// speed where Δv_y = g/ṅ with positive slope (a stable intersection) nearest to the measured mean
+// speed; NaN if there is none in 0.1-3 times it. Done at two v_x^i: σ_vx (the paper's association)
+// and the measured mean |v_x| of the wall impacts (grains reaching the wall are the faster ones).
+// reach = max Δv_y(v_y^i; σ_vx) / (g/ṅ) over the grid: below 1 the paper's association cannot give
+// an intersection at all.
 struct Construction {
-    double v = NAN;        // predicted steady speed [m/s]
-    double slope = NAN;    // d Δv_y / d v at the measured speed [s] (> 0: stable, Eq. 9 argument)
+    double v = NAN;        // predicted steady speed at v_x^i = σ_vx [m/s]
+    double v_vxin = NAN;   // predicted steady speed at v_x^i = measured mean impact |v_x| [m/s]
+    double reach = NAN;    // max over the grid of Δv_y(σ_vx) / (g/ṅ) [1]
+    double slope = NAN;    // d Δv_y / d v at the measured speed, v_x^i = σ_vx [s] (> 0: stable, Eq. 9 argument)
     double contacts = NAN; // wall grains touched per impact at the measured impact velocities (Fig. 5)
 };
-Construction construct(const PipeSpec& base, double k, double e, const RunResult& rr) {
-    Construction c;
-    if (!(rr.outcome == kSteady && rr.ndot > 0 && rr.vx_in > 0 && rr.sigma_vx > 0)) return c;
-    const double v_meas = -rr.v_mean, need = base.geo.gravity / rr.ndot;
-    const auto grid = log_space(0.1 * v_meas, 3 * v_meas, 41);
-    std::vector<double> dv(grid.size());
-    for (std::size_t i = 0; i < grid.size(); ++i) dv[i] = impact_mean(base, k, e, rr.sigma_vx, grid[i]).dvy;
-    c.contacts = impact_mean(base, k, e, rr.vx_in, rr.vy_in).contacts;
+// The upward crossing of need nearest to v_meas on a log grid, NaN if none.
+double stable_crossing(const std::vector<double>& grid, const std::vector<double>& dv, double need, double v_meas) {
     double best = INFINITY;
     for (std::size_t i = 1; i < grid.size(); ++i) {
         const double a = dv[i - 1] - need, b = dv[i] - need;
@@ -306,7 +305,22 @@ Construction construct(const PipeSpec& base, double k, double e, const RunResult
         const double x = std::exp(std::log(grid[i - 1]) + a / (a - b) * (std::log(grid[i]) - std::log(grid[i - 1])));
         if (std::abs(std::log(x / v_meas)) < std::abs(std::log(best / v_meas))) best = x;
     }
-    if (std::isfinite(best)) c.v = best;
+    return std::isfinite(best) ? best : NAN;
+}
+Construction construct(const PipeSpec& base, double k, double e, const RunResult& rr) {
+    Construction c;
+    if (!(rr.outcome == kSteady && rr.ndot > 0 && rr.vx_in > 0 && rr.sigma_vx > 0)) return c;
+    const double v_meas = -rr.v_mean, need = base.geo.gravity / rr.ndot;
+    const auto grid = log_space(0.1 * v_meas, 3 * v_meas, 41);
+    std::vector<double> dv(grid.size()), dv_in(grid.size());
+    for (std::size_t i = 0; i < grid.size(); ++i) {
+        dv[i] = impact_mean(base, k, e, rr.sigma_vx, grid[i]).dvy;
+        dv_in[i] = impact_mean(base, k, e, rr.vx_in, grid[i]).dvy;
+    }
+    c.contacts = impact_mean(base, k, e, rr.vx_in, rr.vy_in).contacts;
+    c.v = stable_crossing(grid, dv, need, v_meas);
+    c.v_vxin = stable_crossing(grid, dv_in, need, v_meas);
+    c.reach = *std::max_element(dv.begin(), dv.end()) / need;
     std::size_t at = 0; // grid[at] <= v_meas < grid[at + 1]
     while (at + 2 < grid.size() && grid[at + 1] <= v_meas) ++at;
     c.slope = (dv[at + 1] - dv[at]) / (grid[at + 1] - grid[at]);
@@ -373,7 +387,7 @@ void report_k(Result& r, const ParameterSet& p, const PipeSpec& base, double k, 
     char kt[32];
     std::snprintf(kt, sizeof kt, "k%g", k);
     Table& t = r.table(std::string("steady_") + kt, "steady-state mean velocity against e_N (NaN: no steady state)");
-    std::vector<double> cols[2][12];
+    std::vector<double> cols[2][14];
     double e_lowest_slow = NAN;
     int fast_steady = 0;
     for (std::size_t ei = 0; ei < es.size(); ++ei) {
@@ -395,6 +409,8 @@ void report_k(Result& r, const ParameterSet& p, const PipeSpec& base, double k, 
             col[9].push_back(c.slope);
             col[10].push_back(c.contacts);
             col[11].push_back(ok ? rr.vy_in : NAN);
+            col[12].push_back(c.v_vxin);
+            col[13].push_back(c.reach);
             if (ok) {
                 ++steady_count;
                 worst_balance = std::max(worst_balance, std::abs(bal - 1));
@@ -409,11 +425,12 @@ void report_k(Result& r, const ParameterSet& p, const PipeSpec& base, double k, 
         fast_steady += results[(ki * es.size() + ei) * 2 + 1].outcome == kSteady;
     }
     t.add("e_N", "1").values = es;
-    const char* names[12] = {"v", "v_last", "outcome", "t_end", "eq9_balance", "sigma_vx", "ndot", "dvy",
-                             "v_construction", "impact_slope", "impact_contacts", "vy_impact"};
-    const char* units[12] = {"m/s", "m/s", "1", "s", "1", "m/s", "1/s", "m/s", "m/s", "s", "1", "m/s"};
+    const char* names[14] = {"v", "v_last", "outcome", "t_end", "eq9_balance", "sigma_vx", "ndot", "dvy",
+                             "v_construction", "impact_slope", "impact_contacts", "vy_impact",
+                             "v_construction_vxin", "construction_reach"};
+    const char* units[14] = {"m/s", "m/s", "1", "s", "1", "m/s", "1/s", "m/s", "m/s", "s", "1", "m/s", "m/s", "1"};
     for (int f = 0; f < 2; ++f)
-        for (int c = 0; c < 12; ++c)
+        for (int c = 0; c < 14; ++c)
             t.add(std::string(names[c]) + (f ? "_fast" : "_slow"), units[c]).values = cols[f][c];
     r.scalar(std::string("slow_branch_lowest_eN_") + kt, e_lowest_slow, "1",
              "smallest e_N whose slow start reached a steady state in the normal regime (below v_crit)");
@@ -444,14 +461,16 @@ void report_k(Result& r, const ParameterSet& p, const PipeSpec& base, double k, 
     // says the fast branch is the emergency brake (>= 2 wall grains per impact), the slow one the
     // normal regime. And the paper's construction against the measured speed, per branch.
     for (int b = 0; b < 2; ++b) {
-        double contacts = 0, ratio = 0;
-        int nc = 0, nr = 0;
+        double contacts = 0, ratio = 0, ratio_in = 0, reach = 0;
+        int nc = 0, nr = 0, nr_in = 0, nreach = 0;
         for (int f = 0; f < 2; ++f)
             for (std::size_t ei = 0; ei < es.size(); ++ei) {
                 const double v = cols[f][0][ei];
                 if (std::isnan(v) || (v > v_crit) != (b == 1)) continue;
                 if (std::isfinite(cols[f][10][ei])) { contacts += cols[f][10][ei]; ++nc; }
                 if (std::isfinite(cols[f][8][ei])) { ratio += std::log(cols[f][8][ei] / v); ++nr; }
+                if (std::isfinite(cols[f][12][ei])) { ratio_in += std::log(cols[f][12][ei] / v); ++nr_in; }
+                if (std::isfinite(cols[f][13][ei])) { reach += std::log(cols[f][13][ei]); ++nreach; }
             }
         const std::string name = b ? "fast" : "slow";
         if (b == 1) {
@@ -473,7 +492,16 @@ void report_k(Result& r, const ParameterSet& p, const PipeSpec& base, double k, 
         r.scalar(name + "_branch_contacts_" + kt, nc ? contacts / nc : NAN, "1",
                  "mean wall grains touched per impact at the measured impact velocities, " + name + " branch");
         r.scalar(name + "_branch_construction_ratio_" + kt, nr ? std::exp(ratio / nr) : NAN, "1",
-                 "geometric mean of the construction's speed over the measured one, " + name + " branch");
+                 "geometric mean of the construction's speed (v_x^i = σ_vx) over the measured one, " + name +
+                     " branch; NaN if no state has a stable intersection");
+        r.scalar(name + "_branch_construction_found_" + kt, nc ? double(nr) / nc : NAN, "1",
+                 "fraction of the " + name + " branch's states for which the construction (v_x^i = σ_vx) finds a "
+                 "stable intersection within 0.1-3 times the measured speed");
+        r.scalar(name + "_branch_construction_ratio_vxin_" + kt, nr_in ? std::exp(ratio_in / nr_in) : NAN, "1",
+                 "the same with v_x^i = the measured mean |v_x| of the wall impacts, " + name + " branch");
+        r.scalar(name + "_branch_construction_reach_" + kt, nreach ? std::exp(reach / nreach) : NAN, "1",
+                 "geometric mean over the states of max Δv_y(v_y^i; v_x^i = σ_vx) / (g/ṅ): below 1 the paper's "
+                 "association gives no intersection, " + name + " branch");
     }
     r.scalar(std::string("bistable_eN_count_") + kt, bistable, "1",
              "e_N > 0.85 of the grid at which a slow (below v_crit) and a fast (above) steady state coexist");
