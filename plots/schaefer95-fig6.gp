@@ -2,12 +2,15 @@
 # k_N, from slow starts (filled symbols) and fast starts (open symbols, shifted right by 0.006 in
 # e_N so that coinciding states stay visible). A run that reached no steady state within its budget
 # is drawn as an arrow pointing up from its last speed (outcome 1: free fall, 2: still drifting).
+# Lines join a start's states within one regime (normal or emergency brake) only.
 # The speed axis is logarithmic: the slow and fast branches differ by up to a factor 100.
 # Variables set by granrepro: datadir, outbase.
 set datafile separator "\t"
 set datafile missing "NaN"
 files = system("ls ".datadir."/steady_k*.tsv 2>/dev/null | sort -t k -k3 -g")
 kname(i) = system("basename ".word(files, i)." .tsv | sed 's/steady_k//'")
+# A start's steady speed if its regime is em (0 normal, 1 emergency brake), else NaN.
+regv(s, em) = (column("v_".s) == column("v_".s) && (column("impact_contacts_".s) >= 2 ? 1 : 0) == em) ? column("v_".s) : NaN
 colors = "#0072B2 #D55E00 #009E73"
 filled = "7 5 9"
 open = "6 4 8"
@@ -22,9 +25,14 @@ do for [i=1:words(files)] {
       (s eq "slow") ? "1.3" : "1.5", (s eq "slow") ? "1" : "2", word(colors, i))
     # Every series has its legend entry, whether or not it has a steady state to draw.
     cmd = cmd.sprintf(", NaN %s title 'k_N = %s N/m, %s start'", style, kname(i), s)
-    stats f using (column("v_".s) == column("v_".s) ? 1 : 0) nooutput
-    if (STATS_sum > 0) {
-      cmd = cmd.sprintf(", '%s' using ($1 + %s):(column('v_%s')) %s notitle", f, shift, s, style)
+    # The line joins states of one regime only (Fig. 5's criterion: fewer than two wall grains
+    # per impact is the normal regime, two or more the emergency brake), so a start that lands on
+    # the other branch at the next e_N is not drawn as a line through the gap between the branches.
+    do for [em=0:1] {
+      stats f using (regv(s, em) == regv(s, em) ? 1 : 0) nooutput
+      if (STATS_sum > 0) {
+        cmd = cmd.sprintf(", '%s' using ($1 + %s):(regv('%s', %d)) %s notitle", f, shift, s, em, style)
+      }
     }
     stats f using (column("outcome_".s) > 0 ? 1 : 0) nooutput
     if (STATS_sum > 0) {
@@ -35,8 +43,8 @@ do for [i=1:words(files)] {
 }
 cmd = cmd.", NaN with vectors head filled lw 1.5 lc rgb 'black' title 'no steady state: arrow up from its last speed'"
 do for [fmt in "png pdf"] {
-  if (fmt eq "png") { set terminal pngcairo size 1000,620 enhanced font "Sans,11" }
-  else { set terminal pdfcairo size 7in,4.3in enhanced font "Sans,10" }
+  if (fmt eq "png") { set terminal pngcairo size 900,760 enhanced font "Sans,11" }
+  else { set terminal pdfcairo size 6.3in,5.3in enhanced font "Sans,10" }
   set output outbase.'.'.fmt
   set xlabel "e_N (free grain on a wall grain)"
   set ylabel "mean velocity  [m/s]"
@@ -45,8 +53,8 @@ do for [fmt in "png pdf"] {
   set logscale y
   set format y "%g"
   set xrange [0.45:1.02]
-  set yrange [0.3:400]
-  set key outside right top box Left reverse
+  set yrange [0.3:800]
+  set key below box Left reverse maxrows 4
   eval cmd
   unset output
 }
