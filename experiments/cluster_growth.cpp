@@ -37,6 +37,7 @@
 #include "harness/experiment.hpp"
 #include "harness/progress.hpp"
 #include "harness/run_checkpoint.hpp"
+#include "harness/run_log.hpp"
 #include "io/ed_state_file.hpp"
 #include "observables/collision_rate_fit.hpp"
 #include "observables/rate_histogram.hpp"
@@ -332,9 +333,10 @@ RunOutcome run_tced(const RunContext& ctx, const EquilibratedGas* gas, bool tc_b
         if (t > t_stop * (1 + 1e-12)) break;
         try {
             eng.run_until(t, obs);
+            if (progress) progress->engine_time(-1, t, t_stop);
         } catch (const std::runtime_error& e) {
             out.error = e.what(); // the collapse guard; keep what was measured
-            std::fprintf(stderr, "cluster-growth: %s\n", out.error.c_str());
+            warn("cluster-growth: " + out.error);
             break;
         }
         const EdKineticEnergy k = eng.kinetic_energy();

@@ -238,6 +238,7 @@ void observe(const ParameterSet& p, const Setup& s, Engine& eng, Trace& tr,
     for (std::size_t i = next; i < times.size(); ++i) {
         const double t = times[i];
         eng.run_until(s.t0_abs + t, obs);
+        report_engine_time(t, times.back());
         const auto k = kinetic(eng);
         const auto a2 = sonine_a2(eng.velocities());
         tr.t.push_back(t);

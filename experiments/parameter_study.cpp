@@ -27,6 +27,7 @@
 #include "harness/experiment.hpp"
 #include "harness/parallel_sweep.hpp"
 #include "harness/progress.hpp"
+#include "harness/run_log.hpp"
 #include "harness/sweep_checkpoint.hpp"
 
 namespace granrepro::experiments {
@@ -279,7 +280,7 @@ Result run(const RunContext& ctx) {
             events += tr.events;
             cpu += tr.wall_seconds;
             failed += tr.error.empty() ? 0 : 1;
-            if (!tr.error.empty()) std::fprintf(stderr, "parameter-study: %s\n", tr.error.c_str());
+            if (!tr.error.empty()) warn("parameter-study: " + tr.error);
         }
     res.scalar("events_per_second", events / cpu, "1/s", "ED events (collisions, cell crossings, stale) per second of one thread");
     res.scalar("runs_stopped_by_engine", failed, "1", "runs the collapse guard stopped before cn_end");

@@ -345,6 +345,7 @@ SeedRun run_seed(const ParameterSet& p, const Geometry& G, std::uint64_t seed, l
         const double t = double(f) * fdt;
         std::fill(wall_jy.begin(), wall_jy.end(), 0.0);
         eng.run_until(t, obs);
+        report_engine_time(t, t_end);
         const std::vector<double> rate = counter.rates(t, fdt);
         const std::vector<Vec2> r = eng.positions();
         const std::vector<Vec2> v = eng.velocities();

@@ -6,7 +6,7 @@ f = datadir.'/impact_parameter_ed.tsv'
 w = datadir.'/impact_parameter_windows.tsv'
 header = system("head -1 ".f)
 ncol = words(header)
-wlabel(k) = system(sprintf("awk -F'\t' 'NR==%d{printf \"%%g s ≤ t < %%g s\", $1, $2}' ", k+1).w)
+wlabel(k) = system(sprintf("awk -F'\t' '/^#/{u++; next} (NR-u)==%d{printf \"%%g s ≤ t < %%g s\", $1, $2}' ", k+1).w)
 colors = "#0072B2 #D55E00 #009E73 #CC79A7 #E69F00 #56B4E9 #000000"
 do for [fmt in "png pdf"] {
   if (fmt eq "png") { set terminal pngcairo size 800,600 enhanced font "Sans,11" }

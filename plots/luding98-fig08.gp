@@ -6,7 +6,7 @@
 set datafile separator "\t"
 set datafile missing "NaN"
 summary = datadir.'/fig8_summary.tsv'
-rlist = system("awk -F'\t' 'NR>1{printf \"%s \", $1}' ".summary)
+rlist = system("awk -F'\t' '/^#/{u++; next} (NR-u)>1{printf \"%s \", $1}' ".summary)
 n = words(rlist)
 tc = "1e-06"
 # Okabe-Ito: colour-blind safe

@@ -5,7 +5,7 @@
 set datafile separator "\t"
 set datafile missing "NaN"
 summary = datadir.'/fig9_summary.tsv'
-tlist = system("awk -F'\t' 'NR>1{printf \"%s \", $1}' ".summary)
+tlist = system("awk -F'\t' '/^#/{u++; next} (NR-u)>1{printf \"%s \", $1}' ".summary)
 n = words(tlist)
 # Five t_c in distinct hues (no two oranges) and dash types, so that every curve can be told apart
 # in print and by colour-blind readers.

@@ -5,12 +5,12 @@
 # Variables set by granrepro: datadir, outbase.
 set datafile separator "\t"
 sel = datadir.'/fig11_selection.tsv'
-n = int(system("awk 'END{print NR-1}' ".sel))
-tt(k) = system(sprintf("awk -F'\t' 'NR==%d{printf \"%%.4g\", $1}' ", k+1).sel)
-cc(k) = system(sprintf("awk -F'\t' 'NR==%d{printf \"%%.0f\", $2}' ", k+1).sel)
-lo = real(system("awk -F'\t' 'NR==2{print $3}' ".sel))
-hi = real(system("awk -F'\t' 'NR==2{print $4}' ".sel))
-L = real(system("awk -F'\t' 'NR>1{if($1>m)m=$1; if($2>m)m=$2}END{print m}' ".datadir.'/snapshot_0.tsv'))
+n = int(system("awk '/^#/{u++; next} END{print (NR-u)-1}' ".sel))
+tt(k) = system(sprintf("awk -F'\t' '/^#/{u++; next} (NR-u)==%d{printf \"%%.4g\", $1}' ", k+1).sel)
+cc(k) = system(sprintf("awk -F'\t' '/^#/{u++; next} (NR-u)==%d{printf \"%%.0f\", $2}' ", k+1).sel)
+lo = real(system("awk -F'\t' '/^#/{u++; next} (NR-u)==2{print $3}' ".sel))
+hi = real(system("awk -F'\t' '/^#/{u++; next} (NR-u)==2{print $4}' ".sel))
+L = real(system("awk -F'\t' '/^#/{u++; next} (NR-u)>1{if($1>m)m=$1; if($2>m)m=$2}END{print m}' ".datadir.'/snapshot_0.tsv'))
 L = ceil(L)
 nc = (n+1)/2
 set palette defined (0 '#440154', 1 '#482878', 2 '#3E4989', 3 '#31688E', 4 '#26828E', 5 '#1F9E89', 6 '#35B779', 7 '#6DCD59', 8 '#B4DE2C', 9 '#FDE725')

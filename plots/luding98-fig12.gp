@@ -8,9 +8,9 @@
 set datafile separator "\t"
 set datafile missing "NaN"
 sel = datadir.'/fig12_selection.tsv'
-n = int(system("awk 'END{print NR-1}' ".sel))
-cc(k) = system(sprintf("awk -F'\t' 'NR==%d{printf \"%%.0f\", $2}' ", k+2).sel)
-tt(k) = system(sprintf("awk -F'\t' 'NR==%d{printf \"%%.3g\", $3}' ", k+2).sel)
+n = int(system("awk '/^#/{u++; next} END{print (NR-u)-1}' ".sel))
+cc(k) = system(sprintf("awk -F'\t' '/^#/{u++; next} (NR-u)==%d{printf \"%%.0f\", $2}' ", k+2).sel)
+tt(k) = system(sprintf("awk -F'\t' '/^#/{u++; next} (NR-u)==%d{printf \"%%.3g\", $3}' ", k+2).sel)
 lab(k) = sprintf("C/N = %s (t = %s s)", cc(k), tt(k))
 f(k) = datadir.'/pnc_'.k.'.tsv'
 colors = "#0072B2 #D55E00 #009E73 #CC79A7 #E69F00 #56B4E9 #000000"

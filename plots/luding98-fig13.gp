@@ -28,10 +28,10 @@ do for [fmt in "png pdf"] {
     tt = substr(f, strstrt(f, "snapshot_t")+10, strstrt(f, ".tsv")-1)
     cf = datadir.'/crack_t'.tt.'.tsv'
     # this snapshot's marks (row k of the marks table)
-    px = real(system(sprintf("awk -F'\\t' 'NR==%d {print $2}' %s", k+1, mk)))
-    py = real(system(sprintf("awk -F'\\t' 'NR==%d {print $3}' %s", k+1, mk)))
-    op = real(system(sprintf("awk -F'\\t' 'NR==%d {print $5}' %s", k+1, mk)))
-    vis = int(real(system(sprintf("awk -F'\\t' 'NR==%d {print $6}' %s", k+1, mk))))
+    px = real(system(sprintf("awk -F'\\t' '/^#/{u++; next} (NR-u)==%d {print $2}' %s", k+1, mk)))
+    py = real(system(sprintf("awk -F'\\t' '/^#/{u++; next} (NR-u)==%d {print $3}' %s", k+1, mk)))
+    op = real(system(sprintf("awk -F'\\t' '/^#/{u++; next} (NR-u)==%d {print $5}' %s", k+1, mk)))
+    vis = int(real(system(sprintf("awk -F'\\t' '/^#/{u++; next} (NR-u)==%d {print $6}' %s", k+1, mk))))
     stats f using 2 skip 1 nooutput
     set yrange [STATS_min-2:STATS_min+84]
     unset arrow

@@ -12,7 +12,7 @@ files = system("ls ".datadir."/pnc_t*.tsv")
 n = words(files)
 fits = datadir.'/fits.tsv'
 pt = datadir.'/fits_per_time.tsv'
-col(file, row, c) = real(system(sprintf("awk -F'\\t' 'NR==%d{print $%d}' %s", row, c, file)))
+col(file, row, c) = real(system(sprintf("awk -F'\\t' '/^#/{u++; next} (NR-u)==%d{print $%d}' %s", row, c, file)))
 A = col(fits, 2, 1)
 B = col(fits, 2, 5)
 ns = int(col(fits, 2, 9))

@@ -23,7 +23,7 @@ row() { # row NAME --set ... : runs one configuration and prints its line
   python3 - "$dir/bistable-pipe/tables/steady_k2000.tsv" "$name" <<'PY'
 import csv, math, sys
 path, name = sys.argv[1], sys.argv[2]
-rows = list(csv.DictReader(open(path), delimiter="\t"))
+rows = list(csv.DictReader((l for l in open(path) if not l.startswith("#")), delimiter="\t"))  # line 2: units
 cells = []
 for r in rows:
     for s in ("slow", "fast"):

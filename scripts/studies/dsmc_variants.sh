@@ -61,7 +61,7 @@ import json, math, os, sys
 out, names = sys.argv[1], sys.argv[2:]
 
 def table(path):
-    rows = [l.rstrip("\n").split("\t") for l in open(path)]
+    rows = [l.rstrip("\n").split("\t") for l in open(path) if not l.startswith("#")]  # line 2: units
     head = rows[0]
     return {h: [float(r[i]) if r[i] not in ("", "NaN", "nan") else float("nan") for r in rows[1:]] for i, h in enumerate(head)}
 

@@ -16,10 +16,17 @@ using namespace granrepro;
 
 namespace {
 
+const char* const kDataFiles =
+    "\nData files (experiments/, expected/, plots/) are looked up in ../share/granrepro next to the\n"
+    "binary (an installed copy), then $GRANREPRO_HOME, then the source tree it was built from;\n"
+    "--version prints which one is used.\n";
+
 const char* const kExitCodes =
     "\nExit codes: 0 every claim PASS (or DEVIATION: a known deviation inside its own band);\n"
     "1 a claim FAILed (also: a run failed, or check --all / plot --all found experiments without\n"
     "results); 2 bad input (one line on stderr naming the parameter and what is allowed).";
+
+std::string command_line; // argv joined, shell-quoted where needed
 
 struct CommonFlags {
     std::string scale = "quick";
@@ -57,6 +64,7 @@ struct CommonFlags {
         o.quiet = quiet;
         o.checkpoint_interval = checkpoint_interval;
         o.sets = sets;
+        o.command_line = command_line;
         return o;
     }
 };
@@ -129,15 +137,33 @@ int plot_all_experiments(const std::filesystem::path& out, const std::vector<std
     return rc;
 }
 
+// `--version`: the code version, what it was built with, and where its data files are.
+std::string version_text() {
+    std::string s = std::string("granrepro ") + code_version();
+    for (const auto& [what, version] : library_versions()) s += "\n" + what + ": " + version;
+    const DataRoot root = find_data_root();
+    s += "\ndata: " + root.path.string() + " (" + root.how + ")";
+    return s;
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
     // Whole lines on stdout even when it is a file: stderr messages then never split a table row.
     std::setvbuf(stdout, nullptr, _IOLBF, 0);
+    for (int i = 0; i < argc; ++i) {
+        std::string a = argv[i];
+        if (a.empty() || a.find_first_of(" \t\n'\"\\$`*?[]{}()<>|&;#~") != std::string::npos) {
+            std::string q = "'";
+            for (char c : a) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+            a = q + "'";
+        }
+        command_line += (i ? " " : "") + a;
+    }
     CLI::App app{"granrepro: reproduce Luding (1998) and Schäfer & Wolf (1995), figure by figure"};
-    app.footer(kExitCodes);
+    app.footer(std::string(kDataFiles) + kExitCodes);
     app.require_subcommand(1);
-    app.set_version_flag("--version", std::string(code_version()));
+    app.set_version_flag("--version", version_text());
     app.failure_message(CLI::FailureMessage::simple);
 
     int rc = 0;

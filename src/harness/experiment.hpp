@@ -44,7 +44,14 @@ struct ExperimentInfo {
     static ExperimentInfo load(const std::filesystem::path& file); // throws InputError
 };
 
-// Where experiments/, expected/ and plots/ live: $GRANREPRO_HOME, else the source tree.
-std::filesystem::path project_root();
+// Where experiments/, expected/ and plots/ live, first found of: ../share/granrepro relative to
+// the binary (/proc/self/exe; an installed copy), $GRANREPRO_HOME, the source tree it was built
+// from. `granrepro --version` prints which.
+struct DataRoot {
+    std::filesystem::path path;
+    std::string how; // which of the three
+};
+DataRoot find_data_root();
+std::filesystem::path project_root(); // find_data_root().path, looked up once
 
 } // namespace granrepro

@@ -6,9 +6,28 @@
 
 namespace granrepro {
 
+namespace {
+bool holds_data(const std::filesystem::path& dir) {
+    std::error_code ec;
+    return std::filesystem::is_directory(dir / "experiments", ec);
+}
+} // namespace
+
+DataRoot find_data_root() {
+    // An installed binary: P/bin/granrepro next to P/share/granrepro (`cmake --install`).
+    std::error_code ec;
+    const auto exe = std::filesystem::read_symlink("/proc/self/exe", ec);
+    if (!ec) {
+        const auto shared = (exe.parent_path().parent_path() / "share" / "granrepro").lexically_normal();
+        if (holds_data(shared)) return {shared, "installed next to the binary"};
+    }
+    if (const char* home = std::getenv("GRANREPRO_HOME"); home && *home) return {home, "$GRANREPRO_HOME"};
+    return {GRANREPRO_SOURCE_DIR, "source tree the binary was built from"};
+}
+
 std::filesystem::path project_root() {
-    if (const char* home = std::getenv("GRANREPRO_HOME"); home && *home) return home;
-    return GRANREPRO_SOURCE_DIR;
+    static const std::filesystem::path root = find_data_root().path;
+    return root;
 }
 
 ExperimentInfo ExperimentInfo::load(const std::filesystem::path& file) {

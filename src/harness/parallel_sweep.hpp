@@ -20,13 +20,14 @@ void parallel_sweep(long n, int threads, Progress* progress, Fn&& fn) {
     auto worker = [&] {
         for (long i; (i = next++) < n;) {
             try {
+                const ProgressSlot slot(progress, i);
                 fn(i);
             } catch (...) {
                 std::lock_guard<std::mutex> lock(error_mutex);
                 if (!error) error = std::current_exception();
                 next = n; // stop handing out work
             }
-            if (progress) progress->tick();
+            if (progress) progress->done(i);
         }
     };
     const int t = std::max(1, std::min<int>(threads, int(n)));

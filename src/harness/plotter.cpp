@@ -1,31 +1,90 @@
 #include "harness/plotter.hpp"
 
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
 
 #include "harness/experiment.hpp"
+#include "harness/run_log.hpp"
 
 namespace granrepro {
+
+namespace {
+
+const char* const kHashTag = "# granrepro-emitted-hash: ";
+
+std::string read_file(const std::filesystem::path& p) {
+    std::ifstream in(p);
+    std::stringstream ss;
+    ss << in.rdbuf();
+    return ss.str();
+}
+
+// FNV-1a (64 bit) of the text: stable across toolchains (std::hash is not); it detects edits,
+// it does not guard against forgery.
+std::string fnv1a_hex(const std::string& text) {
+    std::uint64_t h = 14695981039346656037ull;
+    for (unsigned char c : text) h = (h ^ c) * 1099511628211ull;
+    char buf[17];
+    std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h));
+    return buf;
+}
+
+// An emitted script is "<first line with the hash of the rest>\n<rest>". True if the file has
+// that form and the rest is unchanged since it was emitted, or if it was emitted before scripts
+// carried a hash (granrepro 0.1.0 before 2026-12; its header is recognised and replaced).
+bool unedited(const std::string& text) {
+    if (text.rfind("# Emitted by granrepro from plots/", 0) == 0 && text.find("datadir = 'tables'\n") != std::string::npos)
+        return true;
+    const auto eol = text.find('\n');
+    if (text.rfind(kHashTag, 0) != 0 || eol == std::string::npos) return false;
+    return text.substr(std::string(kHashTag).size(), eol - std::string(kHashTag).size()) ==
+           fnv1a_hex(text.substr(eol + 1));
+}
+
+} // namespace
+
+std::string emitted_script(const std::string& id, const std::string& body) {
+    // The data and output are found next to the script (gnuplot sets ARG0 to the script's path),
+    // so `gnuplot path/to/<id>.gp` works from any working directory.
+    const std::string rest =
+        "# Emitted by granrepro from plots/" + id + ".gp; `gnuplot " + id +
+        ".gp` re-renders it from any directory. Edit it freely: `granrepro plot` then renders your\n"
+        "# version instead of overwriting it (the line above is the hash of the emitted text).\n"
+        "here = ''\n"
+        "if (exists('ARG0') && strlen(ARG0) > 0) {\n"
+        "  _i = strlen(ARG0)\n"
+        "  while (_i > 0 && ARG0[_i:_i] ne '/') { _i = _i - 1 }\n"
+        "  if (_i > 0) { here = ARG0[1:_i] }\n"
+        "}\n"
+        "datadir = here.'tables'\noutbase = here.'" + id + "'\n\n" + body;
+    return kHashTag + fnv1a_hex(rest) + "\n" + rest;
+}
 
 RenderOutcome render_figure(const std::string& id, const std::filesystem::path& run_dir,
                             const std::filesystem::path& shown_dir) {
     const auto script = project_root() / "plots" / (id + ".gp");
     std::ifstream in(script);
     if (!in) {
-        std::fprintf(stderr, "granrepro: no plot script %s\n", script.c_str());
+        warn("no plot script " + script.string());
         return RenderOutcome::Failed;
     }
     std::stringstream body;
     body << in.rdbuf();
     const auto emitted = run_dir / (id + ".gp");
-    {
+    // A script the user edited (in the run folder, or in the folder a new run replaces) is kept
+    // and rendered instead of the one from plots/.
+    const auto previous = (shown_dir.empty() ? run_dir : shown_dir) / (id + ".gp");
+    std::error_code ec;
+    if (std::filesystem::exists(previous, ec) && !unedited(read_file(previous))) {
+        if (previous != emitted) std::filesystem::copy_file(previous, emitted, std::filesystem::copy_options::overwrite_existing);
+        warn(previous.string() + " was edited: rendering the edited script, not plots/" + id +
+             ".gp (delete it to get the current one)");
+    } else {
         std::ofstream out(emitted);
-        out << "# Emitted by granrepro from plots/" << id << ".gp; run `gnuplot " << id
-            << ".gp` in this directory to re-render.\n"
-            << "datadir = 'tables'\noutbase = '" << id << "'\n\n"
-            << body.str();
+        out << emitted_script(id, body.str());
     }
     const std::string cmd = "cd '" + run_dir.string() + "' && gnuplot '" + id + ".gp' > '" + id +
                             ".gnuplot.log' 2>&1";
@@ -33,10 +92,9 @@ RenderOutcome render_figure(const std::string& id, const std::filesystem::path& 
     const auto log = run_dir / (id + ".gnuplot.log");
     const auto shown_log = (shown_dir.empty() ? run_dir : shown_dir) / (id + ".gnuplot.log");
     if (rc != 0 || !std::filesystem::exists(run_dir / (id + ".png"))) {
-        std::fprintf(stderr, "granrepro: gnuplot failed for %s (see %s)\n", id.c_str(), shown_log.c_str());
+        warn("gnuplot failed for " + id + " (see " + shown_log.string() + ")");
         return RenderOutcome::Failed;
     }
-    std::error_code ec;
     if (std::filesystem::file_size(log, ec) == 0) {
         std::filesystem::remove(log, ec);
         return RenderOutcome::Clean;
@@ -53,7 +111,7 @@ RenderOutcome render_figure(const std::string& id, const std::filesystem::path& 
     }
     if (!warning.empty()) first = warning;
     if (first.size() > 160) first = first.substr(0, 157) + "...";
-    std::fprintf(stderr, "granrepro: gnuplot warned for %s: %s (see %s)\n", id.c_str(), first.c_str(), shown_log.c_str());
+    warn("gnuplot warned for " + id + ": " + first + " (see " + shown_log.string() + ")");
     return RenderOutcome::Warned;
 }
 

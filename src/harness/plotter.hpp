@@ -12,7 +12,12 @@ namespace granrepro {
 // <id>.gnuplot.log keeps it. Failed: gnuplot is missing or failed; the data are still complete.
 enum class RenderOutcome { Clean, Warned, Failed };
 
-// Emits <run_dir>/<id>.gp and renders it in run_dir; a warning or failure is reported on stderr
+// The emitted <id>.gp: a hash line, the variables datadir and outbase (found next to the script
+// from gnuplot's ARG0, so it runs from any directory), then the body of plots/<id>.gp.
+std::string emitted_script(const std::string& figure_id, const std::string& body);
+
+// Emits <run_dir>/<id>.gp and renders it in run_dir (if <id>.gp in shown_dir, or else in run_dir,
+// was edited since it was emitted, that script is rendered instead, and a warning says so); a warning or failure is reported on stderr
 // in one line naming the figure and the log (as it will be found in shown_dir, if given: a run
 // renders in its staging directory).
 RenderOutcome render_figure(const std::string& figure_id, const std::filesystem::path& run_dir,

@@ -1,4 +1,5 @@
 #include "harness/run_checkpoint.hpp"
+#include "harness/run_log.hpp"
 
 #include <cstdio>
 #include <cstdlib>
@@ -60,11 +61,11 @@ bool RunCheckpoint::load(const std::function<void(const H5Object&)>& read) const
         const H5File f = H5File::open(file_.string());
         read(f);
     } catch (const std::exception& e) {
-        std::fprintf(stderr, "granrepro: ignoring unreadable checkpoint %s (%s); starting afresh\n",
-                     file_.c_str(), e.what());
+        warn("ignoring unreadable checkpoint " + file_.string() + " (" + e.what() + "); starting afresh");
         return false;
     }
     if (!quiet_) std::fprintf(stderr, "granrepro: resuming from checkpoint %s\n", file_.c_str());
+    run_log().line("resuming from checkpoint " + file_.string());
     return true;
 }
 

@@ -7,7 +7,9 @@
 
 #include "core/input_error.hpp"
 #include "harness/claims.hpp"
+#include "core/provenance.hpp"
 #include "harness/plotter.hpp"
+#include "harness/run_log.hpp"
 #include "io/result_writer.hpp"
 #include "io/staged_directory.hpp"
 
@@ -79,6 +81,18 @@ int run_experiment(const std::string& name, const RunOptions& opt, VerdictCounts
             to_render.push_back(f.id);
 
     StagedDirectory stage(final_dir);
+    // run.log: opened in the staging folder, so it moves into place with the results.
+    struct CloseLog {
+        ~CloseLog() { run_log().close(); }
+    } close_log;
+    run_log().open(stage.path() / "run.log");
+    run_log().line("command: " + opt.command_line);
+    run_log().line(std::string("granrepro ") + code_version() + "; data files from " + project_root().string());
+    run_log().line(std::string("experiment ") + name + ", scale " + to_string(opt.scale) + ", seed " +
+                   std::to_string(opt.seed) + ", threads " + std::to_string(opt.threads));
+    for (const auto& p : params.all())
+        run_log().line("parameter " + p.name + " = " + p.value_text() + " [" + p.unit + "]" +
+                       (p.overridden ? " (--set)" : ""));
     const fs::path work_dir = opt.out / ("." + name + ".checkpoint");
     fs::create_directories(work_dir);
     const RunContext ctx{params, opt.scale, opt.seed, opt.threads, opt.quiet, work_dir, opt.checkpoint_interval};
@@ -86,8 +100,12 @@ int run_experiment(const std::string& name, const RunOptions& opt, VerdictCounts
     const auto t0 = std::chrono::steady_clock::now();
     Result result = exp.run(ctx);
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    run_log().line("run finished: wall time " + std::to_string(wall) + " s");
 
-    Provenance prov{name, info.paper, read_text(info.file), opt.scale, opt.seed, wall, opt.threads};
+    std::vector<std::pair<std::string, std::string>> plot_texts;
+    for (const auto& id : to_render) plot_texts.emplace_back(id, read_text(project_root() / "plots" / (id + ".gp")));
+    const Provenance prov{name,     info.paper, read_text(info.file),           opt.scale, opt.seed,
+                          wall,     opt.threads, opt.command_line, read_text(expected_file(name)), plot_texts};
     write_result_h5(stage.path() / "data.h5", prov, params, result);
     write_tables_tsv(stage.path() / "tables", result);
     const auto verdicts = evaluate_claims(claims, scalars_json(result), opt.scale);
@@ -98,6 +116,15 @@ int run_experiment(const std::string& name, const RunOptions& opt, VerdictCounts
         out << summary.dump(2) << "\n";
     }
     for (const auto& id : to_render) render_figure(id, stage.path(), final_dir);
+    const double wall_total = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    run_log().line("claims: " + [&] {
+        VerdictCounts c;
+        c.add(verdicts);
+        return c.text();
+    }());
+    run_log().line("done: wall time " + std::to_string(wall_total) + " s with writing and " +
+                   std::to_string(to_render.size()) + " figures");
+    run_log().close();
     stage.commit();
     std::error_code ec;
     fs::remove_all(work_dir, ec);

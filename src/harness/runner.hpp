@@ -19,6 +19,7 @@ struct RunOptions {
     double checkpoint_interval = 60.0;      // [s] wall time between mid-run checkpoints
     std::vector<std::string> sets;          // --set name=value
     std::vector<std::string> figures;       // empty: render all of the experiment's figures
+    std::string command_line;               // as typed (provenance, run.log)
 };
 
 const Experiment& find_experiment(const std::string& name);          // throws InputError

@@ -14,8 +14,21 @@ void check(herr_t e, const std::string& what) {
 }
 } // namespace
 
+namespace {
+// Links and attributes keep the order they were created in (tables' columns, the root's
+// provenance), for readers that iterate by creation order (h5py: track_order).
+constexpr unsigned kCreationOrder = H5P_CRT_ORDER_TRACKED | H5P_CRT_ORDER_INDEXED;
+H5Object ordered(hid_t plist_class, bool links) {
+    H5Object p(H5Pcreate(plist_class), &H5Pclose);
+    if (links) H5Pset_link_creation_order(p.id(), kCreationOrder);
+    H5Pset_attr_creation_order(p.id(), kCreationOrder);
+    return p;
+}
+} // namespace
+
 H5File H5File::create(const std::string& path) {
-    return H5File(check(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), "create " + path), &H5Fclose);
+    const H5Object fcpl = ordered(H5P_FILE_CREATE, true);
+    return H5File(check(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, fcpl.id(), H5P_DEFAULT), "create " + path), &H5Fclose);
 }
 
 H5File H5File::open(const std::string& path) {
@@ -24,7 +37,8 @@ H5File H5File::open(const std::string& path) {
 }
 
 H5Object H5Object::group(const std::string& name) const {
-    return {check(H5Gcreate2(id_, name.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), "group " + name), &H5Gclose};
+    const H5Object gcpl = ordered(H5P_GROUP_CREATE, true);
+    return {check(H5Gcreate2(id_, name.c_str(), H5P_DEFAULT, gcpl.id(), H5P_DEFAULT), "group " + name), &H5Gclose};
 }
 
 H5Object H5Object::open_group(const std::string& name) const {
@@ -74,7 +88,8 @@ void H5Object::dataset(const std::string& name, const std::vector<double>& v,
                        const std::string& unit, const std::string& description) const {
     const hsize_t n = v.size();
     const hid_t s = H5Screate_simple(1, &n, nullptr);
-    const hid_t d = check(H5Dcreate2(id_, name.c_str(), H5T_IEEE_F64LE, s, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
+    const H5Object dcpl = ordered(H5P_DATASET_CREATE, false);
+    const hid_t d = check(H5Dcreate2(id_, name.c_str(), H5T_IEEE_F64LE, s, H5P_DEFAULT, dcpl.id(), H5P_DEFAULT),
                           "dataset " + name);
     const herr_t e = n ? H5Dwrite(d, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data()) : 0;
     H5Sclose(s);
@@ -205,7 +220,10 @@ void H5Object::copy_attr_to(const std::string& name, const H5Object& dst) const 
     H5Object t(H5Aget_type(a.id()), &H5Tclose);
     switch (H5Tget_class(t.id())) {
     case H5T_STRING: dst.attr(name, read_string_attr(name)); break;
-    case H5T_INTEGER: dst.attr(name, read_long_attr(name)); break;
+    case H5T_INTEGER:
+        if (H5Tget_sign(t.id()) == H5T_SGN_NONE && H5Tget_size(t.id()) == 8) dst.attr_u64(name, read_u64_attr(name));
+        else dst.attr(name, read_long_attr(name));
+        break;
     case H5T_FLOAT: {
         H5Object sp(H5Aget_space(a.id()), &H5Sclose);
         std::vector<double> v(std::size_t(H5Sget_simple_extent_npoints(sp.id())));

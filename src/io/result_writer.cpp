@@ -10,9 +10,97 @@
 #include "core/provenance.hpp"
 #include "io/h5_file.hpp"
 
+#include <hdf5_hl.h>
+
 namespace granrepro {
 
 namespace {
+// A scalar (rank-0) dataset of one value with its unit and description.
+template <class T>
+void scalar_dataset(const H5Object& g, const std::string& name, hid_t file_type, hid_t mem_type, T value,
+                    const std::string& unit, const std::string& description) {
+    const H5Object space(H5Screate(H5S_SCALAR), &H5Sclose);
+    const H5Object dcpl(H5Pcreate(H5P_DATASET_CREATE), &H5Pclose);
+    H5Pset_attr_creation_order(dcpl.id(), H5P_CRT_ORDER_TRACKED | H5P_CRT_ORDER_INDEXED);
+    const hid_t id = H5Dcreate2(g.id(), name.c_str(), file_type, space.id(), H5P_DEFAULT, dcpl.id(), H5P_DEFAULT);
+    if (id < 0) throw std::runtime_error("HDF5: dataset " + name);
+    const H5Object d(id, &H5Dclose);
+    if (H5Dwrite(d.id(), mem_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, &value) < 0)
+        throw std::runtime_error("HDF5: write " + name);
+    d.attr("unit", unit);
+    if (!description.empty()) d.attr("description", description);
+}
+
+// The table's first column becomes an HDF5 dimension scale (H5DS) attached to the others.
+void attach_x_scale(const H5Object& table, const Table& t) {
+    if (t.columns.size() < 1) return;
+    const H5Object x(H5Dopen2(table.id(), t.columns[0].name.c_str(), H5P_DEFAULT), &H5Dclose);
+    if (x.id() < 0 || H5DSset_scale(x.id(), t.columns[0].name.c_str()) < 0)
+        throw std::runtime_error("HDF5: dimension scale " + t.name + "/" + t.columns[0].name);
+    for (std::size_t c = 1; c < t.columns.size(); ++c) {
+        if (t.columns[c].values.size() != t.columns[0].values.size()) continue; // not a function of x
+        const H5Object y(H5Dopen2(table.id(), t.columns[c].name.c_str(), H5P_DEFAULT), &H5Dclose);
+        if (y.id() < 0 || H5DSattach_scale(y.id(), x.id(), 0) < 0)
+            throw std::runtime_error("HDF5: attach scale to " + t.name + "/" + t.columns[c].name);
+    }
+}
+
+// The links of a group in creation order where it was tracked (files before 2026-12: by name).
+std::vector<std::string> links_in_creation_order(const H5Object& g) {
+    std::vector<std::string> names;
+    H5G_info_t info;
+    if (H5Gget_info(g.id(), &info) < 0) throw std::runtime_error("HDF5: group info");
+    H5E_BEGIN_TRY {
+        for (hsize_t i = 0; i < info.nlinks; ++i) {
+            const ssize_t n = H5Lget_name_by_idx(g.id(), ".", H5_INDEX_CRT_ORDER, H5_ITER_INC, i, nullptr, 0, H5P_DEFAULT);
+            if (n < 0) break;
+            std::string name(std::size_t(n) + 1, '\0');
+            H5Lget_name_by_idx(g.id(), ".", H5_INDEX_CRT_ORDER, H5_ITER_INC, i, name.data(), name.size(), H5P_DEFAULT);
+            name.resize(std::size_t(n));
+            names.push_back(name);
+        }
+    } H5E_END_TRY;
+    return names.size() == info.nlinks ? names : g.children();
+}
+
+// Copies one table to another file: H5Ocopy would carry the dimension-scale attributes, whose
+// object references then point nowhere, so the columns are copied without them and the scales
+// attached again as they were.
+void copy_table(const H5Object& tables_in, const std::string& name, const H5Object& tables_out) {
+    const H5Object in = tables_in.open_group(name);
+    const H5Object out = tables_out.group(name);
+    for (const auto& a : in.attribute_names()) in.copy_attr_to(a, out);
+    const auto columns = links_in_creation_order(in);
+    const H5Object ocpypl(H5Pcreate(H5P_OBJECT_COPY), &H5Pclose);
+    H5Pset_copy_object(ocpypl.id(), H5O_COPY_WITHOUT_ATTR_FLAG);
+    auto open = [](const H5Object& g, const std::string& c) {
+        const hid_t id = H5Dopen2(g.id(), c.c_str(), H5P_DEFAULT);
+        if (id < 0) throw std::runtime_error("HDF5: open " + c);
+        return H5Object(id, &H5Dclose);
+    };
+    std::vector<std::string> scales;
+    for (const auto& c : columns) {
+        if (H5Ocopy(in.id(), c.c_str(), out.id(), c.c_str(), ocpypl.id(), H5P_DEFAULT) < 0)
+            throw std::runtime_error("HDF5: copy " + name + "/" + c);
+        const H5Object din = open(in, c), dout = open(out, c);
+        for (const auto& a : din.attribute_names())
+            if (a != "CLASS" && a != "NAME" && a != "REFERENCE_LIST" && a != "DIMENSION_LIST") din.copy_attr_to(a, dout);
+        if (H5DSis_scale(din.id()) > 0) {
+            if (H5DSset_scale(dout.id(), c.c_str()) < 0) throw std::runtime_error("HDF5: dimension scale " + c);
+            scales.push_back(c);
+        }
+    }
+    for (const auto& s : scales) {
+        const H5Object sin = open(in, s), sout = open(out, s);
+        for (const auto& c : columns) {
+            if (c == s) continue;
+            const H5Object din = open(in, c);
+            if (H5DSis_attached(din.id(), sin.id(), 0) > 0 && H5DSattach_scale(open(out, c).id(), sout.id(), 0) < 0)
+                throw std::runtime_error("HDF5: attach scale to " + name + "/" + c);
+        }
+    }
+}
+
 std::string utc_now() {
     const std::time_t t = std::time(nullptr);
     std::tm tm{};
@@ -31,7 +119,7 @@ void write_result_h5(const std::filesystem::path& file, const Provenance& prov, 
     f.attr("experiment", prov.experiment);
     f.attr("paper", prov.paper);
     f.attr("scale", std::string(to_string(prov.scale)));
-    f.attr("seed", std::to_string(prov.seed));
+    f.attr_u64("seed", prov.seed);
     f.attr("code_version", std::string(code_version()));
     f.attr("wall_time_s", prov.wall_time_s);
     f.attr("threads", long(prov.threads));
@@ -40,31 +128,44 @@ void write_result_h5(const std::filesystem::path& file, const Provenance& prov, 
     {
         const H5Object g = f.group("parameters");
         for (const auto& p : params.all()) {
-            std::vector<double> v;
             switch (p.kind) {
-            case Parameter::Kind::Real: v = {p.real}; break;
-            case Parameter::Kind::Integer: v = {double(p.integer)}; break;
-            case Parameter::Kind::Flag: v = {p.flag ? 1.0 : 0.0}; break;
-            case Parameter::Kind::RealList: v = p.reals; break;
-            case Parameter::Kind::Text: break;
-            }
-            if (p.kind == Parameter::Kind::Text) {
-                g.attr(p.name, p.text);
-            } else {
-                g.dataset(p.name, v, p.unit, p.help);
+            case Parameter::Kind::Real:
+                scalar_dataset(g, p.name, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, p.real, p.unit, p.help);
+                break;
+            case Parameter::Kind::Integer:
+                scalar_dataset(g, p.name, H5T_STD_I64LE, H5T_NATIVE_LONG, p.integer, p.unit, p.help);
+                break;
+            case Parameter::Kind::Flag:
+                scalar_dataset(g, p.name, H5T_STD_U8LE, H5T_NATIVE_UINT8, std::uint8_t(p.flag ? 1 : 0), p.unit, p.help);
+                break;
+            case Parameter::Kind::RealList: g.dataset(p.name, p.reals, p.unit, p.help); break;
+            case Parameter::Kind::Text: g.attr(p.name, p.text); break;
             }
         }
         for (const auto& p : params.all()) g.attr(p.name + ".source", p.source);
     }
     {
         const H5Object g = f.group("scalars");
-        for (const auto& s : result.scalars) g.dataset(s.name, {s.value}, s.unit, s.description);
+        for (const auto& s : result.scalars)
+            scalar_dataset(g, s.name, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, s.value, s.unit, s.description);
     }
     const H5Object tables = f.group("tables");
     for (const auto& t : result.tables) {
         const H5Object g = tables.group(t.name);
         g.attr("description", t.description);
         for (const auto& c : t.columns) g.dataset(c.name, c.values, c.unit);
+        attach_x_scale(g, t);
+    }
+    {
+        const H5Object g = f.group("provenance");
+        g.attr("command_line", prov.command_line);
+        std::string sets;
+        for (const auto& p : params.all())
+            if (p.overridden) sets += (sets.empty() ? "" : "\n") + p.name + "=" + p.value_text();
+        g.attr("overridden_parameters", sets);
+        for (const auto& [what, version] : library_versions()) g.attr("version_" + what, version);
+        g.attr("expected_file", prov.expected_file_text);
+        for (const auto& [id, text] : prov.plot_texts) g.attr("plot_" + id, text);
     }
 }
 
@@ -78,6 +179,10 @@ void write_tables_tsv(const std::filesystem::path& dir, const Result& result) {
             out << (c ? "\t" : "") << t.columns[c].name;
             rows = std::max(rows, t.columns[c].values.size());
         }
+        // Units as a comment line, which gnuplot skips: the column names stay usable as
+        // columnhead and column("name").
+        out << "\n#";
+        for (std::size_t c = 0; c < t.columns.size(); ++c) out << (c ? "\t[" : " [") << t.columns[c].unit << "]";
         out << "\n";
         for (std::size_t r = 0; r < rows; ++r) {
             for (std::size_t c = 0; c < t.columns.size(); ++c) {
@@ -107,6 +212,11 @@ nlohmann::json summary_json(const Provenance& prov, const ParameterSet& params, 
     j["seed"] = prov.seed;
     j["code_version"] = code_version();
     j["wall_time_s"] = prov.wall_time_s;
+    j["command_line"] = prov.command_line;
+    nlohmann::json sets = nlohmann::json::object();
+    for (const auto& p : params.all())
+        if (p.overridden) sets[p.name] = p.value_text();
+    j["overridden_parameters"] = sets;
     j["scalars"] = scalars_json(result);
     nlohmann::json units = nlohmann::json::object();
     for (const auto& s : result.scalars) units[s.name] = s.unit;
@@ -121,7 +231,8 @@ std::vector<std::string> write_compact_result_h5(const std::filesystem::path& sr
     in.require_schema("granrepro-result", 1);
     H5File out = H5File::create(dst.string());
     for (const auto& a : in.attribute_names()) in.copy_attr_to(a, out);
-    for (const char* g : {"parameters", "scalars"}) in.copy_to(g, out);
+    for (const char* g : {"parameters", "scalars", "provenance"})
+        if (in.has(g)) in.copy_to(g, out);
     const H5Object tables_in = in.open_group("tables");
     const H5Object tables_out = out.group("tables");
     std::vector<std::string> omitted;
@@ -131,7 +242,7 @@ std::vector<std::string> write_compact_result_h5(const std::filesystem::path& sr
         std::size_t n = 0;
         for (const auto& c : g.children()) n += g.dataset_size(c);
         if (n <= max_values) {
-            tables_in.copy_to(t, tables_out);
+            copy_table(tables_in, t, tables_out);
         } else {
             omitted.push_back(t);
             listing += (listing.empty() ? "" : ", ") + t + " (" + std::to_string(n) + " values)";

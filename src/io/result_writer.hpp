@@ -1,11 +1,18 @@
-// The result schema "granrepro-result" (version 1), written into a run's directory:
-//   data.h5       root attributes: schema, schema_version, experiment, paper, scale, seed,
-//                 code_version, wall_time_s, created_utc, experiment_file (its full text);
-//                 /parameters/<name>  scalar or 1-D dataset, attributes unit, source
-//                 /scalars/<name>     1-element dataset, attributes unit, description
-//                 /tables/<table>/<column>  1-D datasets with unit; the group has a description
-//   tables/<table>.tsv   the same columns as text (header line of names) for gnuplot
+// The result schema "granrepro-result" (version 1), written into a run's directory; docs/schema.md
+// describes every group, dataset and attribute (a test checks it names all that the writer emits):
+//   data.h5       root attributes: schema, schema_version, experiment, paper, scale, seed (uint64),
+//                 code_version, wall_time_s, threads, created_utc, experiment_file (its full text);
+//                 /parameters/<name>  scalar (float64, int64, uint8 flag) or 1-D float64 dataset
+//                                     with unit, description; text parameters as attributes
+//                 /scalars/<name>     scalar float64 dataset, attributes unit, description
+//                 /tables/<table>/<column>  1-D float64 datasets with unit; the first column is a
+//                                     dimension scale of the others; the group has a description
+//                 /provenance         command line, --set overrides, library versions, the text of
+//                                     expected/<experiment>.toml and of the plots/ scripts used
+//                 Links and attributes are created with creation order tracked.
+//   tables/<table>.tsv   the same columns as text: a header line of names, a comment line of units
 //   summary.json  scalars, provenance and claim verdicts
+//   run.log       command, resolved parameters, progress, warnings, wall times
 // Tables and scalars are stored in the order the experiment produced them, so the datasets
 // are bit-identical for the same seed and inputs.
 #pragma once
@@ -25,6 +32,9 @@ struct Provenance {
     std::uint64_t seed = 0;
     double wall_time_s = 0;
     int threads = 1;
+    std::string command_line;                                      // as typed
+    std::string expected_file_text;                                // expected/<experiment>.toml
+    std::vector<std::pair<std::string, std::string>> plot_texts;   // figure id, plots/<id>.gp
 };
 
 void write_result_h5(const std::filesystem::path& file, const Provenance& prov, const ParameterSet& params,

@@ -237,7 +237,7 @@ TEST(Cli, SameSeedGivesBitIdenticalDatasets) {
         ASSERT_EQ(va.size(), vb.size());
         EXPECT_EQ(0, std::memcmp(va.data(), vb.data(), va.size() * sizeof(double))) << ds;
     }
-    EXPECT_EQ(fa.read_string_attr("seed"), "7");
+    EXPECT_EQ(fa.read_u64_attr("seed"), 7u);
     EXPECT_EQ(fa.read_string_attr("schema"), "granrepro-result");
     fs::remove_all(a);
     fs::remove_all(b);

@@ -1,0 +1,168 @@
+"""Read granrepro results (docs/schema.md) into Python: h5py + numpy (Debian python3-h5py,
+python3-numpy); plot() needs matplotlib (python3-matplotlib).
+
+    import granrepro
+    run = granrepro.load("out/brake-failure")
+    t = run.tables["fig3"]; v, dv = t["vy_i"], t["dvy"]   # numpy arrays; t.units["dvy"] == "m/s"
+"""
+from __future__ import annotations
+
+import json
+import os
+from dataclasses import dataclass, field
+
+import h5py
+import numpy as np
+
+SCHEMA = "granrepro-result"
+SCHEMA_VERSION = 1
+
+
+class Table(dict):
+    """The columns of one table, in the writer's order: name -> 1-D numpy array.
+    .units: name -> unit; .description: one line; .x: name of the first column (the dimension
+    scale of the others)."""
+
+    def __init__(self, name: str, description: str = ""):
+        super().__init__()
+        self.name = name
+        self.description = description
+        self.units: dict[str, str] = {}
+
+    @property
+    def x(self) -> str:
+        return next(iter(self))
+
+    def label(self, column: str) -> str:
+        """'v_y_i [m/s]': the column with its unit, for an axis label."""
+        return f"{column} [{self.units.get(column, '?')}]"
+
+
+@dataclass
+class Quantity:
+    value: object  # float, int, bool, str or numpy array
+    unit: str = ""
+    description: str = ""
+    source: str = ""
+
+
+@dataclass
+class Run:
+    path: str
+    experiment: str
+    scale: str
+    seed: int
+    attributes: dict
+    tables: dict[str, Table] = field(default_factory=dict)
+    scalars: dict[str, Quantity] = field(default_factory=dict)
+    parameters: dict[str, Quantity] = field(default_factory=dict)
+    claims: list[dict] = field(default_factory=list)
+    provenance: dict = field(default_factory=dict)
+
+    def value(self, scalar: str) -> float:
+        return self.scalars[scalar].value
+
+
+def _text(v) -> str:
+    return v.decode() if isinstance(v, bytes) else str(v)
+
+
+def _in_creation_order(group: h5py.Group) -> list[str]:
+    """Link names in the order they were created (the writer tracks it); name order otherwise."""
+    names = []
+    try:
+        gid = group.id
+        idx = h5py.h5.INDEX_CRT_ORDER
+        for i in range(gid.get_num_objs()):
+            names.append(gid.links.get_name_by_idx(i, index_type=idx).decode())
+        return names
+    except Exception:
+        return list(group.keys())
+
+
+def _attrs(obj) -> dict:
+    out = {}
+    for k, v in obj.attrs.items():
+        if isinstance(v, bytes):
+            v = v.decode()
+        elif isinstance(v, np.generic):
+            v = v.item()
+        out[k] = v
+    return out
+
+
+def load(out_dir: str) -> Run:
+    """Reads OUT/<experiment>/ (the folder holding data.h5 and summary.json)."""
+    h5_path = os.path.join(out_dir, "data.h5")
+    with h5py.File(h5_path, "r") as f:
+        root = _attrs(f)
+        if root.get("schema") != SCHEMA:
+            raise ValueError(f"{h5_path}: not a {SCHEMA} file (schema: {root.get('schema')!r})")
+        if root.get("schema_version") != SCHEMA_VERSION:
+            raise ValueError(f"{h5_path}: schema_version {root.get('schema_version')}, this reader knows {SCHEMA_VERSION}")
+        run = Run(path=out_dir, experiment=root["experiment"], scale=root["scale"], seed=int(root["seed"]),
+                  attributes=root)
+        pg = f["parameters"]
+        pattrs = _attrs(pg)
+        for name in _in_creation_order(pg):
+            ds = pg[name]
+            v = ds[()]
+            if ds.shape == ():
+                v = v.item()
+                if ds.dtype == np.uint8:
+                    v = bool(v)
+            a = _attrs(ds)
+            run.parameters[name] = Quantity(v, a.get("unit", ""), a.get("description", ""),
+                                            pattrs.get(name + ".source", ""))
+        for k, v in pattrs.items():  # text parameters
+            if not k.endswith(".source"):
+                run.parameters[k] = Quantity(v, "", "", pattrs.get(k + ".source", ""))
+        sg = f["scalars"]
+        for name in _in_creation_order(sg):
+            ds = sg[name]
+            a = _attrs(ds)
+            run.scalars[name] = Quantity(float(np.asarray(ds[()]).reshape(-1)[0]), a.get("unit", ""),
+                                         a.get("description", ""))
+        tg = f["tables"]
+        for tname in _in_creation_order(tg):
+            g = tg[tname]
+            t = Table(tname, _text(g.attrs.get("description", "")))
+            for c in _in_creation_order(g):
+                t[c] = g[c][()]
+                t.units[c] = _text(g[c].attrs.get("unit", ""))
+            run.tables[tname] = t
+        if "provenance" in f:
+            run.provenance = _attrs(f["provenance"])
+    summary = os.path.join(out_dir, "summary.json")
+    if os.path.exists(summary):
+        with open(summary) as s:
+            run.claims = json.load(s).get("claims", [])
+    return run
+
+
+def plot(run: Run, table: str, columns=None, ax=None, logx=False, logy=False, **kwargs):
+    """Draws columns (default: all but the first) of run.tables[table] against its first column
+    with matplotlib; axis labels carry the units. Returns the Axes."""
+    import matplotlib
+    if ax is None:
+        if not os.environ.get("DISPLAY"):
+            matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+        _, ax = plt.subplots()
+    t = run.tables[table]
+    x = t.x
+    cols = [c for c in t if c != x] if columns is None else list(columns)
+    for c in cols:
+        if len(t[c]) != len(t[x]):
+            raise ValueError(f"{table}/{c} has {len(t[c])} values, {x} has {len(t[x])}")
+        ax.plot(t[x], t[c], label=t.label(c), **kwargs)
+    ax.set_xlabel(t.label(x))
+    units = {t.units[c] for c in cols}
+    ax.set_ylabel(f"[{units.pop()}]" if len(units) == 1 else "")
+    ax.set_title(f"{run.experiment}: {table}")
+    if logx:
+        ax.set_xscale("log")
+    if logy:
+        ax.set_yscale("log")
+    ax.legend()
+    return ax
