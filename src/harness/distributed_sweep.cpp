@@ -89,8 +89,8 @@ SweepResult distributed_sweep(const RunContext& ctx, const std::string& label, c
         if (auto saved = checkpoint.load(i)) {
             out.points[std::size_t(i)] = std::move(*saved);
             have[std::size_t(i)] = 1;
+            ++out.resumed; // not computed again
         }
-    out.resumed = checkpoint.resumed();
 
     const SweepPlan& plan = ctx.sweep;
     std::vector<long> todo; // in cost order
