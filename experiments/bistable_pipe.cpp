@@ -27,8 +27,7 @@
 #include "experiments/impact_shot.hpp"
 #include "experiments/pipe_setup.hpp"
 #include "harness/experiment.hpp"
-#include "harness/parallel_sweep.hpp"
-#include "harness/sweep_checkpoint.hpp"
+#include "harness/distributed_sweep.hpp"
 #include "models/coulomb_shear.hpp"
 #include "models/linear_spring_dashpot.hpp"
 
@@ -358,14 +357,7 @@ std::vector<RunResult> run_sweep(const RunContext& ctx, const std::vector<Task>&
         return std::make_tuple(t.fast, t.length, t.e, t.k);
     };
     std::stable_sort(order.begin(), order.end(), [&](long a, long b) { return key(a) > key(b); });
-    SweepCheckpoint checkpoint(ctx);
-    Progress progress("bistable-pipe", long(tasks.size()), ctx.quiet);
-    parallel_sweep(long(tasks.size()), ctx.threads, &progress, [&](long slot) {
-        const long i = order[std::size_t(slot)];
-        if (auto saved = checkpoint.load(i)) {
-            results[std::size_t(i)] = RunResult::from_json(*saved);
-            return;
-        }
+    const SweepResult swept = distributed_sweep(ctx, "bistable-pipe", order, [&](long i) {
         const Task& t = tasks[std::size_t(i)];
         PipeSpec s = base_spec(p, ctx.seed);
         s.k_N = t.k;
@@ -373,10 +365,10 @@ std::vector<RunResult> run_sweep(const RunContext& ctx, const std::vector<Task>&
         s.geo.length = std::round(t.length / s.geo.wall_spacing) * s.geo.wall_spacing;
         s.v0 = t.fast ? p.real("fast_v0") : p.real("slow_v0");
         s.stream = std::uint64_t(i);
-        results[std::size_t(i)] = run_pipe(s, time_budget(p, t.k, t.e), p.real("eq9_window"));
-        checkpoint.save(i, results[std::size_t(i)].to_json());
+        return run_pipe(s, time_budget(p, t.k, t.e), p.real("eq9_window")).to_json();
     });
-    resumed = checkpoint.resumed();
+    for (std::size_t i = 0; i < tasks.size(); ++i) results[i] = RunResult::from_json(swept.points[i]);
+    resumed = swept.resumed;
     return results;
 }
 

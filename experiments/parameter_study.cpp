@@ -25,7 +25,7 @@
 #include "engines/ed/ed_engine.hpp"
 #include "engines/ed/ed_initial_states.hpp"
 #include "harness/experiment.hpp"
-#include "harness/parallel_sweep.hpp"
+#include "harness/distributed_sweep.hpp"
 #include "harness/progress.hpp"
 #include "harness/run_log.hpp"
 #include "harness/sweep_checkpoint.hpp"
@@ -252,18 +252,15 @@ Result run(const RunContext& ctx) {
 
     const long n_tasks = long(points.size()) * n_seeds;
     std::vector<std::vector<Trace>> traces(points.size(), std::vector<Trace>(std::size_t(n_seeds)));
-    SweepCheckpoint checkpoint(ctx);
-    Progress progress("parameter-study", n_tasks, ctx.quiet);
+    // Point i is (point i / n_seeds, seed i % n_seeds) with random stream i.
+    std::vector<long> order(static_cast<std::size_t>(n_tasks));
+    std::iota(order.begin(), order.end(), 0L);
     const auto wall0 = std::chrono::steady_clock::now();
-    parallel_sweep(n_tasks, ctx.threads, &progress, [&](long i) {
-        Trace& slot = traces[std::size_t(i / n_seeds)][std::size_t(i % n_seeds)];
-        if (auto saved = checkpoint.load(i)) {
-            slot = Trace::from_json(*saved);
-            return;
-        }
-        slot = run_point(p, points[std::size_t(i / n_seeds)], ctx.seed, std::uint64_t(i));
-        checkpoint.save(i, slot.to_json());
+    const SweepResult swept = distributed_sweep(ctx, "parameter-study", order, [&](long i) {
+        return run_point(p, points[std::size_t(i / n_seeds)], ctx.seed, std::uint64_t(i)).to_json();
     });
+    for (long i = 0; i < n_tasks; ++i)
+        traces[std::size_t(i / n_seeds)][std::size_t(i % n_seeds)] = Trace::from_json(swept.points[std::size_t(i)]);
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
 
     Result res;
@@ -272,7 +269,7 @@ Result run(const RunContext& ctx) {
     const double cn_end = p.real("cn_end");
     res.scalar("N", n, "1", "number of disks");
     res.scalar("rho", M_PI / 4 * n / (L * L), "1", "area fraction (pi/4) N / L^2");
-    res.scalar("resumed_points", double(checkpoint.resumed()), "1", "sweep points loaded from a checkpoint");
+    res.scalar("resumed_points", double(swept.resumed), "1", "sweep points loaded from a checkpoint");
     res.scalar("sweep_wall_seconds", wall, "s", "wall time of the sweep (all points, --threads as given)");
     double events = 0, cpu = 0, failed = 0;
     for (const auto& pt : traces)

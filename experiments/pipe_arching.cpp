@@ -33,8 +33,8 @@
 #include "engines/ed/ed_engine.hpp"
 #include "engines/ed/ed_initial_states.hpp"
 #include "harness/experiment.hpp"
-#include "harness/parallel_sweep.hpp"
-#include "harness/sweep_checkpoint.hpp"
+#include "harness/progress.hpp"
+#include "harness/distributed_sweep.hpp"
 #include "observables/collision_counter.hpp"
 #include "observables/collision_rate_fit.hpp"
 #include "observables/column_bands.hpp"
@@ -719,21 +719,19 @@ Result run(const RunContext& ctx) {
     const Geometry G = geometry(p);
     const long n_seeds = p.integer("n_seeds");
     std::vector<SeedRun> runs(static_cast<std::size_t>(n_seeds));
-    SweepCheckpoint checkpoint(ctx);
-    Progress progress("pipe-arching", n_seeds, ctx.quiet);
-    parallel_sweep(n_seeds, ctx.threads, &progress, [&](long k) {
-        if (auto saved = checkpoint.load(k)) {
-            runs[std::size_t(k)] = SeedRun::from_json(*saved);
-            return;
-        }
-        runs[std::size_t(k)] = run_seed(p, G, ctx.seed, k, k == 0);
-        checkpoint.save(k, runs[std::size_t(k)].to_json());
+    // Seed run k draws RngStream(seed, k) whatever n_seeds, rank or shard: any split of the seeds
+    // (ranks, --points shards) reproduces the single run.
+    std::vector<long> order(static_cast<std::size_t>(n_seeds));
+    std::iota(order.begin(), order.end(), 0L);
+    const SweepResult swept = distributed_sweep(ctx, "pipe-arching", order, [&](long k) {
+        return run_seed(p, G, ctx.seed, k, k == 0).to_json();
     });
+    for (long k = 0; k < n_seeds; ++k) runs[std::size_t(k)] = SeedRun::from_json(swept.points[std::size_t(k)]);
 
     Result res;
     const SeedRun& f0 = runs.front();
     const nlohmann::json& F = f0.figure;
-    res.scalar("resumed_points", double(checkpoint.resumed()), "1", "seeds loaded from a checkpoint");
+    res.scalar("resumed_points", double(swept.resumed), "1", "seeds loaded from a checkpoint");
     res.scalar("n_seeds", double(n_seeds), "1", "independent runs");
     res.scalar("layers", std::ceil(double(p.integer("n_particles")) /
                                    (std::floor((G.L - G.d) / (p.real("lattice") * G.d) + 1e-9) + 0.5)),

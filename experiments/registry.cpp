@@ -16,15 +16,23 @@ Experiment parameter_study();
 Experiment cluster_growth();
 } // namespace experiments
 
+namespace {
+// Its sweep goes through distributed_sweep(): MPI ranks and --points shards share its points.
+Experiment distributed(Experiment e) {
+    e.distributed = true;
+    return e;
+}
+} // namespace
+
 const std::vector<Experiment>& experiment_registry() {
     static const std::vector<Experiment> table = {
         experiments::brake_failure(),
         experiments::emergency_brake(),
-        experiments::bistable_pipe(),
+        distributed(experiments::bistable_pipe()),
         experiments::impact_parameter(),
         experiments::cooling(),
-        experiments::pipe_arching(),
-        experiments::parameter_study(),
+        distributed(experiments::pipe_arching()),
+        distributed(experiments::parameter_study()),
         experiments::cluster_growth(),
     };
     return table;

@@ -10,6 +10,7 @@
 #include "cli/bench.hpp"
 #include "core/input_error.hpp"
 #include "core/provenance.hpp"
+#include "harness/mpi_world.hpp"
 #include "harness/runner.hpp"
 
 using namespace granrepro;
@@ -36,6 +37,7 @@ struct CommonFlags {
     bool quiet = false;
     double checkpoint_interval = 60.0;
     std::vector<std::string> sets;
+    std::string points;
 
     void add_to(CLI::App* app, bool with_sets = true) {
         app->add_option("--scale", scale, "quick (CI, minutes) or paper (the papers' sizes)")
@@ -55,8 +57,18 @@ struct CommonFlags {
             app->add_option("--set", sets, "override a parameter: --set name=value (repeatable)")
                 ->type_name("NAME=VALUE");
     }
+    // --points: experiments with a distributed sweep (bistable-pipe, parameter-study, pipe-arching).
+    void add_points_to(CLI::App* app) {
+        app->add_option("--points", points,
+                        "compute only shard I of N of the sweep points into OUT/.<experiment>.checkpoint/, then "
+                        "`granrepro gather <experiment>` (same flags) writes the results; default in a Slurm job "
+                        "array: task ID of COUNT")
+            ->type_name("I/N");
+    }
     RunOptions options() const {
         RunOptions o;
+        if (!points.empty()) o.sweep = parse_points(points);
+        o.shard_from_slurm = true;
         o.scale = parse_scale(scale);
         o.out = out;
         o.seed = seed;
@@ -110,7 +122,7 @@ int run_all(const RunOptions& base) {
     int rc = 0;
     VerdictCounts totals;
     for (const auto& e : experiment_registry()) rc |= run_experiment(e.name, base, &totals);
-    std::printf("totals: %s\n", totals.text().c_str());
+    if (mpi::rank() == 0) std::printf("totals: %s\n", totals.text().c_str());
     return rc;
 }
 
@@ -148,9 +160,24 @@ std::string version_text() {
 
 } // namespace
 
+// Everything but MPI's set-up: the command line and the subcommands.
+static int run_main(int argc, char** argv);
+
 int main(int argc, char** argv) {
     // Whole lines on stdout even when it is a file: stderr messages then never split a table row.
     std::setvbuf(stdout, nullptr, _IOLBF, 0);
+    try {
+        mpi::init(argc, argv);
+    } catch (const InputError& e) {
+        std::fprintf(stderr, "granrepro: %s\n", e.what());
+        return 2;
+    }
+    const int code = run_main(argc, argv);
+    mpi::finalize();
+    return code;
+}
+
+static int run_main(int argc, char** argv) {
     for (int i = 0; i < argc; ++i) {
         std::string a = argv[i];
         if (a.empty() || a.find_first_of(" \t\n'\"\\$`*?[]{}()<>|&;#~") != std::string::npos) {
@@ -179,6 +206,7 @@ int main(int argc, char** argv) {
         }
         CLI::App* sub = app.add_subcommand(e.name, description);
         common.add_to(sub);
+        if (e.distributed) common.add_points_to(sub);
         sub->footer([name = e.name] { return parameter_help(name) + kExitCodes; });
         sub->callback([&, name = e.name] { rc = run_experiment(name, common.options()); });
     }
@@ -192,6 +220,20 @@ int main(int argc, char** argv) {
         RunOptions o = common.options();
         o.figures = {figure_id};
         rc = run_experiment(experiment_of_figure(figure_id), o);
+    });
+
+    std::string gather_name;
+    CLI::App* gather = app.add_subcommand(
+        "gather", "write the results of an experiment whose sweep points were computed by --points shards");
+    gather->add_option("experiment", gather_name, "experiment, run with the same flags as its shards")->required();
+    common.add_to(gather);
+    gather->footer("\nExit codes: 0 every claim PASS; 1 a claim FAILed; 2 bad input, or points missing from the\n"
+                   "checkpoint (one line: 'N points missing: i, j, ...'; run their shards again).");
+    gather->callback([&] {
+        RunOptions o = common.options();
+        o.shard_from_slurm = false;
+        o.sweep.mode = SweepPlan::Mode::Gather;
+        rc = run_experiment(gather_name, o);
     });
 
     std::string check_name;
@@ -270,7 +312,11 @@ int main(int argc, char** argv) {
     CLI::App* all = app.add_subcommand("all", "run every experiment, render every figure, check every claim");
     common.add_to(all, false);
     all->footer(kExitCodes);
-    all->callback([&] { rc = run_all(common.options()); });
+    all->callback([&] {
+        RunOptions o = common.options();
+        o.shard_from_slurm = false;
+        rc = run_all(o);
+    });
 
     std::string bench_target;
     BenchOptions bench_opt;

@@ -11,6 +11,18 @@
 
 namespace granrepro {
 
+// How this process takes part in the experiment's sweep (harness/distributed_sweep.hpp).
+struct SweepPlan {
+    enum class Mode {
+        All,    // compute every point not in the checkpoint (with MPI: spread over the ranks)
+        Shard,  // --points I/N: compute shard I of N into the checkpoint, then stop
+        Gather, // `gather`: compute nothing; every point must be in the checkpoint
+    };
+    Mode mode = Mode::All;
+    int shard = 1, shards = 1; // 1 <= shard <= shards
+    int ranks = 1;             // MPI ranks serving this sweep (1: this process alone)
+};
+
 struct RunContext {
     const ParameterSet& params;
     Scale scale;
@@ -19,6 +31,7 @@ struct RunContext {
     bool quiet;                     // no progress output
     std::filesystem::path work_dir; // for checkpoints of long runs (survives an interrupted run)
     double checkpoint_interval = 60.0; // [s] wall time between mid-run checkpoints (RunCheckpoint)
+    SweepPlan sweep = {};
 };
 
 struct Experiment {
@@ -26,6 +39,9 @@ struct Experiment {
     // Checks that relate parameters (e.g. time step against contact duration); throws InputError.
     void (*validate)(const ParameterSet&);
     Result (*run)(const RunContext&);
+    // True if run() computes its sweep points through distributed_sweep(): then MPI ranks and
+    // --points shards share its points; other experiments run on rank 0 alone.
+    bool distributed = false;
 };
 
 // The explicit table of experiments, in experiments/registry.cpp.

@@ -2,12 +2,16 @@
 
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
+#include <optional>
 #include <sstream>
 
 #include "core/input_error.hpp"
 #include "harness/claims.hpp"
 #include "core/provenance.hpp"
+#include "harness/distributed_sweep.hpp"
+#include "harness/mpi_world.hpp"
 #include "harness/plotter.hpp"
 #include "harness/run_log.hpp"
 #include "io/result_writer.hpp"
@@ -80,25 +84,54 @@ int run_experiment(const std::string& name, const RunOptions& opt, VerdictCounts
             fs::exists(final_dir / (f.id + ".png")))
             to_render.push_back(f.id);
 
-    StagedDirectory stage(final_dir);
-    // run.log: opened in the staging folder, so it moves into place with the results.
+    const int ranks = mpi::size();
+    const bool rank0 = mpi::rank() == 0;
+    SweepPlan plan = opt.sweep;
+    if (plan.mode == SweepPlan::Mode::All && opt.shard_from_slurm && exp.distributed)
+        if (const auto shard = slurm_array_shard()) plan = *shard;
+    if (plan.mode != SweepPlan::Mode::All) {
+        const char* what = plan.mode == SweepPlan::Mode::Gather ? "gather" : "--points";
+        if (!exp.distributed)
+            throw InputError(std::string(what) + ": experiment " + name + " has no distributed sweep; run it whole");
+        if (ranks > 1) throw InputError(std::string(what) + " runs without mpirun (one process per shard)");
+    }
+    // Without a distributed sweep the experiment is rank 0's alone.
+    if (!rank0 && !exp.distributed) return 0;
+    plan.ranks = exp.distributed ? ranks : 1;
+
+    // Shards and ranks > 0 write only checkpoint files (rank 0 writes them under MPI).
+    std::optional<StagedDirectory> stage;
+    if (rank0 && plan.mode != SweepPlan::Mode::Shard) stage.emplace(final_dir);
+    // run.log: opened in the staging folder, so it moves into place with the results (rank 0).
     struct CloseLog {
         ~CloseLog() { run_log().close(); }
     } close_log;
-    run_log().open(stage.path() / "run.log");
-    run_log().line("command: " + opt.command_line);
-    run_log().line(std::string("granrepro ") + code_version() + "; data files from " + project_root().string());
-    run_log().line(std::string("experiment ") + name + ", scale " + to_string(opt.scale) + ", seed " +
-                   std::to_string(opt.seed) + ", threads " + std::to_string(opt.threads));
-    for (const auto& p : params.all())
-        run_log().line("parameter " + p.name + " = " + p.value_text() + " [" + p.unit + "]" +
-                       (p.overridden ? " (--set)" : ""));
+    if (stage) {
+        run_log().open(stage->path() / "run.log");
+        run_log().line("command: " + opt.command_line);
+        run_log().line(std::string("granrepro ") + code_version() + "; data files from " + project_root().string());
+        run_log().line(std::string("experiment ") + name + ", scale " + to_string(opt.scale) + ", seed " +
+                       std::to_string(opt.seed) + ", threads " + std::to_string(opt.threads));
+        for (const auto& p : params.all())
+            run_log().line("parameter " + p.name + " = " + p.value_text() + " [" + p.unit + "]" +
+                           (p.overridden ? " (--set)" : ""));
+    }
     const fs::path work_dir = opt.out / ("." + name + ".checkpoint");
     fs::create_directories(work_dir);
-    const RunContext ctx{params, opt.scale, opt.seed, opt.threads, opt.quiet, work_dir, opt.checkpoint_interval};
+    RunContext ctx{params, opt.scale, opt.seed, opt.threads, opt.quiet || !rank0, work_dir, opt.checkpoint_interval};
+    ctx.sweep = plan;
 
     const auto t0 = std::chrono::steady_clock::now();
-    Result result = exp.run(ctx);
+    std::optional<Result> ran;
+    try {
+        ran.emplace(exp.run(ctx));
+    } catch (const SweepServed&) {
+        return 0;
+    } catch (const ShardFinished& e) {
+        std::printf("%s\n", e.what());
+        return 0;
+    }
+    Result& result = *ran;
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     run_log().line("run finished: wall time " + std::to_string(wall) + " s");
 
@@ -106,16 +139,16 @@ int run_experiment(const std::string& name, const RunOptions& opt, VerdictCounts
     for (const auto& id : to_render) plot_texts.emplace_back(id, read_text(project_root() / "plots" / (id + ".gp")));
     const Provenance prov{name,     info.paper, read_text(info.file),           opt.scale, opt.seed,
                           wall,     opt.threads, opt.command_line, read_text(expected_file(name)), plot_texts};
-    write_result_h5(stage.path() / "data.h5", prov, params, result);
-    write_tables_tsv(stage.path() / "tables", result);
+    write_result_h5(stage->path() / "data.h5", prov, params, result);
+    write_tables_tsv(stage->path() / "tables", result);
     const auto verdicts = evaluate_claims(claims, scalars_json(result), opt.scale);
     nlohmann::json summary = summary_json(prov, params, result);
     summary["claims"] = claims_to_json(verdicts);
     {
-        std::ofstream out(stage.path() / "summary.json");
+        std::ofstream out(stage->path() / "summary.json");
         out << summary.dump(2) << "\n";
     }
-    for (const auto& id : to_render) render_figure(id, stage.path(), final_dir);
+    for (const auto& id : to_render) render_figure(id, stage->path(), final_dir);
     const double wall_total = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     run_log().line("claims: " + [&] {
         VerdictCounts c;
@@ -125,7 +158,7 @@ int run_experiment(const std::string& name, const RunOptions& opt, VerdictCounts
     run_log().line("done: wall time " + std::to_string(wall_total) + " s with writing and " +
                    std::to_string(to_render.size()) + " figures");
     run_log().close();
-    stage.commit();
+    stage->commit();
     std::error_code ec;
     fs::remove_all(work_dir, ec);
     if (!opt.quiet) std::fprintf(stderr, "%s: %.1f s, results in %s\n", name.c_str(), wall, final_dir.c_str());
@@ -133,6 +166,27 @@ int run_experiment(const std::string& name, const RunOptions& opt, VerdictCounts
     std::fflush(stdout);
     if (totals) totals->add(verdicts);
     return all_pass(verdicts) ? 0 : 1;
+}
+
+SweepPlan parse_points(const std::string& text) {
+    SweepPlan plan;
+    plan.mode = SweepPlan::Mode::Shard;
+    char slash = 0, rest = 0;
+    std::istringstream in(text);
+    if (!(in >> plan.shard >> slash >> plan.shards) || slash != '/' || in >> rest || plan.shard < 1 ||
+        plan.shards < 1 || plan.shard > plan.shards)
+        throw InputError("--points " + text + ": expected I/N with 1 <= I <= N (shard I of N)");
+    return plan;
+}
+
+std::optional<SweepPlan> slurm_array_shard() {
+    const char* id = std::getenv("SLURM_ARRAY_TASK_ID");
+    const char* count = std::getenv("SLURM_ARRAY_TASK_COUNT");
+    if (!id || !count) return std::nullopt;
+    const char* min = std::getenv("SLURM_ARRAY_TASK_MIN");
+    const char* step = std::getenv("SLURM_ARRAY_TASK_STEP");
+    const long i = std::atol(id), lo = min ? std::atol(min) : 0, st = step ? std::max(1L, std::atol(step)) : 1;
+    return parse_points(std::to_string((i - lo) / st + 1) + "/" + count);
 }
 
 bool has_results(const std::string& name, const fs::path& out) { return fs::exists(out / name / "summary.json"); }

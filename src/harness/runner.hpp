@@ -2,6 +2,7 @@
 #pragma once
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -20,7 +21,15 @@ struct RunOptions {
     std::vector<std::string> sets;          // --set name=value
     std::vector<std::string> figures;       // empty: render all of the experiment's figures
     std::string command_line;               // as typed (provenance, run.log)
+    SweepPlan sweep;                        // --points I/N or `gather` (ranks: set by the runner)
+    bool shard_from_slurm = false;          // no --points: a job-array task is shard ID of COUNT
 };
+
+// Parses --points "I/N" (1 <= I <= N); throws InputError.
+SweepPlan parse_points(const std::string& text);
+// The shard of a Slurm job-array task ($SLURM_ARRAY_TASK_ID of $SLURM_ARRAY_TASK_COUNT, counted
+// from $SLURM_ARRAY_TASK_MIN in steps of $SLURM_ARRAY_TASK_STEP), or nothing outside an array job.
+std::optional<SweepPlan> slurm_array_shard();
 
 const Experiment& find_experiment(const std::string& name);          // throws InputError
 ExperimentInfo experiment_info(const std::string& name);
@@ -30,7 +39,10 @@ std::string experiment_of_figure(const std::string& id);
 // by --help.
 ParameterSet resolve_parameters(const std::string& name, const RunOptions& opt);
 
-// Runs, writes, renders and prints the check table. Returns the process exit code: 0 if no claim
+// Runs, writes, renders and prints the check table. Under mpirun, rank 0 does all of this; the
+// other ranks compute sweep points of distributed experiments and skip the rest. A --points shard
+// only computes its points into OUT/.<name>.checkpoint/ (exit 0); `gather` (sweep.mode Gather)
+// writes the results from there, or fails with exit 2 naming the missing points. Returns the process exit code: 0 if no claim
 // fails, 1 if one does. `figure` (opt.figures) renders the requested figures plus those the
 // previous run had rendered, so a figure run never deletes the experiment's other figures.
 // totals, if given, accumulates the verdicts.

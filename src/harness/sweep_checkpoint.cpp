@@ -7,8 +7,8 @@
 
 namespace granrepro {
 
-SweepCheckpoint::SweepCheckpoint(const RunContext& ctx) {
-    const std::string fingerprint = ctx.params.to_json().dump() + to_string(ctx.scale) + std::to_string(ctx.seed);
+SweepCheckpoint::SweepCheckpoint(const RunContext& ctx, const std::string& label) {
+    const std::string fingerprint = ctx.params.to_json().dump() + to_string(ctx.scale) + std::to_string(ctx.seed) + label;
     const std::size_t h = std::hash<std::string>{}(fingerprint);
     dir_ = ctx.work_dir / ("sweep-" + std::to_string(h));
     std::filesystem::create_directories(dir_);

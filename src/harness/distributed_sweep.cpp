@@ -1,0 +1,200 @@
+#include "harness/distributed_sweep.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <exception>
+#include <mutex>
+#include <thread>
+
+#include "core/input_error.hpp"
+#include "harness/mpi_world.hpp"
+#include "harness/progress.hpp"
+#include "harness/sweep_checkpoint.hpp"
+
+#ifdef GRANREPRO_HAVE_MPI
+#include <mpi.h>
+#endif
+
+namespace granrepro {
+
+namespace {
+
+// Threads of a rank > 0 that fetch points, each with its own message tag (1 + thread).
+int serving_threads(const RunContext& ctx) { return mpi::threads_may_call_mpi() ? std::max(1, ctx.threads) : 1; }
+
+[[noreturn]] void point_failed(long i, const char* what) {
+    std::fprintf(stderr, "granrepro: rank %d: sweep point %ld failed: %s\n", mpi::rank(), i, what);
+    mpi::abort(1);
+}
+
+#ifdef GRANREPRO_HAVE_MPI
+// Waits without spinning: OpenMPI's blocking calls poll at 100 % CPU, which would take a core
+// from the ranks that compute.
+void wait_for(MPI_Request& request) {
+    for (int done = 0;;) {
+        MPI_Test(&request, &done, MPI_STATUS_IGNORE);
+        if (done) return;
+        std::this_thread::sleep_for(std::chrono::microseconds(200));
+    }
+}
+
+// Rank > 0: each thread asks rank 0 for a point, computes it, sends the result with the next
+// request, until rank 0 answers -1.
+void serve_points(const RunContext& ctx, const std::function<nlohmann::json(long)>& compute) {
+    auto worker = [&](int thread) {
+        const int tag = 1 + thread;
+        std::string message = "-1";
+        for (;;) {
+            MPI_Request request;
+            MPI_Isend(message.data(), int(message.size()), MPI_CHAR, 0, tag, MPI_COMM_WORLD, &request);
+            wait_for(request);
+            long long next = -1;
+            MPI_Irecv(&next, 1, MPI_LONG_LONG, 0, tag, MPI_COMM_WORLD, &request);
+            wait_for(request);
+            if (next < 0) return;
+            try {
+                message = std::to_string(next) + " " + compute(long(next)).dump();
+            } catch (const std::exception& e) {
+                point_failed(long(next), e.what());
+            }
+        }
+    };
+    const int n = serving_threads(ctx);
+    std::vector<std::thread> pool;
+    for (int t = 1; t < n; ++t) pool.emplace_back(worker, t);
+    worker(0);
+    for (auto& th : pool) th.join();
+}
+#endif
+
+} // namespace
+
+SweepResult distributed_sweep(const RunContext& ctx, const std::string& label, const std::vector<long>& order,
+                              const std::function<nlohmann::json(long)>& compute) {
+    const bool spread = ctx.sweep.ranks > 1;
+#ifdef GRANREPRO_HAVE_MPI
+    if (spread && mpi::rank() != 0) {
+        serve_points(ctx, compute);
+        throw SweepServed{};
+    }
+#endif
+    const long n = long(order.size());
+    SweepCheckpoint checkpoint(ctx, label);
+    SweepResult out;
+    out.points.resize(std::size_t(n));
+    std::vector<char> have(std::size_t(n), 0);
+    for (long i = 0; i < n; ++i)
+        if (auto saved = checkpoint.load(i)) {
+            out.points[std::size_t(i)] = std::move(*saved);
+            have[std::size_t(i)] = 1;
+            ++out.resumed; // not computed again
+        }
+
+    const SweepPlan& plan = ctx.sweep;
+    std::vector<long> todo; // in cost order
+    std::vector<long> missing;
+    for (long s = 0; s < n; ++s) {
+        const long i = order[std::size_t(s)];
+        if (have[std::size_t(i)]) continue;
+        missing.push_back(i);
+        if (plan.mode == SweepPlan::Mode::Shard && s % plan.shards != plan.shard - 1) continue;
+        todo.push_back(i);
+    }
+    if (plan.mode == SweepPlan::Mode::Gather && !missing.empty()) {
+        std::sort(missing.begin(), missing.end());
+        std::string list;
+        for (std::size_t k = 0; k < missing.size() && k < 20; ++k) list += (k ? ", " : "") + std::to_string(missing[k]);
+        if (missing.size() > 20) list += ", ...";
+        throw InputError(label + ": " + std::to_string(missing.size()) + " point" + (missing.size() == 1 ? "" : "s") +
+                         " missing: " + list + " (of " + std::to_string(n) +
+                         "; run the missing --points shards with the same flags, then gather again)");
+    }
+
+    // Test hook, like GRANREPRO_INTERRUPT_AFTER_CHECKPOINTS: end the job (every rank) once this
+    // many points have been computed and saved, as a killed job would.
+    const char* stop_env = std::getenv("GRANREPRO_INTERRUPT_AFTER_POINTS");
+    const long stop_after = stop_env ? std::atol(stop_env) : 0;
+
+    Progress progress(label, long(todo.size()), ctx.quiet);
+    std::mutex mutex;
+    std::size_t next = 0;
+    long computed = 0;
+    std::exception_ptr error;
+    auto dispense = [&]() -> long {
+        std::lock_guard<std::mutex> lock(mutex);
+        return next < todo.size() ? todo[next++] : -1;
+    };
+    auto store = [&](long i, nlohmann::json value) {
+        std::lock_guard<std::mutex> lock(mutex); // also makes the interruption hook exact
+        checkpoint.save(i, value);
+        out.points[std::size_t(i)] = std::move(value);
+        progress.tick();
+        if (++computed == stop_after) {
+            std::fprintf(stderr, "granrepro: %s: interrupted after point %ld (GRANREPRO_INTERRUPT_AFTER_POINTS)\n",
+                         label.c_str(), computed);
+            mpi::abort(3);
+        }
+    };
+    auto local = [&] {
+        long i = -1;
+        try {
+            while ((i = dispense()) >= 0) store(i, compute(i));
+        } catch (const std::exception& e) {
+            if (spread) point_failed(i, e.what());
+            std::lock_guard<std::mutex> lock(mutex);
+            if (!error) error = std::current_exception();
+            next = todo.size();
+        }
+    };
+    const int threads = std::max(1, std::min<int>(ctx.threads, int(todo.size())));
+    std::vector<std::thread> pool;
+    for (int t = spread ? 0 : 1; t < threads; ++t) pool.emplace_back(local);
+#ifdef GRANREPRO_HAVE_MPI
+    if (spread) {
+        // Rank 0's main thread hands out points: each request carries the sender's previous
+        // result ("<index> <json>", or "-1" for none); the answer is the next index or -1.
+        const long serving = long(ctx.sweep.ranks - 1) * serving_threads(ctx);
+        for (long stopped = 0; stopped < serving;) {
+            int flag = 0;
+            MPI_Status status;
+            MPI_Iprobe(MPI_ANY_SOURCE, MPI_ANY_TAG, MPI_COMM_WORLD, &flag, &status);
+            if (!flag) {
+                std::this_thread::sleep_for(std::chrono::microseconds(200));
+                continue;
+            }
+            int bytes = 0;
+            MPI_Get_count(&status, MPI_CHAR, &bytes);
+            std::string message(std::size_t(bytes), '\0');
+            MPI_Recv(message.data(), bytes, MPI_CHAR, status.MPI_SOURCE, status.MPI_TAG, MPI_COMM_WORLD,
+                     MPI_STATUS_IGNORE);
+            const std::size_t space = message.find(' ');
+            const long done = std::stol(message.substr(0, space));
+            if (done >= 0) store(done, nlohmann::json::parse(message.substr(space + 1)));
+            long long give = dispense();
+            MPI_Request request;
+            MPI_Isend(&give, 1, MPI_LONG_LONG, status.MPI_SOURCE, status.MPI_TAG, MPI_COMM_WORLD, &request);
+            wait_for(request);
+            if (give < 0) ++stopped;
+        }
+    } else
+#endif
+    {
+        local();
+    }
+    for (auto& th : pool) th.join();
+    if (error) std::rethrow_exception(error);
+
+    if (plan.mode == SweepPlan::Mode::Shard) {
+        long present = 0;
+        for (const auto& j : out.points) present += !j.is_null();
+        throw ShardFinished(label + ": shard " + std::to_string(plan.shard) + "/" + std::to_string(plan.shards) + ": " +
+                            std::to_string(todo.size()) + " point" + (todo.size() == 1 ? "" : "s") + " computed, " +
+                            std::to_string(present) + " of " + std::to_string(n) +
+                            " in the checkpoint; `granrepro gather " + label + "` with the same flags writes the results");
+    }
+    return out;
+}
+
+} // namespace granrepro

@@ -1,0 +1,174 @@
+// Sweeps spread over MPI ranks, job-array shards and interrupted jobs give the single-process
+// result bit for bit (issue 18): every table in data.h5 and every scalar but the wall-clock ones
+// and resumed_points. Small grids (--set) keep each case to seconds.
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <thread>
+
+#include "cli_support.hpp"
+#include "io/h5_file.hpp"
+
+namespace fs = std::filesystem;
+using cli_support::fresh;
+using cli_support::Outcome;
+using cli_support::run;
+using granrepro::H5File;
+
+namespace {
+
+// The two quick-scale sweeps of the issue, shrunk: bistable-pipe's k_N x e_N x start grid (8
+// points) with short budgets, and parameter-study's (r, t_c) x seeds (6 points) on 64 disks.
+const std::string kBistable =
+    "bistable-pipe --scale quick --set kN_list=200,2000 --set eN_list=0.8,0.95 --set budget_tcol=4000 --set window=0.1 --set t_average=0.1 ";
+const std::string kParamStudy = "parameter-study --scale quick --set n_side=8 --set cn_end=20 --set seeds=2 "
+                                "--set fig8_r=0.5 --set fig9_t_c=1e-10,1e-5 ";
+
+nlohmann::json summary(const fs::path& dir) {
+    std::ifstream in(dir / "summary.json");
+    return nlohmann::json::parse(in);
+}
+
+bool wall_clock(const std::string& k) {
+    return k == "resumed_points" || k.find("wall") != std::string::npos || k.find("per_second") != std::string::npos;
+}
+
+// Every table dataset and every scalar (but the wall-clock ones) of two result directories.
+void expect_identical(const fs::path& a, const fs::path& b) {
+    ASSERT_TRUE(fs::exists(a / "data.h5")) << a;
+    ASSERT_TRUE(fs::exists(b / "data.h5")) << b;
+    const H5File fa = H5File::open((a / "data.h5").string()), fb = H5File::open((b / "data.h5").string());
+    const auto ta = fa.open_group("tables"), tb = fb.open_group("tables");
+    ASSERT_EQ(ta.children(), tb.children());
+    std::size_t values = 0;
+    for (const auto& t : ta.children()) {
+        const auto ga = ta.open_group(t), gb = tb.open_group(t);
+        ASSERT_EQ(ga.children(), gb.children()) << t;
+        for (const auto& c : ga.children()) {
+            const auto va = ga.read_dataset(c), vb = gb.read_dataset(c);
+            ASSERT_EQ(va.size(), vb.size()) << t << "/" << c;
+            EXPECT_EQ(0, std::memcmp(va.data(), vb.data(), va.size() * sizeof(double))) << t << "/" << c;
+            values += va.size();
+        }
+    }
+    EXPECT_GT(values, 10u);
+    const auto sa = summary(a).at("scalars"), sb = summary(b).at("scalars");
+    ASSERT_EQ(sa.size(), sb.size());
+    for (auto it = sa.begin(); it != sa.end(); ++it)
+        if (!wall_clock(it.key())) {
+            EXPECT_EQ(it.value().dump(), sb.at(it.key()).dump()) << it.key();
+        }
+}
+
+double resumed(const fs::path& dir) { return summary(dir).at("scalars").at("resumed_points").get<double>(); }
+
+std::string mpirun(int ranks) {
+    // CI runs as root on 2 cores: OpenMPI needs both run-as-root variables and --oversubscribe.
+    return std::string("OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 ") + GRANREPRO_MPIEXEC +
+           " --oversubscribe -np " + std::to_string(ranks) + " ";
+}
+
+// Runs `granrepro args` (exit 0 or 1: shrunk grids may fail claims) and returns OUT/<experiment>.
+fs::path single(const std::string& args, const fs::path& out, const std::string& name) {
+    const Outcome o = run(args + "--quiet --threads 2 --out " + out.string());
+    EXPECT_LE(o.code, 1) << o.err;
+    return out / name;
+}
+
+// A shell command (the MPI cases need the launcher and its environment); its exit code.
+int shell(const std::string& cmd) {
+    const int status = std::system((cmd + " > /dev/null 2>&1").c_str());
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+void mpi_equals_single(const std::string& args, const std::string& name, int ranks, int threads) {
+    const fs::path a = fresh(name + "-single"), b = fresh(name + "-mpi" + std::to_string(ranks));
+    const fs::path ra = single(args, a, name);
+    const int code = shell(mpirun(ranks) + GRANREPRO_BINARY + " " + args + "--quiet --threads " +
+                           std::to_string(threads) + " --out " + b.string());
+    EXPECT_LE(code, 1);
+    expect_identical(ra, b / name);
+    EXPECT_EQ(resumed(b / name), 0);
+    EXPECT_FALSE(fs::exists(b / ("." + name + ".checkpoint")));
+    fs::remove_all(a);
+    fs::remove_all(b);
+}
+
+} // namespace
+
+#ifdef GRANREPRO_MPIEXEC
+TEST(SweepMpi, BistablePipeThreeRanksEqualsSingleRun) { mpi_equals_single(kBistable, "bistable-pipe", 3, 1); }
+TEST(SweepMpi, BistablePipeTwoRanksTwoThreadsEqualsSingleRun) { mpi_equals_single(kBistable, "bistable-pipe", 2, 2); }
+TEST(SweepMpi, ParameterStudyThreeRanksEqualsSingleRun) { mpi_equals_single(kParamStudy, "parameter-study", 3, 1); }
+
+// A job killed after 3 of its 8 points (every rank ends, as when a node is lost) leaves those 3 in
+// the checkpoint; the same command again computes only the other 5 and equals an uninterrupted run.
+TEST(SweepMpi, KilledJobResumesOnlyMissingPoints) {
+    const fs::path a = fresh("kill-single"), b = fresh("kill-mpi");
+    const fs::path ra = single(kBistable, a, "bistable-pipe");
+    const std::string cmd = mpirun(2) + GRANREPRO_BINARY + " " + kBistable + "--quiet --out " + b.string();
+    EXPECT_GT(shell("GRANREPRO_INTERRUPT_AFTER_POINTS=3 " + cmd), 1);
+    EXPECT_FALSE(fs::exists(b / "bistable-pipe"));
+    EXPECT_LE(shell(cmd), 1);
+    EXPECT_EQ(resumed(b / "bistable-pipe"), 3);
+    expect_identical(ra, b / "bistable-pipe");
+    fs::remove_all(a);
+    fs::remove_all(b);
+}
+#endif
+
+// --points 1/2 and 2/2 into one --out, then gather: the single run's result. Gather before the
+// second shard refuses (exit 2) naming the missing points.
+TEST(SweepShards, ShardsPlusGatherEqualSingleRun) {
+    const fs::path a = fresh("shard-single"), b = fresh("shards");
+    const fs::path ra = single(kBistable, a, "bistable-pipe");
+    const std::string base = kBistable + "--quiet --out " + b.string() + " ";
+    ASSERT_EQ(run(base + "--points 1/2").code, 0);
+    EXPECT_FALSE(fs::exists(b / "bistable-pipe"));
+    const Outcome early = run("gather " + base);
+    EXPECT_EQ(early.code, 2);
+    EXPECT_NE(early.err.find("4 points missing: "), std::string::npos) << early.err;
+    ASSERT_EQ(run(base + "--points 2/2").code, 0);
+    ASSERT_LE(run("gather " + base).code, 1);
+    EXPECT_EQ(resumed(b / "bistable-pipe"), 8);
+    expect_identical(ra, b / "bistable-pipe");
+    fs::remove_all(a);
+    fs::remove_all(b);
+}
+
+// Two shards at once into one --out (as two array tasks on a shared file system), the second one
+// taken from Slurm's job-array variables; then gather.
+TEST(SweepShards, ConcurrentShardsFromSlurmEqualSingleRun) {
+    const fs::path a = fresh("conc-single"), b = fresh("conc-shards");
+    const fs::path ra = single(kParamStudy, a, "parameter-study");
+    const std::string base = kParamStudy + "--quiet --out " + b.string() + " ";
+    Outcome o1, o2;
+    std::thread t1([&] { o1 = run(base, "SLURM_ARRAY_TASK_ID=0 SLURM_ARRAY_TASK_MIN=0 SLURM_ARRAY_TASK_COUNT=2"); });
+    std::thread t2([&] { o2 = run(base, "SLURM_ARRAY_TASK_ID=1 SLURM_ARRAY_TASK_MIN=0 SLURM_ARRAY_TASK_COUNT=2"); });
+    t1.join();
+    t2.join();
+    ASSERT_EQ(o1.code, 0) << o1.err;
+    ASSERT_EQ(o2.code, 0) << o2.err;
+    EXPECT_FALSE(fs::exists(b / "parameter-study"));
+    ASSERT_LE(run("gather " + base).code, 1);
+    EXPECT_EQ(resumed(b / "parameter-study"), 6);
+    expect_identical(ra, b / "parameter-study");
+    fs::remove_all(a);
+    fs::remove_all(b);
+}
+
+TEST(SweepShards, BadPointsAndNonSweepingExperimentsAreInputErrors) {
+    const fs::path b = fresh("bad-points");
+    for (const char* p : {"0/2", "3/2", "1/0", "1-2", "1/2x"}) {
+        const Outcome o = run(kBistable + "--quiet --points " + p + " --out " + b.string());
+        EXPECT_EQ(o.code, 2) << p;
+        EXPECT_NE(o.err.find("--points"), std::string::npos) << o.err;
+    }
+    const Outcome g = run("gather brake-failure --out " + b.string());
+    EXPECT_EQ(g.code, 2);
+    EXPECT_NE(g.err.find("no distributed sweep"), std::string::npos) << g.err;
+    fs::remove_all(b);
+}
