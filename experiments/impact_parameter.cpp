@@ -205,7 +205,13 @@ void validate(const ParameterSet& p) {
     const auto n = static_cast<std::size_t>(p.integer("N"));
     const double d = p.real("d");
     staggered_lattice(n, box_side(n, d, p.real("rho")), d);
-    for (double rho : p.reals("elastic_densities")) staggered_lattice(n, box_side(n, d, rho), d);
+    for (double rho : p.reals("elastic_densities")) {
+        try {
+            staggered_lattice(n, box_side(n, d, rho), d);
+        } catch (const InputError& e) {
+            p.reject("elastic_densities", std::string("at ") + number_text(rho) + ": " + e.what());
+        }
+    }
 }
 
 Result run(const RunContext& ctx) {
