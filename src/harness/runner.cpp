@@ -84,7 +84,16 @@ int run_experiment(const std::string& name, const RunOptions& opt, VerdictCounts
     const RunContext ctx{params, opt.scale, opt.seed, opt.threads, opt.quiet, work_dir, opt.checkpoint_interval};
 
     const auto t0 = std::chrono::steady_clock::now();
-    Result result = exp.run(ctx);
+    Result result;
+    try {
+        result = exp.run(ctx);
+    } catch (const InputError&) {
+        // A late refusal of the input fails the same way on every rerun: its checkpoints can
+        // never be resumed, so no hidden .X.checkpoint/ outlives it (issue 20).
+        std::error_code ec;
+        fs::remove_all(work_dir, ec);
+        throw;
+    }
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
     Provenance prov{name, info.paper, read_text(info.file), opt.scale, opt.seed, wall, opt.threads};
