@@ -26,6 +26,7 @@
 #include "engines/soft/pipe_engine.hpp"
 #include "experiments/impact_shot.hpp"
 #include "experiments/pipe_setup.hpp"
+#include "experiments/work_limits.hpp"
 #include "harness/experiment.hpp"
 #include "harness/distributed_sweep.hpp"
 #include "models/coulomb_shear.hpp"
@@ -235,13 +236,47 @@ void validate(const ParameterSet& p) {
     for (double k : p.reals("kN_list"))
         for (double e : p.reals("eN_list"))
             if (time_budget(p, k, e) < p.real("window") + p.real("t_average"))
-                p.reject("budget_tcol", "the budget of k_N = " + std::to_string(k) + " N/m, e_N = " + std::to_string(e) +
+                p.reject("budget_tcol", "the budget of k_N = " + number_text(k) + " N/m, e_N = " + number_text(e) +
                                             " is shorter than window + t_average: no steady state could be detected");
+    {
+        // The start: phi of the channel as grains on a lattice (phi = 0.79 failed late with "area
+        // fraction too high for a lattice start"), then every run's cost in grain-steps.
+        PipeSpec s = base_spec(p, 0);
+        const std::vector<std::string> geometry{"phi", "width", "length", "wall_spacing", "d_mean", "polydispersity", "d_wall"};
+        const long n = pipe_grain_count(s);
+        p.limit_work(geometry, double(n), 1e7, "grains");
+        if (n < 1) p.reject(geometry, "the channel holds no grain at this area fraction");
+        if (!pipe_lattice_fits(s))
+            p.reject(geometry, "the " + std::to_string(n) +
+                                   " grains do not fit on a triangular lattice of spacing >= d_mean (1 + polydispersity) "
+                                   "between the wall crests; lower phi");
+        const double d_min = s.d_mean * (1 - s.polydispersity);
+        const double m_min = s.m_mean * (d_min / s.d_mean) * (d_min / s.d_mean);
+        for (double k : p.reals("kN_list"))
+            for (double e : p.reals("eN_list")) {
+                // build_pipe's step: the stiffest (lightest free-free) pair, Eq. (5).
+                const double dt = pipe_law(k, e, s.m_mean).collision_time(0.5 * m_min) / s.steps_per_contact;
+                p.limit_work({"budget_tcol", "steps_per_contact", "kN_list", "eN_list", "phi", "width", "length", "d_mean"},
+                             double(n) * time_budget(p, k, e) / dt, kMaxGrainSteps, "grain-steps in one run");
+                // One sample per step at most: sample_dt = 1e-300 overflowed window/sample_dt and
+                // crashed the drift fit.
+                if (!(p.real("sample_dt") >= dt))
+                    p.reject(std::vector<std::string>{"sample_dt", "m_mean", "kN_list", "eN_list", "steps_per_contact"},
+                             "sample_dt must be at least the time step dt = " + number_text(dt) + " s (k_N = " +
+                                 number_text(k) + " N/m, e_N = " + number_text(e) + "): one sample per step");
+            }
+    }
+    if (p.real("wall_spacing") - p.real("d_wall") >= p.real("d_mean") * (1 - p.real("polydispersity")))
+        p.reject(std::vector<std::string>{"wall_spacing", "d_wall", "d_mean", "polydispersity"},
+                 "the gaps between wall grains (wall_spacing - d_wall) must be narrower than the smallest grain, "
+                 "or grains fall through the wall");
     if (p.real("sample_dt") > p.real("window") / 3)
         p.reject("sample_dt", "must be at most window / 3 so that a drift can be fitted");
     if (p.real("eq9_window") < p.real("sample_dt")) p.reject("eq9_window", "must be at least sample_dt");
     const double range = p.real("d_mean") * (1 + p.real("polydispersity")) + p.real("skin");
-    if (p.real("length") < 4 * range) p.reject("length", "must be at least 4 interaction ranges");
+    if (p.real("length") < 4 * range)
+        p.reject(std::vector<std::string>{"length", "d_mean", "polydispersity", "skin"},
+                 "length must be at least 4 interaction ranges d_mean (1 + polydispersity) + skin");
     if (p.real("length_check") > 0 && p.real("length_check") < 4 * range)
         p.reject("length_check", "must be 0 (off) or at least 4 interaction ranges");
     if (p.real("wall_spacing") < p.real("d_wall") * (1 - 1e-12))

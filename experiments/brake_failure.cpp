@@ -21,11 +21,29 @@ constexpr std::array kReadings{FrictionNormal::Magnitude, FrictionNormal::Clippe
                                FrictionNormal::Signed};
 
 void validate(const ParameterSet& p) {
-    validate_free_wall_law(p);
+    const double dt = validate_free_wall_law(p);
     const double reach = 0.5 * (p.real("d_free") + p.real("d_wall"));
     if (p.real("offset") >= reach)
-        p.reject("offset", "must be below (d_free + d_wall)/2 = " + std::to_string(reach) + " m or the grains never touch");
+        p.reject("offset", "must be below (d_free + d_wall)/2 = " + number_text(reach) + " m or the grains never touch");
     if (p.real("vy_min") >= p.real("vy_max")) p.reject("vy_min", "must be below vy_max");
+    // The slowest shot (vy_min, dt/fine_factor) starts 1e-3 d_free before contact and crosses the
+    // chord 2 y_c; each shot must end within max_steps (d_free = 1e10 ran for ever).
+    const double yc = std::sqrt(reach * reach - p.real("offset") * p.real("offset"));
+    const double fine = p.real("fine_factor");
+    limit_shot_steps(p, {"d_free", "d_wall", "offset", "vy_min", "fine_factor", "k_N", "m_free", "steps_per_contact"},
+                     1e-3 * p.real("d_free") + 2 * yc, p.real("vy_min"), dt / fine, p.real("steps_per_contact") * fine);
+    // The fastest shot (10 vy_max with dt/10) must take at least one step inside the contact
+    // chord, or it passes through the wall grain unresolved (vy_max = 1e308 ran for ever).
+    if (!(p.real("vy_max") * dt <= 2 * yc))
+        p.reject(std::vector<std::string>{"vy_max", "offset", "k_N", "m_free", "steps_per_contact"},
+                 "at 10 vy_max with dt/10 = " + number_text(dt / 10) + " s the grain crosses the contact chord 2 y_c = " +
+                     number_text(2 * yc) + " m in less than one time step; vy_max must be at most " +
+                     number_text(2 * yc / dt) + " m/s");
+    // The same for the speed towards the wall grain.
+    if (!(p.real("vx_i") * dt <= 2 * yc))
+        p.reject(std::vector<std::string>{"vx_i", "offset", "k_N", "m_free", "steps_per_contact"},
+                 "vx_i must be at most " + number_text(2 * yc / dt) + " m/s: at dt = " + number_text(dt) +
+                     " s the grain would cross the contact chord 2 y_c in less than one time step");
 }
 
 // The Fig. 3 geometry: wall grain at the origin, free grain on the line x = offset, starting just

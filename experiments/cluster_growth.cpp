@@ -34,6 +34,7 @@
 #include "core/rng_stream.hpp"
 #include "engines/ed/ed_engine.hpp"
 #include "engines/ed/ed_initial_states.hpp"
+#include "experiments/work_limits.hpp"
 #include "harness/experiment.hpp"
 #include "harness/progress.hpp"
 #include "harness/run_checkpoint.hpp"
@@ -50,10 +51,23 @@ namespace {
 void validate(const ParameterSet& p) {
     const long ns = p.integer("n_side");
     if (p.real("box_over_d") / double(ns) < 1.0000001)
-        p.reject("box_over_d", "too small for a square-lattice start (lattice spacing below d)");
+        p.reject(std::vector<std::string>{"box_over_d", "n_side"},
+                 "box_over_d too small for a square-lattice start of n_side^2 disks (lattice spacing below d)");
+    // The linked-cell grid of the ED engine has ~(box_over_d)^2 cells of one diameter.
+    p.limit_work({"box_over_d"}, p.real("box_over_d") * p.real("box_over_d"), 1e8, "cells of the linked-cell grid");
     if (p.real("box_over_d") < 3.0) p.reject("box_over_d", "must be at least 3 (three cells for the minimum image)");
     if (p.real("t_max") <= p.real("t_base")) p.reject("t_max", "must exceed t_base");
     if (p.reals("paper_cn").empty()) p.reject("paper_cn", "needs at least one value");
+    {
+        // The main run to C/N = cn_end (or t_max), the other pair rule beside it, the
+        // equilibration: bounded by 2 (cn_end + equilibration) collisions per particle.
+        const double n = double(ns) * double(ns);
+        p.limit_work({"cn_end", "n_side", "equilibration"}, 2 * n / 2 * (p.real("cn_end") + p.real("equilibration")),
+                     kMaxCollisions, "collisions");
+        // Samples at t_base 2^(j/m) up to t_max, each holding the N positions.
+        const double samples = std::log2(p.real("t_max") / p.real("t_base")) * double(p.integer("samples_per_octave"));
+        p.limit_work({"t_max", "t_base", "samples_per_octave"}, samples, 1e5, "samples");
+    }
 }
 
 // One instant t = t_base 2^k and what was measured there.

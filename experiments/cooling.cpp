@@ -24,6 +24,7 @@
 #include "engines/dsmc/dsmc_engine.hpp"
 #include "engines/ed/ed_engine.hpp"
 #include "engines/ed/ed_initial_states.hpp"
+#include "experiments/work_limits.hpp"
 #include "harness/experiment.hpp"
 #include "harness/parallel_sweep.hpp"
 #include "harness/run_checkpoint.hpp"
@@ -40,6 +41,15 @@ namespace granrepro::experiments {
 namespace {
 
 void validate(const ParameterSet& p) {
+    {
+        // Collisions of the ED and DSMC runs, bounded above at the initial Enskog rate (cooling
+        // only slows it); vbar = 1e308 got as far as "all velocities are equal".
+        const double n = double(p.integer("n_side")) * double(p.integer("n_side")), rho = p.real("rho");
+        const double omega = theory::enskog_collision_rate_vbar(rho, p.real("d"), p.real("vbar"), theory::henderson_contact_value(rho));
+        const double runs = double(p.integer("seeds")) * (double(p.flag("run_ed")) + double(p.flag("run_dsmc")));
+        p.limit_work({"t_end", "n_side", "seeds", "vbar", "rho", "d", "equilibration"},
+                     runs * n / 2 * (omega * p.real("t_end") + p.real("equilibration")), kMaxCollisions, "collisions");
+    }
     const auto& w = p.reals("bd_windows");
     for (std::size_t i = 1; i < w.size(); ++i)
         if (!(w[i] > w[i - 1])) p.reject("bd_windows", "edges must increase");

@@ -2,6 +2,7 @@
 // touching wall grains with v_x^i towards the wall and v_y^i along it; each point is the mean
 // over start positions spaced equally over one wall wavelength. Far in the brake-failure regime
 // the grain ploughs through several wall grains and Δv_y rises again (the "emergency brake").
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <string>
@@ -17,12 +18,39 @@ namespace granrepro::experiments {
 namespace {
 
 void validate(const ParameterSet& p) {
-    validate_free_wall_law(p);
+    const double dt = validate_free_wall_law(p);
     const double reach = 0.5 * (p.real("d_free") + p.real("d_wall"));
     if (p.real("x_start") < reach)
         p.reject("x_start", "the free grain would start overlapping the wall grains; must be at least (d_free + d_wall)/2 = " +
-                                std::to_string(reach) + " m");
+                                number_text(reach) + " m");
     if (p.real("vy_min") >= p.real("vy_max")) p.reject("vy_min", "must be below vy_max");
+    // A wall: the free grain must not fit through the gap between two wall grains, or it never
+    // comes back and each shot runs to max_steps.
+    for (const char* spacing : {"wall_spacing", "pipe_wall_spacing"}) {
+        if (p.real(spacing) < p.real("d_wall") * (1 - 1e-12))
+            p.reject(std::vector<std::string>{spacing, "d_wall"}, std::string(spacing) + " must be at least d_wall (wall grains would overlap)");
+        if (p.real(spacing) - p.real("d_wall") >= p.real("d_free"))
+            p.reject(std::vector<std::string>{spacing, "d_wall", "d_free"},
+                     "the gap between wall grains (" + std::string(spacing) + " - d_wall) must be narrower than d_free");
+    }
+    // The fastest shot must take several steps over a wall grain: at most d_wall/2 per step at
+    // the softest law of the k_N scan (the largest dt).
+    double k_min = p.real("k_N");
+    for (double k : p.reals("kN_scan")) k_min = std::min(k_min, k);
+    const double dt_max = dt * std::sqrt(p.real("k_N") / k_min);
+    const double v_fast = std::max(p.real("vy_max"), *std::max_element(p.reals("vx_list").begin(), p.reals("vx_list").end()));
+    if (!(v_fast * dt_max <= 0.5 * p.real("d_wall")))
+        p.reject(std::vector<std::string>{"vy_max", "vx_list", "kN_scan", "k_N", "m_free", "steps_per_contact"},
+                 "vy_max and every v_x^i must be at most d_wall / (2 dt) = " + number_text(0.5 * p.real("d_wall") / dt_max) +
+                     " m/s (dt = " + number_text(dt_max) + " s at the softest k_N): faster grains skip through the wall");
+    // The slowest shot: the smallest v_x^i from x_start to the wall and a diameter into it, at
+    // the time step of the stiffest law of the k_N scan.
+    double k_max = p.real("k_N");
+    for (double k : p.reals("kN_scan")) k_max = std::max(k_max, k);
+    const double vx_min = *std::min_element(p.reals("vx_list").begin(), p.reals("vx_list").end());
+    limit_shot_steps(p, {"x_start", "d_free", "vx_list", "kN_scan", "k_N", "m_free", "steps_per_contact"},
+                     p.real("x_start") - reach + p.real("d_free"), vx_min, dt * std::sqrt(p.real("k_N") / k_max),
+                     p.real("steps_per_contact") * std::sqrt(k_max / p.real("k_N")));
 }
 
 struct Point {

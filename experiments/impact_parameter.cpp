@@ -21,7 +21,9 @@
 #include "engines/ed/ed_engine.hpp"
 #include "engines/ed/ed_initial_states.hpp"
 #include "engines/ed3d/hard_sphere_gas.hpp"
+#include "experiments/work_limits.hpp"
 #include "harness/experiment.hpp"
+#include "theory/kinetic_theory.hpp"
 #include "harness/parallel_sweep.hpp"
 #include "harness/progress.hpp"
 #include "observables/collisional_stress.hpp"
@@ -176,13 +178,26 @@ double flow_fraction(const std::vector<Vec2>& pos, const std::vector<Vec2>& vel,
 
 void validate(const ParameterSet& p) {
     const double t_end = p.real("t_end");
+    {
+        // Pair collisions, bounded above at the initial Enskog rate (cooling only slows it):
+        // t_end = 1e308 s printed nothing for minutes.
+        const double n = double(p.integer("N")), rho = p.real("rho");
+        const double omega = theory::enskog_collision_rate_vbar(rho, p.real("d"), p.real("vbar"), theory::henderson_contact_value(rho));
+        const double eq = p.real("equilibration_collisions");
+        const double per_seed = double(p.reals("restitutions").size()) * n / 2 * (omega * t_end + eq) +
+                                double(p.reals("elastic_densities").size()) * n / 2 *
+                                    (p.real("elastic_collisions_per_particle") + eq);
+        p.limit_work({"t_end", "N", "seeds", "vbar", "rho", "d", "equilibration_collisions",
+                      "elastic_collisions_per_particle", "restitutions", "elastic_densities"},
+                     double(p.integer("seeds")) * per_seed, kMaxCollisions, "pair collisions");
+    }
     const auto& edges = p.reals("window_edges");
     if (edges.size() < 2 || edges.front() != 0.0 || std::fabs(edges.back() - t_end) > 1e-12 * t_end)
-        p.reject("window_edges", "must start at 0 s and end at t_end = " + std::to_string(t_end) + " s");
+        p.reject("window_edges", "must start at 0 s and end at t_end = " + number_text(t_end) + " s");
     for (std::size_t k = 1; k < edges.size(); ++k)
         if (!(edges[k] > edges[k - 1])) p.reject("window_edges", "must be strictly increasing");
     if (!(p.real("stress_t_begin") < t_end))
-        p.reject("stress_t_begin", "must be below t_end = " + std::to_string(t_end) + " s");
+        p.reject("stress_t_begin", "must be below t_end = " + number_text(t_end) + " s");
     const long nb = p.integer("n_bins");
     if (nb % 5 != 0) p.reject("n_bins", "must be a multiple of 5 so that bins end at b/d = 0.2 and 0.8");
     if (p.reals("restitutions").empty()) p.reject("restitutions", "needs at least one value");
@@ -190,7 +205,13 @@ void validate(const ParameterSet& p) {
     const auto n = static_cast<std::size_t>(p.integer("N"));
     const double d = p.real("d");
     staggered_lattice(n, box_side(n, d, p.real("rho")), d);
-    for (double rho : p.reals("elastic_densities")) staggered_lattice(n, box_side(n, d, rho), d);
+    for (double rho : p.reals("elastic_densities")) {
+        try {
+            staggered_lattice(n, box_side(n, d, rho), d);
+        } catch (const InputError& e) {
+            p.reject("elastic_densities", std::string("at ") + number_text(rho) + ": " + e.what());
+        }
+    }
 }
 
 Result run(const RunContext& ctx) {

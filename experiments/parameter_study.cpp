@@ -24,6 +24,7 @@
 #include "core/rng_stream.hpp"
 #include "engines/ed/ed_engine.hpp"
 #include "engines/ed/ed_initial_states.hpp"
+#include "experiments/work_limits.hpp"
 #include "harness/experiment.hpp"
 #include "harness/distributed_sweep.hpp"
 #include "harness/progress.hpp"
@@ -37,8 +38,19 @@ namespace {
 void validate(const ParameterSet& p) {
     const long ns = p.integer("n_side");
     if (p.real("box_over_d") / double(ns) < 1.0000001)
-        p.reject("box_over_d", "too small for a square-lattice start (lattice spacing below d)");
+        p.reject(std::vector<std::string>{"box_over_d", "n_side"},
+                 "box_over_d too small for a square-lattice start of n_side^2 disks (lattice spacing below d)");
+    // The linked-cell grid of the ED engine has ~(box_over_d)^2 cells of one diameter.
+    p.limit_work({"box_over_d"}, p.real("box_over_d") * p.real("box_over_d"), 1e8, "cells of the linked-cell grid");
     if (p.real("box_over_d") < 3.0) p.reject("box_over_d", "must be at least 3 (three cells for the minimum image)");
+    {
+        // Every run goes to C/N = cn_end: cn_end = 1e308 ended in "cannot create std::vector
+        // larger than max_size()".
+        const double n = double(ns) * double(ns);
+        const double runs = double(p.integer("seeds")) * double(p.reals("fig8_r").size() + p.reals("fig9_t_c").size());
+        p.limit_work({"cn_end", "n_side", "seeds", "equilibration", "fig8_r", "fig9_t_c"},
+                     runs * n / 2 * (p.real("cn_end") + p.real("equilibration")), kMaxCollisions, "collisions");
+    }
     for (const char* name : {"zeta_fit_early", "zeta_fit_late"}) {
         const auto& v = p.reals(name);
         if (v.size() != 2 || !(v[1] > v[0])) p.reject(name, "must be [lo, hi] with hi > lo");

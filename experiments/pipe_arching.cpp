@@ -50,10 +50,14 @@ long frame_of(double t, double frame_dt) { return std::lround(t / frame_dt); }
 
 void validate(const ParameterSet& p) {
     const double fdt = p.real("frame_dt"), t_end = p.real("t_end");
+    // N_c frames of every run (each holds per-particle counts); t_end = 1e308 would never end.
+    p.limit_work({"t_end", "t_relax", "frame_dt"}, (p.real("t_relax") + t_end) / fdt, 1e7, "frames");
     auto on_grid = [&](const char* name, double window) {
         for (double t : p.reals(name)) {
             if (t > t_end) p.reject(name, "every time must be <= t_end");
-            if (t < window) p.reject(name, "every time must be >= its N_c window");
+            if (t < window)
+                p.reject(std::vector<std::string>{name, window == fdt ? "frame_dt" : "dist_dt"},
+                         std::string(name) + ": every time must be >= its N_c window");
             if (std::abs(t / fdt - double(frame_of(t, fdt))) > 1e-6) p.reject(name, "times must be multiples of frame_dt");
         }
     };

@@ -36,4 +36,9 @@ LinearSpringDashpot pipe_law(double k_N, double e_N, double m_mean);
 // dt = t_col / steps_per_contact of the stiffest (lightest free-free) pair, Eq. (5).
 PipeEngine<LinearSpringDashpot, CoulombShear> build_pipe(const PipeSpec& s);
 
+// The number of grains build_pipe places (area fraction phi of the channel between the crests),
+// and whether its start lattice holds them: the up-front check of phi.
+long pipe_grain_count(const PipeSpec& s);
+bool pipe_lattice_fits(const PipeSpec& s);
+
 } // namespace granrepro

@@ -3,7 +3,10 @@
 // 1 a claim failed (or a run or a figure failed, or check --all found experiments without
 // results), 2 bad input.
 #include <CLI/CLI.hpp>
+#include <cerrno>
+#include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <iostream>
 #include <sstream>
 
@@ -11,6 +14,7 @@
 #include "core/input_error.hpp"
 #include "core/provenance.hpp"
 #include "harness/mpi_world.hpp"
+#include "harness/interval.hpp"
 #include "harness/runner.hpp"
 
 using namespace granrepro;
@@ -28,14 +32,42 @@ const char* const kExitCodes =
     "results); 2 bad input (one line on stderr naming the parameter and what is allowed).";
 
 std::string command_line; // argv joined, shell-quoted where needed
+// Global flags are read as text and parsed here, not by CLI11: CLI11 wraps --seed -1 to
+// 18446744073709551615, accepts --checkpoint-interval nan and answers --threads abc with
+// "Value abc not in range". Each refusal is one line naming the flag and what is allowed.
+std::uint64_t parse_seed(const std::string& text) {
+    const std::string allowed = "--seed " + text + ": must be an integer in [0, 18446744073709551615]";
+    if (text.empty() || text.size() > 20 || text.find_first_not_of("0123456789") != std::string::npos)
+        throw InputError(allowed);
+    errno = 0;
+    const unsigned long long v = std::strtoull(text.c_str(), nullptr, 10);
+    if (errno == ERANGE) throw InputError(allowed);
+    return v;
+}
+
+int parse_positive_int(const std::string& flag, const std::string& text, int max) {
+    long v = 0;
+    if (text.find_first_not_of("0123456789") != std::string::npos || !parse_long(text, v) || v < 1)
+        throw InputError(flag + ": " + text + " is not a positive integer");
+    if (v > max) throw InputError(flag + ": " + text + " is too many; allowed 1 to " + std::to_string(max));
+    return int(v);
+}
+
+double parse_seconds(const std::string& flag, const std::string& text) {
+    double v = 0;
+    if (!parse_double(text, v) || !std::isfinite(v) || v < 0)
+        throw InputError(flag + " " + text + ": must be a finite number of seconds >= 0");
+    return v;
+}
 
 struct CommonFlags {
     std::string scale = "quick";
     std::string out = "out";
-    std::uint64_t seed = 1;
-    int threads = 1;
+    std::string seed = "1";
+    std::string threads = "1";
     bool quiet = false;
-    double checkpoint_interval = 60.0;
+    bool dry_run = false;
+    std::string checkpoint_interval = "60";
     std::vector<std::string> sets;
     std::string points;
 
@@ -43,16 +75,21 @@ struct CommonFlags {
         app->add_option("--scale", scale, "quick (CI, minutes) or paper (the papers' sizes)")
             ->capture_default_str();
         app->add_option("--out", out, "output directory")->capture_default_str();
-        app->add_option("--seed", seed, "random seed of the run")->capture_default_str();
-        app->add_option("--threads", threads, "independent sweep points run concurrently")
+        app->add_option("--seed", seed, "random seed of the run, an integer in [0, 2^64)")
             ->capture_default_str()
-            ->check(CLI::Range(1, 256));
+            ->type_name("UINT64");
+        app->add_option("--threads", threads, "independent sweep points run concurrently (1 to 256)")
+            ->capture_default_str()
+            ->type_name("INT");
         app->add_flag("--quiet", quiet, "no progress output on stderr");
+        app->add_flag("--dry-run", dry_run,
+                      "read and validate the parameters (--set), the claims and the cost estimates, "
+                      "then exit 0 without running or writing anything");
         app->add_option("--checkpoint-interval", checkpoint_interval,
                         "seconds of wall time between mid-run checkpoints of long single runs [s]; "
                         "rerunning the same command resumes from the last one")
             ->capture_default_str()
-            ->check(CLI::NonNegativeNumber);
+            ->type_name("SECONDS");
         if (with_sets)
             app->add_option("--set", sets, "override a parameter: --set name=value (repeatable)")
                 ->type_name("NAME=VALUE");
@@ -71,15 +108,24 @@ struct CommonFlags {
         o.shard_from_slurm = true;
         o.scale = parse_scale(scale);
         o.out = out;
-        o.seed = seed;
-        o.threads = threads;
+        o.seed = parse_seed(seed);
+        o.threads = parse_positive_int("--threads", threads, 256);
         o.quiet = quiet;
-        o.checkpoint_interval = checkpoint_interval;
+        o.checkpoint_interval = parse_seconds("--checkpoint-interval", checkpoint_interval);
         o.sets = sets;
         o.command_line = command_line;
         return o;
     }
 };
+
+// --dry-run: everything a run checks before it starts (parameters, their relations and the
+// work they imply, the claims file), and nothing written.
+int dry_run(const std::string& name, const RunOptions& o) {
+    resolve_parameters(name, o);
+    load_claims(project_root() / "expected" / (name + ".toml"), name);
+    std::printf("%s: input accepted (%s scale); --dry-run: nothing run\n", name.c_str(), to_string(o.scale));
+    return 0;
+}
 
 // The parameter table shown by `granrepro <experiment> --help`.
 std::string parameter_help(const std::string& name) {
@@ -208,7 +254,10 @@ static int run_main(int argc, char** argv) {
         common.add_to(sub);
         if (e.distributed) common.add_points_to(sub);
         sub->footer([name = e.name] { return parameter_help(name) + kExitCodes; });
-        sub->callback([&, name = e.name] { rc = run_experiment(name, common.options()); });
+        sub->callback([&, name = e.name] {
+            const RunOptions o = common.options();
+            rc = common.dry_run ? dry_run(name, o) : run_experiment(name, o);
+        });
     }
 
     std::string figure_id;
@@ -219,7 +268,8 @@ static int run_main(int argc, char** argv) {
     fig->callback([&] {
         RunOptions o = common.options();
         o.figures = {figure_id};
-        rc = run_experiment(experiment_of_figure(figure_id), o);
+        const std::string name = experiment_of_figure(figure_id);
+        rc = common.dry_run ? dry_run(name, o) : run_experiment(name, o);
     });
 
     std::string gather_name;
@@ -315,7 +365,11 @@ static int run_main(int argc, char** argv) {
     all->callback([&] {
         RunOptions o = common.options();
         o.shard_from_slurm = false;
-        rc = run_all(o);
+        if (!common.dry_run) {
+            rc = run_all(o);
+            return;
+        }
+        for (const auto& e : experiment_registry()) rc |= dry_run(e.name, o);
     });
 
     std::string bench_target;
@@ -330,11 +384,15 @@ static int run_main(int argc, char** argv) {
         ->check(CLI::Range(0.01, 3600.0));
     bench->add_option("--steps", bench_opt.steps, "soft: time steps of one timed run (default 400000)")
         ->check(CLI::Range(1L, 1000000000L));
-    bench->add_option("--threads", bench_opt.threads, "soft: threads of the multi-core comparison")
+    std::string bench_threads = std::to_string(bench_opt.threads);
+    bench->add_option("--threads", bench_threads, "soft: threads of the multi-core comparison (1 to 256)")
         ->capture_default_str()
-        ->check(CLI::Range(1, 256));
+        ->type_name("INT");
     bench->add_flag("--sizes", bench_opt.sizes, "soft: steps/s and memory against the number of grains");
-    bench->callback([&] { rc = run_bench(bench_target, bench_opt); });
+    bench->callback([&] {
+        bench_opt.threads = parse_positive_int("--threads", bench_threads, 256);
+        rc = run_bench(bench_target, bench_opt);
+    });
 
     // An unknown subcommand gets the list of known ones, in one line.
     if (argc > 1 && argv[1][0] != '-') {

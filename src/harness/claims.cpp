@@ -30,6 +30,16 @@ std::string band_text(const Band& b) { return "[" + num(b.lo) + ", " + num(b.hi)
 
 const char* const kScaleNames[] = {"quick", "paper"};
 
+const std::string kClaimKeys[] = {"id",     "statement", "source",           "measured",        "paper",
+                                  "rel_tol", "abs_tol",  "min",              "max",             "tolerance_reason",
+                                  "scales", "known_deviation", "deviation_band", "deviation_band_reason"};
+
+std::string claim_keys_text() {
+    std::string out;
+    for (const auto& k : kClaimKeys) out += (out.empty() ? "" : ", ") + k;
+    return out;
+}
+
 double number(const toml::value& v) {
     if (v.is_integer()) return double(v.as_integer());
     return toml::get<double>(v);
@@ -83,17 +93,29 @@ std::vector<Claim> load_claims(const std::filesystem::path& file, const std::str
     std::vector<Claim> claims;
     try {
         const auto root = toml::parse(where);
+        auto line = [](const toml::value& v) { return " (line " + std::to_string(v.location().line()) + ")"; };
+        for (const auto& [key, v] : root.as_table())
+            if (key != "experiment" && key != "claim")
+                throw InputError(where + line(v) + ": unknown key '" + key + "'; allowed: experiment, [[claim]]");
         if (toml::find<std::string>(root, "experiment") != experiment)
             throw InputError(where + ": 'experiment' must be \"" + experiment + "\"");
         for (const auto& c : toml::find<toml::array>(root, "claim")) {
             Claim k;
             k.id = toml::find<std::string>(c, "id");
+            const std::string claim_where = where + ": claim " + k.id;
+            for (const auto& [key, v] : c.as_table())
+                if (!std::count(std::begin(kClaimKeys), std::end(kClaimKeys), key))
+                    throw InputError(claim_where + line(v) + ": unknown key '" + key + "'; allowed: " + claim_keys_text());
+            for (const auto& earlier : claims)
+                if (earlier.id == k.id) throw InputError(claim_where + line(c) + ": claim id given twice");
             k.statement = toml::find<std::string>(c, "statement");
             k.source = toml::find<std::string>(c, "source");
             k.measured = toml::find<std::string>(c, "measured");
             auto opt = [&](const char* key) -> std::optional<double> {
                 if (!c.contains(key)) return std::nullopt;
-                return number(c.at(key));
+                const double x = number(c.at(key));
+                if (std::isnan(x)) throw InputError(claim_where + line(c.at(key)) + ": " + key + " is NaN");
+                return x;
             };
             k.paper = opt("paper");
             k.rel_tol = opt("rel_tol");
@@ -103,7 +125,17 @@ std::vector<Claim> load_claims(const std::filesystem::path& file, const std::str
             if (c.contains("tolerance_reason")) k.tolerance_reason = toml::find<std::string>(c, "tolerance_reason");
             if (c.contains("known_deviation")) k.known_deviation = toml::find<std::string>(c, "known_deviation");
             if (c.contains("scales")) k.scales = toml::find<std::vector<std::string>>(c, "scales");
-            const std::string claim_where = where + ": claim " + k.id;
+            if (k.measured.empty() || k.measured.find_first_of(" \t\n") != std::string::npos)
+                throw InputError(claim_where + line(c.at("measured")) + ": measured '" + k.measured +
+                                 "' is not a scalar name (non-empty, no spaces)");
+            for (const auto& [key, val] : {std::pair{"rel_tol", k.rel_tol}, std::pair{"abs_tol", k.abs_tol}})
+                if (val && !(*val >= 0 && std::isfinite(*val)))
+                    throw InputError(claim_where + line(c.at(key)) + ": " + key + " = " + num(*val) +
+                                     " must be a finite number >= 0");
+            if (k.paper && !std::isfinite(*k.paper))
+                throw InputError(claim_where + line(c.at("paper")) + ": paper = " + num(*k.paper) + " must be finite");
+            if (k.min && k.max && *k.min > *k.max)
+                throw InputError(claim_where + line(c.at("min")) + ": min = " + num(*k.min) + " is above max = " + num(*k.max));
             auto check_scale = [&](const std::string& s, const std::string& key) {
                 if (s != "quick" && s != "paper")
                     throw InputError(claim_where + ": " + key + " names scale '" + s + "'; allowed: quick, paper");

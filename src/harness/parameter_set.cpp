@@ -17,6 +17,13 @@ Scale parse_scale(const std::string& s) {
     throw InputError("--scale " + s + ": must be 'quick' or 'paper'");
 }
 
+std::string number_text(double x) {
+    std::ostringstream os;
+    os.precision(6);
+    os << x;
+    return os.str();
+}
+
 namespace {
 
 std::string fmt(double x) {
@@ -148,6 +155,12 @@ ParameterSet ParameterSet::load(const std::filesystem::path& file, Scale scale) 
         throw InputError(where + ": cannot read experiment file: " + msg);
     }
     ParameterSet set;
+    set.file_ = where;
+    if (!root.is_table()) throw InputError(where + ": not a table of keys");
+    for (const auto& [key, v] : root.as_table())
+        if (key != "name" && key != "paper" && key != "description" && key != "figure" && key != "parameters")
+            throw InputError(where + " (line " + std::to_string(v.location().line()) + "): unknown key '" + key +
+                             "'; allowed: name, paper, description, [[figure]], [parameters.<name>]");
     if (!root.contains("parameters") || !root.at("parameters").is_table())
         throw InputError(where + ": missing [parameters] table");
     std::vector<std::pair<std::uint_least32_t, Parameter>> ordered;
@@ -157,6 +170,11 @@ ParameterSet ParameterSet::load(const std::filesystem::path& file, Scale scale) 
         const std::string ctx = where + ": parameter " + name;
         if (!spec.is_table()) throw InputError(ctx + ": must be a table");
         const auto& t = spec.as_table();
+        for (const auto& [key, v] : t)
+            if (key != "unit" && key != "source" && key != "help" && key != "range" && key != "choices" &&
+                key != "value" && key != "quick" && key != "paper")
+                throw InputError(ctx + " (line " + std::to_string(v.location().line()) + "): unknown key '" + key +
+                                 "'; allowed: unit, source, help, range, choices, value, quick, paper");
         auto str = [&](const char* key) -> std::string {
             const auto it = t.find(key);
             if (it == t.end()) return {};
@@ -189,6 +207,17 @@ ParameterSet ParameterSet::load(const std::filesystem::path& file, Scale scale) 
         }
         if (p.kind == Parameter::Kind::Integer && kind_of(scale == Scale::Quick ? *paper : *quick) == Parameter::Kind::Real)
             p.kind = Parameter::Kind::Real; // 1 and 1.5 at the two scales: a real parameter
+        for (const toml::value* v : {quick, paper}) {
+            // A range makes it a number (or a list of numbers): "abc" or true there is a typo,
+            // not a text parameter that the experiment would then read as a number.
+            const bool numeric = v->is_floating() || v->is_integer() ||
+                                 (v->is_array() && std::all_of(v->as_array().begin(), v->as_array().end(), [](const auto& e) {
+                                      return e.is_floating() || e.is_integer();
+                                  }));
+            if (p.has_range && !numeric)
+                throw InputError(ctx + " (line " + std::to_string(v->location().line()) + "): value " + toml_text(*v) +
+                                 " must be a number or a list of numbers (it has range " + p.range.text + ")");
+        }
         p.quick_text = toml_text(*quick);
         p.paper_text = toml_text(*paper);
         if (!assign(p, toml_text(chosen)))
@@ -221,7 +250,8 @@ void ParameterSet::set(const std::string& assignment) {
 const Parameter& ParameterSet::get(const std::string& name) const {
     for (const auto& p : params_)
         if (p.name == name) return p;
-    throw std::logic_error("experiment asked for undeclared parameter '" + name + "'");
+    // The experiment's code needs it: a table renamed or removed in the experiment file.
+    throw InputError(file_ + ": missing [parameters." + name + "] (the experiment needs it)");
 }
 
 bool ParameterSet::has(const std::string& name) const {
@@ -230,7 +260,9 @@ bool ParameterSet::has(const std::string& name) const {
 
 const Parameter& ParameterSet::find(const std::string& name, Parameter::Kind kind) const {
     const Parameter& p = get(name);
-    if (p.kind != kind) throw std::logic_error("parameter '" + name + "' read with the wrong type");
+    if (p.kind != kind)
+        throw InputError(file_ + ": parameter " + name + " = " + p.value_text() + " must be " +
+                         (kind == Parameter::Kind::Text ? std::string("text") : kind_text(kind)));
     return p;
 }
 
@@ -248,6 +280,36 @@ const std::vector<double>& ParameterSet::reals(const std::string& n) const {
 
 void ParameterSet::reject(const std::string& name, const std::string& requirement) const {
     throw InputError(name + " = " + get(name).value_text() + ": " + requirement);
+}
+
+namespace {
+// The parameters behind a refusal: those the user changed with --set (they are the likely cause),
+// or all of them when none was changed.
+std::string named_values(const ParameterSet& set, const std::vector<std::string>& names) {
+    std::vector<std::string> shown;
+    for (const auto& n : names)
+        if (set.get(n).overridden) shown.push_back(n);
+    if (shown.empty()) shown = names;
+    std::string out;
+    for (const auto& n : shown) {
+        const Parameter& p = set.get(n);
+        out += (out.empty() ? "" : ", ") + n + " = " + p.value_text();
+        if (p.kind != Parameter::Kind::Text && p.kind != Parameter::Kind::Flag && !p.unit.empty() && p.unit != "1")
+            out += " " + p.unit;
+    }
+    return out;
+}
+} // namespace
+
+void ParameterSet::reject(const std::vector<std::string>& names, const std::string& requirement) const {
+    throw InputError(named_values(*this, names) + ": " + requirement);
+}
+
+void ParameterSet::limit_work(const std::vector<std::string>& names, double estimate, double limit,
+                              const std::string& what) const {
+    if (estimate <= limit) return; // false for NaN
+    throw InputError(named_values(*this, names) + ": the run needs ~" + number_text(estimate) + " " + what +
+                     " (at most " + number_text(limit) + " allowed)");
 }
 
 nlohmann::json ParameterSet::to_json() const {

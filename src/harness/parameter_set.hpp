@@ -14,6 +14,8 @@ namespace granrepro {
 
 enum class Scale { Quick, Paper };
 const char* to_string(Scale s);
+// A number in messages: %g-like, never 300 digits ("1e+308", "0.00083").
+std::string number_text(double x);
 Scale parse_scale(const std::string& s); // throws InputError
 
 struct Parameter {
@@ -57,6 +59,13 @@ public:
 
     // Throws InputError("name = value: must be ...") — for checks that relate parameters.
     [[noreturn]] void reject(const std::string& name, const std::string& requirement) const;
+    // The same for a requirement that relates several parameters: all are named with their values
+    // ("gamma_N = 10000, k_N = 2000, m_free = 1e+308: ...").
+    [[noreturn]] void reject(const std::vector<std::string>& names, const std::string& requirement) const;
+    // Refuses up front a run whose cost, derived from the parameters `names`, exceeds `limit` (or
+    // is not finite): "t_end = 1e+308 s needs ~1e+312 events (at most 1e+11 allowed)". `what`
+    // names the unit of work: "collisions", "time steps", "particles".
+    void limit_work(const std::vector<std::string>& names, double estimate, double limit, const std::string& what) const;
 
     const std::vector<Parameter>& all() const { return params_; }
     nlohmann::json to_json() const;
@@ -64,6 +73,7 @@ public:
 private:
     const Parameter& find(const std::string& name, Parameter::Kind kind) const;
     std::vector<Parameter> params_;
+    std::string file_; // the experiment file, named in errors about it
 };
 
 } // namespace granrepro

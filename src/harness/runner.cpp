@@ -130,6 +130,12 @@ int run_experiment(const std::string& name, const RunOptions& opt, VerdictCounts
     } catch (const ShardFinished& e) {
         std::printf("%s\n", e.what());
         return 0;
+    } catch (const InputError&) {
+        // A late refusal of the input fails the same way on every rerun: its checkpoints can
+        // never be resumed, so no hidden .X.checkpoint/ outlives it (issue 20).
+        std::error_code ec;
+        fs::remove_all(work_dir, ec);
+        throw;
     }
     Result& result = *ran;
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

@@ -64,7 +64,32 @@ INSTANTIATE_TEST_SUITE_P(
                       BadInput{"plot_unknown_figure", "plot emergency-brake --figure schaefer95-fig99",
                                "--figure schaefer95-fig99 is not made by experiment emergency-brake"},
                       BadInput{"plot_all_unknown_figure", "plot --all --figure nope", "unknown figure"},
-                      BadInput{"missing_ok_without_all", "check emergency-brake --missing-ok", "--missing-ok needs --all"}),
+                      BadInput{"missing_ok_without_all", "check emergency-brake --missing-ok", "--missing-ok needs --all"},
+                      // Issue 20: values that crashed, hung or blamed the wrong parameter. Those
+                      // that hung are probed with --dry-run (the same validation as a run): with
+                      // the guard removed they exit 0 at once instead of hanging the test.
+                      BadInput{"sample_dt_below_dt", "bistable-pipe --set sample_dt=1e-300 --dry-run", "sample_dt = 1e-300"},
+                      BadInput{"phi_no_lattice_start", "bistable-pipe --set phi=0.79", "phi = 0.79"},
+                      BadInput{"wall_gap_lets_grains_through", "bistable-pipe --set wall_spacing=1e308 --dry-run", "wall_spacing"},
+                      BadInput{"d_free_beyond_range", "brake-failure --set d_free=1e308", "d_free must be"},
+                      BadInput{"vy_min_shot_never_ends", "brake-failure --set vy_min=1e-9 --dry-run", "vy_min = 1e-09 m/s: the run needs ~"},
+                      BadInput{"vy_max_skips_contact", "brake-failure --set vy_max=1e308 --dry-run", "vy_max = 1e+308 m/s"},
+                      BadInput{"kN_zero_time_step", "brake-failure --set k_N=1e308", "k_N = 1e+308 N/m"},
+                      BadInput{"m_free_overdamped", "brake-failure --set m_free=1000", "m_free = 1000 kg: over-damped"},
+                      BadInput{"offset_message_not_300_digits", "brake-failure --set offset=1e300", "(d_free + d_wall)/2 = 0.00083 m"},
+                      BadInput{"wall_spacing_gap", "emergency-brake --set wall_spacing=1e308 --dry-run", "wall_spacing"},
+                      BadInput{"t_end_events", "impact-parameter --set t_end=1e10 --set window_edges=0,1e10 --dry-run",
+                               "t_end = 1e+10 s: the run needs ~"},
+                      BadInput{"cn_end_events", "parameter-study --set cn_end=1e308 --dry-run", "cn_end = 1e+308: the run needs ~"},
+                      BadInput{"cooling_t_end_events", "cooling --set t_end=1e308 --dry-run", "t_end = 1e+308 s: the run needs ~"},
+                      BadInput{"vbar_beyond_light", "cooling --set vbar=1e308", "vbar must be"},
+                      BadInput{"box_cells", "cluster-growth --set box_over_d=1e308 --dry-run", "box_over_d = 1e+308: the run needs ~"},
+                      BadInput{"seed_negative", "brake-failure --seed -1", "--seed -1"},
+                      BadInput{"seed_2_64", "brake-failure --seed 18446744073709551616", "--seed 18446744073709551616"},
+                      BadInput{"seed_huge", "brake-failure --seed 99999999999999999999999", "--seed 99999999999999999999999"},
+                      BadInput{"checkpoint_interval_nan", "brake-failure --checkpoint-interval nan", "--checkpoint-interval nan"},
+                      BadInput{"threads_not_a_number", "brake-failure --threads abc", "--threads: abc is not a positive integer"},
+                      BadInput{"dry_run_refuses_too", "brake-failure --dry-run --set k_N=1e308", "k_N = 1e+308"}),
     [](const ::testing::TestParamInfo<BadInput>& info) { return std::string(info.param.name); });
 
 TEST(Cli, UnknownSubcommandIsOneLineExitTwo) {
@@ -106,6 +131,68 @@ TEST(Cli, CorruptOrMissingExpectedFileIsAnInputError) {
     EXPECT_FALSE(fs::exists(out / "emergency-brake"));
     fs::remove_all(home);
     fs::remove_all(out);
+}
+
+// Replaces the first `from` in a file of the copy; the test fails if it is absent.
+void replace_in(const fs::path& file, const std::string& from, const std::string& to) {
+    std::ifstream in(file);
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const auto at = text.find(from);
+    ASSERT_NE(at, std::string::npos) << from << " not in " << file;
+    text.replace(at, from.size(), to);
+    std::ofstream(file) << text;
+}
+
+// Issue 20 item 7: data files that load but are wrong are exit 2 naming the file, the claim or
+// parameter and (where the file has one) the line; --dry-run reads them as a run does.
+TEST(Cli, WrongDataFilesAreInputErrorsNamingFileAndKey) {
+    struct Case {
+        const char* file;  // under the project copy
+        const char* from;  // first occurrence replaced ...
+        const char* to;    // ... by this
+        std::vector<const char*> must_mention;
+    };
+    const std::vector<Case> cases{
+        {"expected/emergency-brake.toml", "rel_tol = ", "rel_tol = -1 #", {"emergency-brake.toml", "claim ", "rel_tol", "line"}},
+        {"expected/emergency-brake.toml", "rel_tol = ", "rel_tol = nan #", {"emergency-brake.toml", "rel_tol is NaN", "line"}},
+        {"expected/emergency-brake.toml", "statement = ", "typo_key = 1\nstatement = ", {"unknown key 'typo_key'", "line"}},
+        {"expected/emergency-brake.toml", "measured = ", "scales = [\"bogus\"]\nmeasured = ", {"scale 'bogus'"}},
+        {"expected/emergency-brake.toml", "min = 0.75", "min = 1e300", {"is above max", "line"}},
+        {"expected/emergency-brake.toml", "[[claim]]", "[[claim]]\nid = \"dup\"\nstatement = \"s\"\nsource = \"s\"\n"
+                                                     "measured = \"e_N\"\nmin = 0\ntolerance_reason = \"r\"\n[[claim]]\n"
+                                                     "id = \"dup\"\nstatement = \"s\"\nsource = \"s\"\nmeasured = \"e_N\"\n"
+                                                     "min = 0\ntolerance_reason = \"r\"\n\n[[claim]]",
+         {"claim dup", "given twice"}},
+        {"experiments/emergency-brake.toml", "value = 2000.0", "value = \"2000\"", {"emergency-brake.toml", "k_N", "must be a number"}},
+        {"experiments/emergency-brake.toml", "[parameters.k_N]", "[parameters.k_n]", {"emergency-brake.toml", "k_N"}},
+        {"experiments/emergency-brake.toml", "[parameters.k_N]", "[parameters.k_N]\nrnage = 1", {"unknown key 'rnage'", "k_N"}},
+    };
+    for (const Case& c : cases) {
+        const fs::path home = project_copy("data-home");
+        replace_in(home / c.file, c.from, c.to);
+        const fs::path out = fresh("data-out");
+        for (const char* mode : {"--dry-run", ""}) {
+            const Outcome o = run(std::string("emergency-brake --quiet ") + mode + " --out " + out.string(),
+                                  "GRANREPRO_HOME=" + home.string());
+            EXPECT_EQ(o.code, 2) << c.file << ": " << c.to << ": " << o.err;
+            EXPECT_EQ(lines(o.err), 1) << o.err;
+            for (const char* m : c.must_mention) EXPECT_NE(o.err.find(m), std::string::npos) << m << " not in: " << o.err;
+            EXPECT_FALSE(fs::exists(out / "emergency-brake")) << c.to;
+            EXPECT_FALSE(fs::exists(out / ".emergency-brake.checkpoint")) << c.to;
+        }
+        fs::remove_all(home);
+        fs::remove_all(out);
+    }
+}
+
+// --dry-run accepts every experiment's defaults at both scales and writes nothing.
+TEST(Cli, DryRunAcceptsTheDefaultsAndWritesNothing) {
+    const fs::path out = fresh("dry-out");
+    for (const char* scale : {"quick", "paper"}) {
+        const Outcome o = run(std::string("all --dry-run --scale ") + scale + " --out " + out.string());
+        EXPECT_EQ(o.code, 0) << o.err;
+    }
+    EXPECT_FALSE(fs::exists(out));
 }
 
 // Runs granrepro and returns its exit code and stdout (stderr goes to err if given).
