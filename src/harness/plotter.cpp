@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "harness/experiment.hpp"
+#include "io/durable_file.hpp"
 
 namespace granrepro {
 
@@ -21,11 +22,12 @@ RenderOutcome render_figure(const std::string& id, const std::filesystem::path& 
     body << in.rdbuf();
     const auto emitted = run_dir / (id + ".gp");
     {
-        std::ofstream out(emitted);
+        std::ostringstream out;
         out << "# Emitted by granrepro from plots/" << id << ".gp; run `gnuplot " << id
             << ".gp` in this directory to re-render.\n"
             << "datadir = 'tables'\noutbase = '" << id << "'\n\n"
             << body.str();
+        write_file_durably(emitted, out.str()); // a full disk is a WriteError, not a 0-byte script
     }
     const std::string cmd = "cd '" + run_dir.string() + "' && gnuplot '" + id + ".gp' > '" + id +
                             ".gnuplot.log' 2>&1";

@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "core/provenance.hpp"
+#include "io/durable_file.hpp"
 #include "io/h5_file.hpp"
 
 namespace granrepro {
@@ -60,18 +61,21 @@ void write_result_h5(const std::filesystem::path& file, const Provenance& prov, 
         const H5Object g = f.group("scalars");
         for (const auto& s : result.scalars) g.dataset(s.name, {s.value}, s.unit, s.description);
     }
-    const H5Object tables = f.group("tables");
-    for (const auto& t : result.tables) {
-        const H5Object g = tables.group(t.name);
-        g.attr("description", t.description);
-        for (const auto& c : t.columns) g.dataset(c.name, c.values, c.unit);
+    {
+        const H5Object tables = f.group("tables");
+        for (const auto& t : result.tables) {
+            const H5Object g = tables.group(t.name);
+            g.attr("description", t.description);
+            for (const auto& c : t.columns) g.dataset(c.name, c.values, c.unit);
+        }
     }
+    f.close();
 }
 
 void write_tables_tsv(const std::filesystem::path& dir, const Result& result) {
     std::filesystem::create_directories(dir);
     for (const auto& t : result.tables) {
-        std::ofstream out(dir / (t.name + ".tsv"));
+        std::ostringstream out;
         out << std::setprecision(10);
         std::size_t rows = 0;
         for (std::size_t c = 0; c < t.columns.size(); ++c) {
@@ -88,7 +92,7 @@ void write_tables_tsv(const std::filesystem::path& dir, const Result& result) {
             }
             out << "\n";
         }
-        if (!out) throw std::runtime_error("cannot write table " + t.name);
+        write_file_durably(dir / (t.name + ".tsv"), out.str());
     }
 }
 
@@ -139,6 +143,7 @@ std::vector<std::string> write_compact_result_h5(const std::filesystem::path& sr
     }
     out.attr("omitted_tables", listing.empty() ? std::string("none") : listing);
     out.attr("compacted_to_max_values", long(max_values));
+    out.close();
     return omitted;
 }
 
