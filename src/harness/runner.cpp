@@ -184,7 +184,7 @@ int run_experiment(const std::string& name, const RunOptions& opt, VerdictCounts
         throw Interrupted(e.signal(), std::string(e.what()) +
                                           (kept ? "; progress kept in " + work_dir.string() +
                                                       ", rerun the same command to resume"
-                                                : "; nothing to resume from (this run saves no checkpoints)"));
+                                                : "; no checkpoint had been written yet, the rerun starts afresh"));
     }
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
