@@ -1,7 +1,8 @@
 // granrepro: reproduce the figures of Luding (1998) and Schäfer & Wolf (1995) and check the
 // papers' claims. Exit codes: 0 every claim passed (or is a known deviation inside its band),
 // 1 a claim failed (or a run or a figure failed, or check --all found experiments without
-// results), 2 bad input.
+// results), 2 bad input, 3 results could not be written (disk full, I/O error; the previous
+// results are untouched), 130/143 interrupted by SIGINT/SIGTERM (core/interrupt.hpp).
 #include <CLI/CLI.hpp>
 #include <cerrno>
 #include <cmath>
@@ -12,10 +13,12 @@
 
 #include "cli/bench.hpp"
 #include "core/input_error.hpp"
+#include "core/interrupt.hpp"
 #include "core/provenance.hpp"
 #include "harness/mpi_world.hpp"
 #include "harness/interval.hpp"
 #include "harness/runner.hpp"
+#include "io/write_error.hpp"
 
 using namespace granrepro;
 
@@ -29,7 +32,11 @@ const char* const kDataFiles =
 const char* const kExitCodes =
     "\nExit codes: 0 every claim PASS (or DEVIATION: a known deviation inside its own band);\n"
     "1 a claim FAILed (also: a run failed, or check --all / plot --all found experiments without\n"
-    "results); 2 bad input (one line on stderr naming the parameter and what is allowed).";
+    "results); 2 bad input (one line on stderr naming the parameter and what is allowed; also a\n"
+    "damaged results file given to check, or an --out another run is writing); 3 the results could\n"
+    "not be written (disk full, I/O error: one line; the previous results are untouched);\n"
+    "130/143 interrupted by SIGINT/SIGTERM (a final checkpoint is saved where the run has one and\n"
+    "the same command resumes; a second signal, or 8 s without a pause point, stops at once).";
 
 std::string command_line; // argv joined, shell-quoted where needed
 // Global flags are read as text and parsed here, not by CLI11: CLI11 wraps --seed -1 to
@@ -210,6 +217,8 @@ std::string version_text() {
 static int run_main(int argc, char** argv);
 
 int main(int argc, char** argv) {
+    // First, before any thread exists: SIGINT/SIGTERM are then handled by one watcher thread.
+    install_interrupt_handling();
     // Whole lines on stdout even when it is a file: stderr messages then never split a table row.
     std::setvbuf(stdout, nullptr, _IOLBF, 0);
     try {
@@ -423,6 +432,18 @@ static int run_main(int argc, char** argv) {
     } catch (const InputError& e) {
         std::fprintf(stderr, "granrepro: %s\n", e.what());
         return 2;
+    } catch (const WriteError& e) {
+        std::fprintf(stderr, "granrepro: error: %s\n", e.what());
+        // Not `return`: HDF5's exit handler would retry closing a file whose close failed for
+        // want of space, and can crash doing so (rc 139 after the line above).
+        std::fflush(nullptr);
+        std::_Exit(3);
+    } catch (const Interrupted& e) {
+        // Held until the process ends: the watcher thread then cannot print a second line.
+        interrupt_critical_mutex().lock();
+        std::fprintf(stderr, "granrepro: %s\n", e.what());
+        std::fflush(stderr);
+        return e.exit_code();
     } catch (const std::exception& e) {
         std::fprintf(stderr, "granrepro: error: %s\n", e.what());
         return 1;

@@ -8,6 +8,7 @@
 
 #include "harness/experiment.hpp"
 #include "harness/run_log.hpp"
+#include "io/durable_file.hpp"
 
 namespace granrepro {
 
@@ -83,8 +84,7 @@ RenderOutcome render_figure(const std::string& id, const std::filesystem::path& 
         warn(previous.string() + " was edited: rendering the edited script, not plots/" + id +
              ".gp (delete it to get the current one)");
     } else {
-        std::ofstream out(emitted);
-        out << emitted_script(id, body.str());
+        write_file_durably(emitted, emitted_script(id, body.str())); // a full disk is a WriteError, not a 0-byte script
     }
     const std::string cmd = "cd '" + run_dir.string() + "' && gnuplot '" + id + ".gp' > '" + id +
                             ".gnuplot.log' 2>&1";

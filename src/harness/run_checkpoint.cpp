@@ -1,11 +1,17 @@
 #include "harness/run_checkpoint.hpp"
 #include "harness/run_log.hpp"
 
+#include <cerrno>
 #include <cstdio>
 #include <cstdlib>
 #include <mutex>
 #include <stdexcept>
 #include <unistd.h>
+
+#include "core/interrupt.hpp"
+#include "core/stable_hash.hpp"
+#include "io/durable_file.hpp"
+#include "io/write_error.hpp"
 
 namespace granrepro {
 
@@ -20,16 +26,23 @@ std::mutex& h5_mutex() {
 }
 } // namespace
 
+std::string checkpoint_fingerprint(const RunContext& ctx) {
+    nlohmann::json j;
+    j["parameters"] = ctx.params.to_json();
+    j["scale"] = to_string(ctx.scale);
+    j["seed"] = ctx.seed;
+    return hex64(fnv1a64(j.dump())); // nlohmann::json keeps object keys sorted: canonical text
+}
+
 RunCheckpoint::RunCheckpoint(const RunContext& ctx, const std::string& name)
     : interval_(ctx.checkpoint_interval), quiet_(ctx.quiet), last_(std::chrono::steady_clock::now()) {
-    const std::string fingerprint = ctx.params.to_json().dump() + to_string(ctx.scale) + std::to_string(ctx.seed);
-    const std::size_t h = std::hash<std::string>{}(fingerprint);
     fs::create_directories(ctx.work_dir);
-    file_ = ctx.work_dir / ("run-" + std::to_string(h) + "-" + name + ".h5");
+    file_ = ctx.work_dir / ("run-" + checkpoint_fingerprint(ctx) + "-" + name + ".h5");
 }
 
 bool RunCheckpoint::due() const {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - last_).count() >= interval_;
+    return interrupt_requested() ||
+           std::chrono::duration<double>(std::chrono::steady_clock::now() - last_).count() >= interval_;
 }
 
 void RunCheckpoint::save(const std::function<void(const H5Object&)>& fill) {
@@ -37,10 +50,17 @@ void RunCheckpoint::save(const std::function<void(const H5Object&)>& fill) {
     try {
         {
             const std::lock_guard<std::mutex> lock(h5_mutex());
-            const H5File f = H5File::create(tmp.string());
+            H5File f = H5File::create(tmp.string());
             fill(f);
+            f.close();
         }
-        fs::rename(tmp, file_);
+        fsync_path(tmp);
+        if (::rename(tmp.c_str(), file_.c_str()) != 0) throw WriteError(file_.string(), errno_text(errno));
+        fsync_path(file_.parent_path());
+    } catch (const WriteError& e) {
+        std::error_code ec;
+        fs::remove(tmp, ec);
+        throw WriteError(file_.string(), e.reason()); // name the checkpoint, not its temporary
     } catch (...) {
         std::error_code ec;
         fs::remove(tmp, ec);
@@ -51,6 +71,7 @@ void RunCheckpoint::save(const std::function<void(const H5Object&)>& fill) {
     if (const char* k = std::getenv("GRANREPRO_INTERRUPT_AFTER_CHECKPOINTS"); k && std::atol(k) == saves_)
         throw std::runtime_error("interrupted after checkpoint " + std::to_string(saves_) + " (" + file_.string() +
                                  ") as GRANREPRO_INTERRUPT_AFTER_CHECKPOINTS asks");
+    throw_if_interrupted("; final checkpoint written");
 }
 
 bool RunCheckpoint::load(const std::function<void(const H5Object&)>& read) const {

@@ -7,6 +7,10 @@
 // bit for bit, the result equals an uninterrupted run's. The fingerprint covers the resolved
 // parameters, scale and seed, so changed inputs never resume a stale file. The runner removes
 // the directory once the results are written.
+// Every write is checked and fsynced before the rename: a file that could not be written whole
+// (full disk) throws WriteError and is never renamed into place. After a SIGINT/SIGTERM, due()
+// is true at once and save() throws Interrupted once the final checkpoint is on disk (see
+// core/interrupt.hpp).
 // Testing hook: with GRANREPRO_INTERRUPT_AFTER_CHECKPOINTS=k in the environment, save() throws
 // after its k-th save, as if the run had been killed there (tests resume it and compare).
 #pragma once
@@ -19,6 +23,11 @@
 #include "io/h5_file.hpp"
 
 namespace granrepro {
+
+// The fingerprint of a run's inputs: FNV-1a 64 (core/stable_hash.hpp) of the canonical JSON of the
+// resolved parameters, the scale and the seed, as 16 hex digits. Stable across toolchains, unlike
+// std::hash. Checkpoint file and folder names carry it.
+std::string checkpoint_fingerprint(const RunContext& ctx);
 
 class RunCheckpoint {
 public:

@@ -1,6 +1,8 @@
 #include "harness/runner.hpp"
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -8,14 +10,19 @@
 #include <sstream>
 
 #include "core/input_error.hpp"
+#include "core/interrupt.hpp"
 #include "harness/claims.hpp"
 #include "core/provenance.hpp"
 #include "harness/distributed_sweep.hpp"
 #include "harness/mpi_world.hpp"
 #include "harness/plotter.hpp"
 #include "harness/run_log.hpp"
+#include "io/durable_file.hpp"
+#include "io/h5_file.hpp"
+#include "io/output_lock.hpp"
 #include "io/result_writer.hpp"
 #include "io/staged_directory.hpp"
+#include "io/write_error.hpp"
 
 namespace fs = std::filesystem;
 
@@ -60,6 +67,81 @@ std::string read_text(const fs::path& p) {
     return ss.str();
 }
 fs::path expected_file(const std::string& name) { return project_root() / "expected" / (name + ".toml"); }
+
+// A PNG ends with its IEND chunk; gnuplot does not report a write that ran out of space, so a
+// figure cut short is found here.
+bool png_complete(const fs::path& png) {
+    static const unsigned char iend[12] = {0, 0, 0, 0, 'I', 'E', 'N', 'D', 0xAE, 0x42, 0x60, 0x82};
+    std::ifstream in(png, std::ios::binary | std::ios::ate);
+    if (!in || in.tellg() < 12) return false;
+    in.seekg(-12, std::ios::end);
+    unsigned char tail[12];
+    in.read(reinterpret_cast<char*>(tail), 12);
+    return in && std::equal(tail, tail + 12, iend);
+}
+
+// What `check` reads is validated before it is judged: a damaged or foreign file is bad input
+// (exit 2, one line naming the file and what is wrong), not a claim that failed (exit 1).
+std::string json_kind(const nlohmann::json& j) {
+    if (j.is_string()) return "\"" + j.get<std::string>().substr(0, 40) + "\"";
+    if (j.is_object()) return "an object";
+    if (j.is_array()) return "an array";
+    return j.dump().substr(0, 40);
+}
+
+nlohmann::json read_summary(const fs::path& file, const std::string& name) {
+    nlohmann::json j;
+    try {
+        j = nlohmann::json::parse(read_text(file));
+    } catch (const std::exception&) {
+        throw InputError(file.string() + ": not valid JSON (a damaged file? rerun `granrepro " + name + "`)");
+    }
+    const std::string where = file.string() + ": ";
+    if (!j.is_object())
+        throw InputError(where + "not a granrepro summary (a JSON object expected, found " + json_kind(j) + ")");
+    if (j.contains("schema") && j["schema"] != "granrepro-summary")
+        throw InputError(where + "'schema' must be \"granrepro-summary\", found " + json_kind(j["schema"]));
+    if (j.contains("experiment") && j["experiment"] != name)
+        throw InputError(where + "holds results of experiment " + json_kind(j["experiment"]) + ", not \"" + name + "\"");
+    if (!j.contains("scale")) throw InputError(where + "has no 'scale' (\"quick\" or \"paper\")");
+    if (!j["scale"].is_string() || (j["scale"] != "quick" && j["scale"] != "paper"))
+        throw InputError(where + "'scale' must be \"quick\" or \"paper\", found " + json_kind(j["scale"]));
+    if (!j.contains("scalars") || !j["scalars"].is_object()) throw InputError(where + "has no 'scalars' object");
+    for (auto it = j["scalars"].begin(); it != j["scalars"].end(); ++it)
+        if (!it.value().is_number() && !it.value().is_null())
+            throw InputError(where + "scalar '" + it.key() + "' must be a number or null, found " + json_kind(it.value()));
+    return j;
+}
+
+// data.h5 must open, carry the result schema of this experiment, hold the scalars summary.json
+// states (bit for bit; NaN for null), and every table must read back whole: a truncated file
+// fails one of these.
+void check_data_file(const fs::path& file, const std::string& name, const nlohmann::json& scalars) {
+    if (!fs::exists(file)) throw InputError(file.string() + ": missing (summary.json has no data file beside it)");
+    try {
+        const H5File f = H5File::open(file.string());
+        f.require_schema("granrepro-result", 1);
+        if (const std::string e = f.read_string_attr("experiment"); e != name)
+            throw std::runtime_error("holds results of experiment '" + e + "'");
+        const H5Object sc = f.open_group("scalars");
+        for (auto it = scalars.begin(); it != scalars.end(); ++it) {
+            if (!sc.has(it.key())) throw std::runtime_error("has no scalar '" + it.key() + "' (summary.json has it)");
+            const std::vector<double> v = sc.read_dataset(it.key());
+            const bool same = v.size() == 1 && (it.value().is_null() ? !std::isfinite(v[0])
+                                                                     : v[0] == it.value().get<double>());
+            if (!same) throw std::runtime_error("scalar '" + it.key() + "' differs from summary.json");
+        }
+        const H5Object tables = f.open_group("tables");
+        for (const auto& t : tables.children()) {
+            const H5Object g = tables.open_group(t);
+            for (const auto& c : g.children()) g.read_dataset(c);
+        }
+    } catch (const std::exception& e) {
+        std::string msg = e.what();
+        throw InputError(file.string() + ": damaged or not this experiment's results (" + msg.substr(0, msg.find('\n')) +
+                         "); rerun `granrepro " + name + "`");
+    }
+}
 } // namespace
 
 int run_experiment(const std::string& name, const RunOptions& opt, VerdictCounts* totals) {
@@ -75,9 +157,25 @@ int run_experiment(const std::string& name, const RunOptions& opt, VerdictCounts
     const auto claims = load_claims(expected_file(name), name);
     ensure_writable_directory(opt.out, "--out");
 
+    const fs::path final_dir = opt.out / name;
+    // One writer per OUT/<name> (see io/output_lock.hpp); then whatever killed runs left beside
+    // it is stale and is cleaned (or, for a kill inside a fallback commit, restored).
+    // Shards of one sweep share the lock (each point is its own file), a whole run or `gather`
+    // holds it alone; MPI ranks other than 0 run under rank 0's lock. Only a lone holder may
+    // clean leftovers: a shard's in-flight point files look like a dead run's.
+    const bool shard_run = opt.sweep.mode == SweepPlan::Mode::Shard ||
+                           (opt.sweep.mode == SweepPlan::Mode::All && opt.shard_from_slurm && exp.distributed &&
+                            slurm_array_shard().has_value());
+    std::optional<OutputLock> lock;
+    if (mpi::rank() == 0) lock.emplace(opt.out, name, shard_run ? OutputLock::Mode::Shared : OutputLock::Mode::Exclusive);
+    const fs::path work_dir = opt.out / ("." + name + ".checkpoint");
+    if (mpi::rank() == 0 && !shard_run) {
+        clean_staging_leftovers(final_dir, opt.quiet);
+        clean_temporary_leftovers(work_dir);
+    }
+
     // The new directory replaces the old one: a figure run renders the requested figures and
     // re-renders, from the new data, every other figure the old directory had.
-    const fs::path final_dir = opt.out / name;
     std::vector<std::string> to_render;
     for (const auto& f : info.figures)
         if (opt.figures.empty() || std::find(opt.figures.begin(), opt.figures.end(), f.id) != opt.figures.end() ||
@@ -116,7 +214,6 @@ int run_experiment(const std::string& name, const RunOptions& opt, VerdictCounts
             run_log().line("parameter " + p.name + " = " + p.value_text() + " [" + p.unit + "]" +
                            (p.overridden ? " (--set)" : ""));
     }
-    const fs::path work_dir = opt.out / ("." + name + ".checkpoint");
     fs::create_directories(work_dir);
     RunContext ctx{params, opt.scale, opt.seed, opt.threads, opt.quiet || !rank0, work_dir, opt.checkpoint_interval};
     ctx.sweep = plan;
@@ -136,41 +233,59 @@ int run_experiment(const std::string& name, const RunOptions& opt, VerdictCounts
         std::error_code ec;
         fs::remove_all(work_dir, ec);
         throw;
+    } catch (const Interrupted& e) {
+        bool kept = false;
+        std::error_code ec;
+        for (auto it = fs::recursive_directory_iterator(work_dir, ec); !ec && it != fs::recursive_directory_iterator();
+             it.increment(ec))
+            kept = kept || it->is_regular_file();
+        throw Interrupted(e.signal(), std::string(e.what()) +
+                                          (kept ? "; progress kept in " + work_dir.string() +
+                                                      ", rerun the same command to resume"
+                                                : "; no checkpoint had been written yet, the rerun starts afresh"));
     }
     Result& result = *ran;
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     run_log().line("run finished: wall time " + std::to_string(wall) + " s");
 
-    std::vector<std::pair<std::string, std::string>> plot_texts;
-    for (const auto& id : to_render) plot_texts.emplace_back(id, read_text(project_root() / "plots" / (id + ".gp")));
-    const Provenance prov{name,     info.paper, read_text(info.file),           opt.scale, opt.seed,
-                          wall,     opt.threads, opt.command_line, read_text(expected_file(name)), plot_texts};
-    write_result_h5(stage->path() / "data.h5", prov, params, result);
-    write_tables_tsv(stage->path() / "tables", result);
+    // Every write is checked; a failure names the file where it would have ended up, and the
+    // old results stay as they were (nothing is renamed into place).
     const auto verdicts = evaluate_claims(claims, scalars_json(result), opt.scale);
-    nlohmann::json summary = summary_json(prov, params, result);
-    summary["claims"] = claims_to_json(verdicts);
-    {
-        std::ofstream out(stage->path() / "summary.json");
-        out << summary.dump(2) << "\n";
+    try {
+        std::vector<std::pair<std::string, std::string>> plot_texts;
+        for (const auto& id : to_render) plot_texts.emplace_back(id, read_text(project_root() / "plots" / (id + ".gp")));
+        const Provenance prov{name,     info.paper, read_text(info.file),           opt.scale, opt.seed,
+                              wall,     opt.threads, opt.command_line, read_text(expected_file(name)), plot_texts};
+        write_result_h5(stage->path() / "data.h5", prov, params, result);
+        write_tables_tsv(stage->path() / "tables", result);
+        nlohmann::json summary = summary_json(prov, params, result);
+        summary["claims"] = claims_to_json(verdicts);
+        write_file_durably(stage->path() / "summary.json", summary.dump(2) + "\n");
+        for (const auto& id : to_render) {
+            render_figure(id, stage->path(), final_dir);
+            const fs::path png = stage->path() / (id + ".png");
+            if (fs::exists(png) && !png_complete(png)) throw WriteError(png.string(), "figure cut short (disk full?)");
+        }
+        const double wall_total = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        run_log().line("claims: " + [&] {
+            VerdictCounts c;
+            c.add(verdicts);
+            return c.text();
+        }());
+        run_log().line("done: wall time " + std::to_string(wall_total) + " s with writing and " +
+                       std::to_string(to_render.size()) + " figures");
+        run_log().close();
+        stage->commit();
+    } catch (const WriteError& e) {
+        throw WriteError(stage->shown(e.path()).string(), e.reason());
     }
-    for (const auto& id : to_render) render_figure(id, stage->path(), final_dir);
-    const double wall_total = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    run_log().line("claims: " + [&] {
-        VerdictCounts c;
-        c.add(verdicts);
-        return c.text();
-    }());
-    run_log().line("done: wall time " + std::to_string(wall_total) + " s with writing and " +
-                   std::to_string(to_render.size()) + " figures");
-    run_log().close();
-    stage->commit();
     std::error_code ec;
     fs::remove_all(work_dir, ec);
     if (!opt.quiet) std::fprintf(stderr, "%s: %.1f s, results in %s\n", name.c_str(), wall, final_dir.c_str());
     std::fputs(format_claim_table(name + " (" + to_string(opt.scale) + " scale)", verdicts).c_str(), stdout);
     std::fflush(stdout);
     if (totals) totals->add(verdicts);
+    throw_if_interrupted(" after the results were written to " + final_dir.string());
     return all_pass(verdicts) ? 0 : 1;
 }
 
@@ -204,15 +319,9 @@ int check_experiment(const std::string& name, const fs::path& out, const CheckOp
     if (!fs::exists(summary_path))
         throw InputError("check " + name + ": no results in " + (out / name).string() + "; run `granrepro " +
                          name + "` first");
-    nlohmann::json summary;
-    try {
-        summary = nlohmann::json::parse(read_text(summary_path));
-    } catch (const std::exception&) {
-        throw InputError(summary_path.string() + ": not valid JSON");
-    }
-    if (!summary.contains("scalars") || !summary["scalars"].is_object())
-        throw InputError(summary_path.string() + ": has no 'scalars' object");
-    const Scale scale = parse_scale(summary.value("scale", "quick"));
+    const nlohmann::json summary = read_summary(summary_path, name);
+    check_data_file(out / name / "data.h5", name, summary["scalars"]);
+    const Scale scale = parse_scale(summary["scale"].get<std::string>());
     const auto verdicts = evaluate_claims(claims, summary["scalars"], scale);
     std::fputs(format_claim_table(name + " (" + to_string(scale) + " scale)", verdicts).c_str(), stdout);
     if (opt.explain) std::fputs(format_deviation_explanations(verdicts).c_str(), stdout);

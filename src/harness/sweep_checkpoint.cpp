@@ -1,16 +1,22 @@
 #include "harness/sweep_checkpoint.hpp"
 
+#include <cstdio>
 #include <fstream>
-#include <functional>
+#include <sstream>
 
+#include "core/stable_hash.hpp"
+#include "harness/run_checkpoint.hpp"
 #include "io/staged_directory.hpp"
 
 namespace granrepro {
 
-SweepCheckpoint::SweepCheckpoint(const RunContext& ctx, const std::string& label) {
-    const std::string fingerprint = ctx.params.to_json().dump() + to_string(ctx.scale) + std::to_string(ctx.seed) + label;
-    const std::size_t h = std::hash<std::string>{}(fingerprint);
-    dir_ = ctx.work_dir / ("sweep-" + std::to_string(h));
+namespace {
+constexpr const char* kPointSchema = "granrepro-sweep-point";
+}
+
+SweepCheckpoint::SweepCheckpoint(const RunContext& ctx, const std::string& label) : quiet_(ctx.quiet) {
+    // The label keeps two sweeps of one experiment apart; empty for the one sweep most have.
+    dir_ = ctx.work_dir / ("sweep-" + checkpoint_fingerprint(ctx) + (label.empty() ? "" : "-" + label));
     std::filesystem::create_directories(dir_);
 }
 
@@ -18,18 +24,38 @@ std::optional<nlohmann::json> SweepCheckpoint::load(long point) const {
     const auto file = dir_ / (std::to_string(point) + ".json");
     std::ifstream in(file);
     if (!in) return std::nullopt;
+    std::stringstream text;
+    text << in.rdbuf();
+    std::string problem;
     try {
-        nlohmann::json j = nlohmann::json::parse(in);
-        std::lock_guard<std::mutex> lock(mutex_);
-        ++resumed_;
-        return j;
+        const nlohmann::json j = nlohmann::json::parse(text.str());
+        if (!j.is_object() || j.value("schema", "") != kPointSchema || j.value("schema_version", 0) != 1)
+            problem = "not a granrepro-sweep-point v1 file";
+        else if (!j.contains("point") || j["point"] != point)
+            problem = "holds another point";
+        else if (!j.contains("value") || !j.contains("fnv1a64") || j["fnv1a64"] != hex64(fnv1a64(j["value"].dump())))
+            problem = "value does not match its hash";
+        else {
+            std::lock_guard<std::mutex> lock(mutex_);
+            ++resumed_;
+            return j["value"];
+        }
     } catch (const std::exception&) {
-        return std::nullopt; // a torn file is recomputed
+        problem = "torn or not JSON";
     }
+    if (!quiet_) std::fprintf(stderr, "granrepro: recomputing sweep point %ld: %s: %s\n", point, file.c_str(), problem.c_str());
+    return std::nullopt;
 }
 
 void SweepCheckpoint::save(long point, const nlohmann::json& value) {
-    write_file_atomically(dir_ / (std::to_string(point) + ".json"), value.dump());
+    nlohmann::json j;
+    j["schema"] = kPointSchema;
+    j["schema_version"] = 1;
+    j["point"] = point;
+    j["fnv1a64"] = hex64(fnv1a64(value.dump()));
+    j["value"] = value;
+    std::filesystem::create_directories(dir_); // a shard's commit may have removed an empty folder
+    write_file_atomically(dir_ / (std::to_string(point) + ".json"), j.dump());
 }
 
 } // namespace granrepro

@@ -2,8 +2,13 @@
 // (OUT/.<experiment>.checkpoint/), keyed by a fingerprint of the resolved parameters, scale and
 // seed. Re-running the same command after an interruption loads the finished points instead of
 // recomputing them; any change of inputs changes the fingerprint and starts afresh. The runner
-// deletes the directory once the results are written. Each point is its own file, written through
-// a rename, so concurrent --points shards and MPI ranks never need a lock to share one --out.
+// deletes the directory once the results are written.
+// A point file is {"schema": "granrepro-sweep-point", "schema_version": 1, "point": i,
+// "fnv1a64": <FNV-1a 64 of value.dump()>, "value": ...}; written durably (fsync, rename). A file
+// that is torn, not JSON, another point's, or whose value does not match its hash (`{}`, garbage)
+// is recomputed with a note on stderr, never trusted and never a permanent failure.
+// Each point is its own file, written through a rename, so concurrent --points shards and MPI
+// ranks never need a lock to share one --out.
 #pragma once
 #include <filesystem>
 #include <mutex>
@@ -25,6 +30,7 @@ public:
 
 private:
     std::filesystem::path dir_;
+    bool quiet_ = false;
     mutable long resumed_ = 0;
     mutable std::mutex mutex_;
 };

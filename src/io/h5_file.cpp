@@ -1,16 +1,77 @@
 #include "io/h5_file.hpp"
 
+#include <cctype>
 #include <stdexcept>
+
+#include "io/write_error.hpp"
 
 namespace granrepro {
 
 namespace {
+// HDF5 prints its error stack to stderr by default (a hundred lines of HDF5-DIAG for a full disk);
+// we turn a failure into one exception instead. Called before every file is created or opened
+// (in a thread-safe HDF5 the setting is per thread).
+void silence_hdf5() { H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr); }
+
+struct Reason {
+    std::string text;
+    bool system = false; // text is the operating system's error (strerror)
+};
+
+herr_t innermost(unsigned n, const H5E_error2_t* e, void* data) {
+    auto* reason = static_cast<Reason*>(data);
+    const std::string desc = e->desc ? e->desc : "";
+    // The sec2 driver reports the system error as "..., error message = 'No space left on device', ...".
+    const auto at = desc.find("error message = '");
+    if (at != std::string::npos) {
+        const auto b = at + 17, end = desc.find('\'', b);
+        std::string msg = desc.substr(b, end == std::string::npos ? std::string::npos : end - b);
+        if (msg.size() > 1 && std::isupper(static_cast<unsigned char>(msg[0])) && std::islower(static_cast<unsigned char>(msg[1])))
+            msg[0] = char(std::tolower(static_cast<unsigned char>(msg[0])));
+        *reason = {msg, true};
+        return 1; // stop: the system's reason is the most useful one
+    }
+    if (n == 0) reason->text = desc;
+    return 0;
+}
+
+// The reason of the failure HDF5 just reported (read before any other HDF5 call clears it).
+Reason hdf5_reason() {
+    Reason reason;
+    H5Ewalk2(H5E_DEFAULT, H5E_WALK_UPWARD, innermost, &reason);
+    if (reason.text.empty()) reason.text = "unknown HDF5 error";
+    return reason;
+}
+
+std::string file_name(hid_t obj) {
+    const ssize_t n = obj >= 0 ? H5Fget_name(obj, nullptr, 0) : -1;
+    if (n <= 0) return "an HDF5 file";
+    std::string s(std::size_t(n) + 1, '\0');
+    H5Fget_name(obj, s.data(), s.size());
+    s.resize(std::size_t(n));
+    return s;
+}
+
+// A failed write: WriteError naming the file (from `obj`) and the reason ("no space left on
+// device", or HDF5's own words and what we asked of it).
+[[noreturn]] void write_failed(hid_t obj, const std::string& what) {
+    const Reason r = hdf5_reason();
+    throw WriteError(file_name(obj), r.system ? r.text : "HDF5 could not " + what + " (" + r.text + ")");
+}
+hid_t wcheck(hid_t id, hid_t obj, const std::string& what) {
+    if (id < 0) write_failed(obj, what);
+    return id;
+}
+void wcheck(herr_t e, hid_t obj, const std::string& what) {
+    if (e < 0) write_failed(obj, what);
+}
+
 hid_t check(hid_t id, const std::string& what) {
-    if (id < 0) throw std::runtime_error("HDF5: " + what);
+    if (id < 0) throw std::runtime_error("HDF5: " + what + ": " + hdf5_reason().text);
     return id;
 }
 void check(herr_t e, const std::string& what) {
-    if (e < 0) throw std::runtime_error("HDF5: " + what);
+    if (e < 0) throw std::runtime_error("HDF5: " + what + ": " + hdf5_reason().text);
 }
 } // namespace
 
@@ -27,18 +88,42 @@ H5Object ordered(hid_t plist_class, bool links) {
 } // namespace
 
 H5File H5File::create(const std::string& path) {
-    const H5Object fcpl = ordered(H5P_FILE_CREATE, true);
-    return H5File(check(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, fcpl.id(), H5P_DEFAULT), "create " + path), &H5Fclose);
+    silence_hdf5();
+    const H5Object fcpl = ordered(H5P_FILE_CREATE, true); // links and attributes keep their creation order
+    const hid_t id = H5Fcreate(path.c_str(), H5F_ACC_TRUNC, fcpl.id(), H5P_DEFAULT);
+    if (id < 0) {
+        const Reason r = hdf5_reason();
+        throw WriteError(path, r.system ? r.text : "HDF5 could not create the file (" + r.text + ")");
+    }
+    return H5File(id, &H5Fclose);
 }
 
 H5File H5File::open(const std::string& path) {
-    H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+    silence_hdf5();
     return H5File(check(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), "open " + path), &H5Fclose);
+}
+
+void H5File::close() {
+    if (id_ < 0) return;
+    const hid_t id = id_;
+    const std::string name = file_name(id);
+    id_ = -1; // a failed close is not retried by the destructor
+    auto failed = [&](const char* what) {
+        const Reason r = hdf5_reason();
+        return WriteError(name, r.system ? r.text : std::string("HDF5 could not ") + what + " (" + r.text + ")");
+    };
+    if (H5Fflush(id, H5F_SCOPE_GLOBAL) < 0) {
+        const WriteError e = failed("flush the file");
+        H5Fclose(id);
+        throw e;
+    }
+    if (H5Fclose(id) < 0) throw failed("close the file");
 }
 
 H5Object H5Object::group(const std::string& name) const {
     const H5Object gcpl = ordered(H5P_GROUP_CREATE, true);
-    return {check(H5Gcreate2(id_, name.c_str(), H5P_DEFAULT, gcpl.id(), H5P_DEFAULT), "group " + name), &H5Gclose};
+    return {wcheck(H5Gcreate2(id_, name.c_str(), H5P_DEFAULT, gcpl.id(), H5P_DEFAULT), id_, "create group " + name),
+            &H5Gclose};
 }
 
 H5Object H5Object::open_group(const std::string& name) const {
@@ -47,67 +132,58 @@ H5Object H5Object::open_group(const std::string& name) const {
 
 namespace {
 void write_attr(hid_t obj, const std::string& name, hid_t type, hid_t space, const void* data) {
-    const hid_t a = check(H5Acreate2(obj, name.c_str(), type, space, H5P_DEFAULT, H5P_DEFAULT), "attr " + name);
-    const herr_t e = H5Awrite(a, type, data);
-    H5Aclose(a);
-    check(e, "write attr " + name);
+    const hid_t a = wcheck(H5Acreate2(obj, name.c_str(), type, space, H5P_DEFAULT, H5P_DEFAULT), obj,
+                           "create attribute " + name);
+    const H5Object attr(a, &H5Aclose);
+    wcheck(H5Awrite(a, type, data), obj, "write attribute " + name);
 }
+// Data spaces and types are only memory; their creation fails only when memory runs out.
+H5Object scalar_space() { return {check(H5Screate(H5S_SCALAR), "data space"), &H5Sclose}; }
+H5Object simple_space(hsize_t n) { return {check(H5Screate_simple(1, &n, nullptr), "data space"), &H5Sclose}; }
 } // namespace
 
 void H5Object::attr(const std::string& name, double v) const {
-    const hid_t s = H5Screate(H5S_SCALAR);
-    write_attr(id_, name, H5T_NATIVE_DOUBLE, s, &v);
-    H5Sclose(s);
+    write_attr(id_, name, H5T_NATIVE_DOUBLE, scalar_space().id(), &v);
 }
 
 void H5Object::attr(const std::string& name, long v) const {
-    const hid_t s = H5Screate(H5S_SCALAR);
-    write_attr(id_, name, H5T_NATIVE_LONG, s, &v);
-    H5Sclose(s);
+    write_attr(id_, name, H5T_NATIVE_LONG, scalar_space().id(), &v);
 }
 
 void H5Object::attr(const std::string& name, const std::string& v) const {
-    const hid_t t = H5Tcopy(H5T_C_S1);
-    H5Tset_size(t, v.empty() ? 1 : v.size());
-    H5Tset_cset(t, H5T_CSET_UTF8);
-    const hid_t s = H5Screate(H5S_SCALAR);
+    const H5Object t(check(H5Tcopy(H5T_C_S1), "string type"), &H5Tclose);
+    check(H5Tset_size(t.id(), v.empty() ? 1 : v.size()), "string type");
+    check(H5Tset_cset(t.id(), H5T_CSET_UTF8), "string type");
     const std::string padded = v.empty() ? std::string(1, '\0') : v;
-    write_attr(id_, name, t, s, padded.data());
-    H5Sclose(s);
-    H5Tclose(t);
+    write_attr(id_, name, t.id(), scalar_space().id(), padded.data());
 }
 
 void H5Object::attr(const std::string& name, const std::vector<double>& v) const {
-    const hsize_t n = v.size();
-    const hid_t s = H5Screate_simple(1, &n, nullptr);
-    write_attr(id_, name, H5T_NATIVE_DOUBLE, s, v.data());
-    H5Sclose(s);
+    write_attr(id_, name, H5T_NATIVE_DOUBLE, simple_space(v.size()).id(), v.data());
 }
+
+namespace {
+// A 1-D dataset of n elements of file type `file_type`, written from `data` (memory type `mem_type`).
+H5Object write_dataset(hid_t obj, const std::string& name, hid_t file_type, hid_t mem_type, hsize_t n,
+                       const void* data) {
+    const H5Object s = simple_space(n);
+    H5Object d(wcheck(H5Dcreate2(obj, name.c_str(), file_type, s.id(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), obj,
+                      "create dataset " + name),
+               &H5Dclose);
+    if (n) wcheck(H5Dwrite(d.id(), mem_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data), obj, "write dataset " + name);
+    return d;
+}
+} // namespace
 
 void H5Object::dataset(const std::string& name, const std::vector<double>& v,
                        const std::string& unit, const std::string& description) const {
-    const hsize_t n = v.size();
-    const hid_t s = H5Screate_simple(1, &n, nullptr);
-    const H5Object dcpl = ordered(H5P_DATASET_CREATE, false);
-    const hid_t d = check(H5Dcreate2(id_, name.c_str(), H5T_IEEE_F64LE, s, H5P_DEFAULT, dcpl.id(), H5P_DEFAULT),
-                          "dataset " + name);
-    const herr_t e = n ? H5Dwrite(d, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data()) : 0;
-    H5Sclose(s);
-    H5Object ds(d, &H5Dclose);
-    check(e, "write " + name);
+    const H5Object ds = write_dataset(id_, name, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, v.size(), v.data());
     ds.attr("unit", unit);
     if (!description.empty()) ds.attr("description", description);
 }
 
 void H5Object::bytes(const std::string& name, const std::vector<unsigned char>& v) const {
-    const hsize_t n = v.size();
-    const hid_t s = H5Screate_simple(1, &n, nullptr);
-    const hid_t d = check(H5Dcreate2(id_, name.c_str(), H5T_NATIVE_UCHAR, s, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
-                          "dataset " + name);
-    const herr_t e = n ? H5Dwrite(d, H5T_NATIVE_UCHAR, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data()) : 0;
-    H5Sclose(s);
-    H5Dclose(d);
-    check(e, "write " + name);
+    write_dataset(id_, name, H5T_NATIVE_UCHAR, H5T_NATIVE_UCHAR, v.size(), v.data());
 }
 
 namespace {
@@ -122,14 +198,7 @@ template <> hid_t native_type<std::uint64_t>() { return H5T_NATIVE_UINT64; }
 
 template <class T>
 void H5Object::array(const std::string& name, const std::vector<T>& v) const {
-    const hsize_t n = v.size();
-    const hid_t s = H5Screate_simple(1, &n, nullptr);
-    const hid_t d = check(H5Dcreate2(id_, name.c_str(), native_type<T>(), s, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
-                          "dataset " + name);
-    const herr_t e = n ? H5Dwrite(d, native_type<T>(), H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data()) : 0;
-    H5Sclose(s);
-    H5Dclose(d);
-    check(e, "write " + name);
+    write_dataset(id_, name, native_type<T>(), native_type<T>(), v.size(), v.data());
 }
 
 template <class T>
@@ -154,9 +223,7 @@ template std::vector<std::uint32_t> H5Object::read_array(const std::string&) con
 template std::vector<std::uint64_t> H5Object::read_array(const std::string&) const;
 
 void H5Object::attr_u64(const std::string& name, std::uint64_t v) const {
-    const hid_t s = H5Screate(H5S_SCALAR);
-    write_attr(id_, name, H5T_NATIVE_UINT64, s, &v);
-    H5Sclose(s);
+    write_attr(id_, name, H5T_NATIVE_UINT64, scalar_space().id(), &v);
 }
 
 long H5Object::read_long_attr(const std::string& name) const {
@@ -212,7 +279,7 @@ std::size_t H5Object::dataset_size(const std::string& name) const {
 }
 
 void H5Object::copy_to(const std::string& name, const H5Object& dst) const {
-    check(H5Ocopy(id_, name.c_str(), dst.id(), name.c_str(), H5P_DEFAULT, H5P_DEFAULT), "copy " + name);
+    wcheck(H5Ocopy(id_, name.c_str(), dst.id(), name.c_str(), H5P_DEFAULT, H5P_DEFAULT), dst.id(), "copy " + name);
 }
 
 void H5Object::copy_attr_to(const std::string& name, const H5Object& dst) const {

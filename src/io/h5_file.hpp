@@ -1,5 +1,8 @@
 // Thin RAII layer over the HDF5 C API: just what the result schema needs (groups, 1-D double
-// datasets, scalar and string attributes).
+// datasets, scalar and string attributes). HDF5's own error printing is switched off; every
+// failed write throws WriteError (file name and reason, e.g. "no space left on device"), every
+// failed read std::runtime_error. A file being written must end with close(), which flushes and
+// reports what the flush could not write; the destructor closes silently (on error paths).
 #pragma once
 #include <cstdint>
 #include <hdf5.h>
@@ -60,8 +63,10 @@ public:
     // Throws std::runtime_error unless the group carries exactly this schema and version.
     void require_schema(const std::string& schema, long version) const;
 
-private:
+protected:
     hid_t id_ = -1;
+
+private:
     herr_t (*close_)(hid_t) = nullptr;
 };
 
@@ -69,6 +74,9 @@ class H5File : public H5Object {
 public:
     static H5File create(const std::string& path); // truncates
     static H5File open(const std::string& path);   // read-only
+    // Flushes and closes; throws WriteError if the data did not reach the file.
+    void close();
+
 private:
     using H5Object::H5Object;
 };

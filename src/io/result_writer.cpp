@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "core/provenance.hpp"
+#include "io/durable_file.hpp"
 #include "io/h5_file.hpp"
 
 #include <hdf5_hl.h>
@@ -167,12 +168,13 @@ void write_result_h5(const std::filesystem::path& file, const Provenance& prov, 
         g.attr("expected_file", prov.expected_file_text);
         for (const auto& [id, text] : prov.plot_texts) g.attr("plot_" + id, text);
     }
+    f.close();
 }
 
 void write_tables_tsv(const std::filesystem::path& dir, const Result& result) {
     std::filesystem::create_directories(dir);
     for (const auto& t : result.tables) {
-        std::ofstream out(dir / (t.name + ".tsv"));
+        std::ostringstream out;
         out << std::setprecision(10);
         std::size_t rows = 0;
         for (std::size_t c = 0; c < t.columns.size(); ++c) {
@@ -193,7 +195,7 @@ void write_tables_tsv(const std::filesystem::path& dir, const Result& result) {
             }
             out << "\n";
         }
-        if (!out) throw std::runtime_error("cannot write table " + t.name);
+        write_file_durably(dir / (t.name + ".tsv"), out.str());
     }
 }
 
@@ -250,6 +252,7 @@ std::vector<std::string> write_compact_result_h5(const std::filesystem::path& sr
     }
     out.attr("omitted_tables", listing.empty() ? std::string("none") : listing);
     out.attr("compacted_to_max_values", long(max_values));
+    out.close();
     return omitted;
 }
 

@@ -1,14 +1,45 @@
 #include "io/staged_directory.hpp"
 
-#include <fstream>
+#include <cerrno>
+#include <csignal>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <fcntl.h>
+#include <mutex>
 #include <system_error>
 #include <unistd.h>
+#include <vector>
 
 #include "core/input_error.hpp"
+#include "core/interrupt.hpp"
+#include "io/durable_file.hpp"
+#include "io/write_error.hpp"
 
 namespace fs = std::filesystem;
 
 namespace granrepro {
+
+namespace {
+fs::path parent_of(const fs::path& p) { return p.parent_path().empty() ? fs::path(".") : p.parent_path(); }
+
+bool test_hook(const char* point) {
+    const char* v = std::getenv("GRANREPRO_TEST_KILL_IN_COMMIT");
+    return v && std::strcmp(v, point) == 0;
+}
+
+// Digits after `prefix` in `name`, or -1.
+long pid_suffix(const std::string& name, const std::string& prefix) {
+    if (name.size() <= prefix.size() || name.compare(0, prefix.size(), prefix) != 0) return -1;
+    const std::string digits = name.substr(prefix.size());
+    if (digits.find_first_not_of("0123456789") != std::string::npos || digits.size() > 9) return -1;
+    return std::stol(digits);
+}
+
+void rename_or_throw(const fs::path& from, const fs::path& to, const fs::path& shown) {
+    if (::rename(from.c_str(), to.c_str()) != 0) throw WriteError(shown.string(), errno_text(errno));
+}
+} // namespace
 
 void ensure_writable_directory(const fs::path& dir, const std::string& flag) {
     std::error_code ec;
@@ -21,12 +52,13 @@ void ensure_writable_directory(const fs::path& dir, const std::string& flag) {
 }
 
 StagedDirectory::StagedDirectory(fs::path final_path) : final_(std::move(final_path)) {
-    ensure_writable_directory(final_.parent_path().empty() ? fs::path(".") : final_.parent_path(), "--out");
+    ensure_writable_directory(parent_of(final_), "--out");
     staging_ = final_.parent_path() / ("." + final_.filename().string() + ".partial-" + std::to_string(getpid()));
     std::error_code ec;
     fs::remove_all(staging_, ec);
     fs::create_directories(staging_, ec);
     if (ec) throw InputError("--out " + final_.parent_path().string() + ": cannot create " + staging_.string());
+    register_for_cleanup(staging_);
 }
 
 StagedDirectory::~StagedDirectory() {
@@ -34,25 +66,115 @@ StagedDirectory::~StagedDirectory() {
         std::error_code ec;
         fs::remove_all(staging_, ec);
     }
+    unregister_for_cleanup(staging_);
+}
+
+fs::path StagedDirectory::shown(const fs::path& staged) const {
+    const fs::path rel = staged.lexically_relative(staging_);
+    if (rel.empty() || *rel.begin() == "..") return staged;
+    return rel == "." ? final_ : final_ / rel;
 }
 
 void StagedDirectory::commit() {
-    const fs::path old = final_.parent_path() / ("." + final_.filename().string() + ".old-" + std::to_string(getpid()));
+    // Everything staged must be on disk before it can replace the old results.
+    try {
+        fsync_tree(staging_);
+    } catch (const WriteError& e) {
+        throw WriteError(shown(e.path()).string(), e.reason());
+    }
+    const fs::path parent = parent_of(final_);
+    const std::lock_guard<std::mutex> critical(interrupt_critical_mutex()); // a signal never cuts a commit
     std::error_code ec;
-    if (fs::exists(final_)) fs::rename(final_, old);
-    fs::rename(staging_, final_);
-    committed_ = true;
+    if (!fs::exists(final_, ec)) {
+        rename_or_throw(staging_, final_, final_);
+        committed_ = true;
+        fsync_path(parent);
+        return;
+    }
+    const bool exchange_refused_for_test = std::getenv("GRANREPRO_TEST_COMMIT_NO_EXCHANGE") != nullptr;
+    if (!exchange_refused_for_test &&
+        ::renameat2(AT_FDCWD, staging_.c_str(), AT_FDCWD, final_.c_str(), RENAME_EXCHANGE) == 0) {
+        committed_ = true;
+        fsync_path(parent);
+        if (test_hook("after-exchange")) ::raise(SIGKILL);
+        fs::remove_all(staging_, ec); // the old results; a failure leaves them for the next run to clean
+        return;
+    }
+    if (!exchange_refused_for_test && errno != EINVAL && errno != ENOSYS)
+        throw WriteError(final_.string(), errno_text(errno));
+    // The filesystem cannot exchange: two renames, with a window that clean_staging_leftovers() repairs.
+    const fs::path old = final_.parent_path() / ("." + final_.filename().string() + ".old-" + std::to_string(getpid()));
     fs::remove_all(old, ec);
+    rename_or_throw(final_, old, final_);
+    if (test_hook("between-renames")) ::raise(SIGKILL);
+    if (::rename(staging_.c_str(), final_.c_str()) != 0) {
+        const int err = errno;
+        ::rename(old.c_str(), final_.c_str()); // put the old results back
+        throw WriteError(final_.string(), errno_text(err));
+    }
+    committed_ = true;
+    fsync_path(parent);
+    fs::remove_all(old, ec);
+}
+
+void clean_staging_leftovers(const fs::path& final_path, bool quiet) {
+    const fs::path parent = parent_of(final_path);
+    const std::string name = final_path.filename().string();
+    const std::string partial = "." + name + ".partial-", old = "." + name + ".old-";
+    const long me = long(getpid());
+    std::vector<fs::path> partials, olds;
+    std::error_code ec;
+    for (const auto& e : fs::directory_iterator(parent, ec)) {
+        const std::string n = e.path().filename().string();
+        if (const long pid = pid_suffix(n, partial); pid >= 0 && pid != me) partials.push_back(e.path());
+        if (const long pid = pid_suffix(n, old); pid >= 0 && pid != me) olds.push_back(e.path());
+    }
+    if (!fs::exists(final_path, ec) && !olds.empty()) {
+        // Only an old copy is left: a run was killed between the two renames of a fallback commit.
+        if (::rename(olds.front().c_str(), final_path.c_str()) == 0) {
+            if (!quiet)
+                std::fprintf(stderr, "granrepro: restored %s from %s (a run was killed while committing)\n",
+                             final_path.c_str(), olds.front().c_str());
+            olds.erase(olds.begin());
+        }
+    }
+    for (const auto* list : {&partials, &olds})
+        for (const auto& p : *list) fs::remove_all(p, ec);
+}
+
+void clean_temporary_leftovers(const fs::path& dir) {
+    std::error_code ec;
+    if (!fs::is_directory(dir, ec)) return;
+    const std::string me = std::to_string(getpid());
+    std::vector<fs::path> stale;
+    for (auto it = fs::recursive_directory_iterator(dir, ec); !ec && it != fs::recursive_directory_iterator();
+         it.increment(ec)) {
+        const std::string n = it->path().filename().string();
+        for (const char* marker : {".partial-", ".tmp-"}) {
+            const auto at = n.rfind(marker);
+            if (at == std::string::npos) continue;
+            const std::string pid = n.substr(at + std::strlen(marker));
+            if (!pid.empty() && pid.find_first_not_of("0123456789") == std::string::npos && pid != me)
+                stale.push_back(it->path());
+        }
+    }
+    for (const auto& p : stale) fs::remove_all(p, ec);
 }
 
 void write_file_atomically(const fs::path& path, const std::string& content) {
     const fs::path tmp = path.parent_path() / ("." + path.filename().string() + ".tmp-" + std::to_string(getpid()));
-    {
-        std::ofstream out(tmp, std::ios::binary);
-        out << content;
-        if (!out) throw std::runtime_error("cannot write " + tmp.string());
+    try {
+        write_file_durably(tmp, content);
+    } catch (const WriteError& e) {
+        throw WriteError(path.string(), e.reason());
     }
-    fs::rename(tmp, path);
+    if (::rename(tmp.c_str(), path.c_str()) != 0) {
+        const int err = errno;
+        std::error_code ec;
+        fs::remove(tmp, ec);
+        throw WriteError(path.string(), errno_text(err));
+    }
+    fsync_path(parent_of(path));
 }
 
 } // namespace granrepro

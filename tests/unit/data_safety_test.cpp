@@ -1,0 +1,471 @@
+// Nothing lost, nothing wrong, whatever happens (issue 20 items 1-3 and 8, issue 19 item 6): a
+// write that fails (full disk) exits 3 with one line and leaves the previous results untouched;
+// a kill inside the commit leaves complete results; a second run on the same --out is refused;
+// SIGTERM saves a final checkpoint and the rerun gives the uninterrupted results; `check` refuses
+// damaged results files; damaged sweep-point files are recomputed.
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <csignal>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <nlohmann/json.hpp>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <thread>
+#include <unistd.h>
+
+#include "cli_support.hpp"
+#include "core/input_error.hpp"
+#include "core/stable_hash.hpp"
+#include "harness/experiment.hpp"
+#include "harness/sweep_checkpoint.hpp"
+#include "io/h5_file.hpp"
+#include "io/output_lock.hpp"
+#include "io/staged_directory.hpp"
+#include "io/write_error.hpp"
+
+extern char** environ;
+
+namespace fs = std::filesystem;
+using namespace granrepro;
+using cli_support::fresh;
+using cli_support::Outcome;
+using cli_support::run;
+
+namespace {
+
+int lines(const std::string& s) { return int(std::count(s.begin(), s.end(), '\n')); }
+
+std::string slurp(const fs::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+}
+
+void put(const fs::path& p, const std::string& text) { std::ofstream(p, std::ios::binary) << text; }
+
+// Hidden folders and files that a run of `exp` may leave beside OUT/<exp> (the lock file is
+// meant to stay).
+std::vector<std::string> leftovers(const fs::path& out, const std::string& exp) {
+    std::vector<std::string> found;
+    if (!fs::exists(out)) return found;
+    for (const auto& e : fs::directory_iterator(out)) {
+        const std::string n = e.path().filename().string();
+        if (n.rfind("." + exp + ".partial-", 0) == 0 || n.rfind("." + exp + ".old-", 0) == 0) found.push_back(n);
+    }
+    return found;
+}
+
+const std::string kSmallRun = "emergency-brake --quiet --set n_vy=15 --set n_positions=3 ";
+const std::string kExp = "emergency-brake";
+
+std::string shim_env(const std::string& vars) {
+    // ASan (in the sanitizer build) wants its runtime first; the shim is preloaded before it.
+    return "ASAN_OPTIONS=verify_asan_link_order=0 LD_PRELOAD=" + std::string(GRANREPRO_ENOSPC_SHIM) + " " + vars;
+}
+
+// A granrepro process in the background; stderr to `err`.
+pid_t spawn(const std::string& args, const fs::path& err, const std::string& env = "") {
+    const std::string cmd = env + " exec " + std::string(GRANREPRO_BINARY) + " " + args + " > /dev/null 2> " + err.string();
+    const char* argv[] = {"/bin/sh", "-c", cmd.c_str(), nullptr};
+    pid_t pid = -1;
+    if (posix_spawn(&pid, "/bin/sh", nullptr, nullptr, const_cast<char**>(argv), environ) != 0) return -1;
+    return pid;
+}
+
+// Exit code (128 + signal if killed by one).
+int wait_for(pid_t pid) {
+    int status = 0;
+    waitpid(pid, &status, 0);
+    return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+}
+
+template <class Pred>
+bool wait_until(Pred pred, double seconds) {
+    const auto end = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
+    while (std::chrono::steady_clock::now() < end) {
+        if (pred()) return true;
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    }
+    return pred();
+}
+
+} // namespace
+
+// ---- stable fingerprints --------------------------------------------------------------------
+
+TEST(StableHash, Fnv1a64MatchesThePublishedVectors) {
+    // Test vectors of the FNV reference (http://www.isthe.com/chongo/src/fnv/test_fnv.c).
+    EXPECT_EQ(fnv1a64(""), 0xcbf29ce484222325ULL);
+    EXPECT_EQ(fnv1a64("a"), 0xaf63dc4c8601ec8cULL);
+    EXPECT_EQ(fnv1a64("foobar"), 0x85944171f73967e8ULL);
+    EXPECT_EQ(hex64(0xaf63dc4c8601ec8cULL), "af63dc4c8601ec8c");
+}
+
+// ---- sweep-point files ------------------------------------------------------------------------
+
+TEST(SweepCheckpoint, DamagedPointFilesAreRecomputedNotTrusted) {
+    const fs::path work = fresh("sweep-points");
+    const ParameterSet params = ParameterSet::load(fs::path(GRANREPRO_SOURCE_DIR) / "experiments" / "pipe-arching.toml",
+                                                   Scale::Quick);
+    const RunContext ctx{params, Scale::Quick, 7, 1, true, work, 60.0};
+    const nlohmann::json value = {{"t", {0.5, 1.25}}, {"n", 3}};
+    fs::path dir;
+    {
+        SweepCheckpoint c(ctx);
+        c.save(0, value);
+        c.save(1, nlohmann::json{{"t", {2.0}}, {"n", 1}});
+        ASSERT_EQ(c.load(0), value);
+        EXPECT_EQ(c.resumed(), 1);
+        for (const auto& e : fs::directory_iterator(work)) dir = e.path();
+    }
+    ASSERT_FALSE(dir.empty());
+    const std::string good0 = slurp(dir / "0.json");
+    const std::string damaged[] = {"{}", "garbage", "[1,2,3]", good0.substr(0, good0.size() / 2),
+                                   slurp(dir / "1.json") /* another point's file */,
+                                   [&] {
+                                       auto j = nlohmann::json::parse(good0);
+                                       j["value"]["n"] = 4; // edited value, stale hash
+                                       return j.dump();
+                                   }()};
+    for (const auto& text : damaged) {
+        put(dir / "0.json", text);
+        SweepCheckpoint c(ctx);
+        EXPECT_FALSE(c.load(0).has_value()) << text;
+        EXPECT_EQ(c.resumed(), 0);
+    }
+    put(dir / "0.json", good0);
+    EXPECT_EQ(SweepCheckpoint(ctx).load(0), value);
+    fs::remove_all(work);
+}
+
+// ---- the commit ---------------------------------------------------------------------------
+
+TEST(StagedDirectory, FallbackCommitReplacesAndLeavesNothing) {
+    const fs::path dir = fresh("fallback");
+    fs::create_directories(dir / "exp");
+    put(dir / "exp" / "data.txt", "old");
+    setenv("GRANREPRO_TEST_COMMIT_NO_EXCHANGE", "1", 1);
+    {
+        StagedDirectory s(dir / "exp");
+        put(s.path() / "data.txt", "new");
+        s.commit();
+    }
+    unsetenv("GRANREPRO_TEST_COMMIT_NO_EXCHANGE");
+    EXPECT_EQ(slurp(dir / "exp" / "data.txt"), "new");
+    EXPECT_TRUE(leftovers(dir, "exp").empty());
+    {
+        StagedDirectory s(dir / "exp"); // the exchange
+        put(s.path() / "data.txt", "newer");
+        s.commit();
+    }
+    EXPECT_EQ(slurp(dir / "exp" / "data.txt"), "newer");
+    EXPECT_TRUE(leftovers(dir, "exp").empty());
+    fs::remove_all(dir);
+}
+
+TEST(StagedDirectory, LeftoversOfKilledRunsAreCleanedAndAnOnlyOldCopyRestored) {
+    const fs::path dir = fresh("leftovers");
+    // A kill between the two renames of a fallback commit: only the old copy and the new staging.
+    fs::create_directories(dir / ".exp.old-999991");
+    put(dir / ".exp.old-999991" / "data.txt", "old results");
+    fs::create_directories(dir / ".exp.partial-999991");
+    fs::create_directories(dir / ".exp.partial-999992");
+    fs::create_directories(dir / ".other.partial-999993"); // another experiment's: not ours to touch
+    clean_staging_leftovers(dir / "exp", true);
+    EXPECT_EQ(slurp(dir / "exp" / "data.txt"), "old results");
+    EXPECT_TRUE(leftovers(dir, "exp").empty());
+    EXPECT_TRUE(fs::exists(dir / ".other.partial-999993"));
+    // With results in place, an old copy is garbage.
+    fs::create_directories(dir / ".exp.old-999994");
+    clean_staging_leftovers(dir / "exp", true);
+    EXPECT_TRUE(leftovers(dir, "exp").empty());
+    EXPECT_EQ(slurp(dir / "exp" / "data.txt"), "old results");
+    // Temporaries of checkpoints.
+    fs::create_directories(dir / "ck" / "sweep-1");
+    put(dir / "ck" / "sweep-1" / ".3.json.tmp-999995", "torn");
+    put(dir / "ck" / "run-1-ed.h5.partial-999996", "torn");
+    put(dir / "ck" / "sweep-1" / "2.json", "kept");
+    clean_temporary_leftovers(dir / "ck");
+    EXPECT_FALSE(fs::exists(dir / "ck" / "sweep-1" / ".3.json.tmp-999995"));
+    EXPECT_FALSE(fs::exists(dir / "ck" / "run-1-ed.h5.partial-999996"));
+    EXPECT_TRUE(fs::exists(dir / "ck" / "sweep-1" / "2.json"));
+    fs::remove_all(dir);
+}
+
+// ---- the lock ---------------------------------------------------------------------------------
+
+TEST(OutputLock, ExclusiveRefusesAnyOtherSharedCoexist) {
+    const fs::path dir = fresh("lock");
+    fs::create_directories(dir);
+    {
+        const OutputLock a(dir, "exp");
+        try {
+            const OutputLock b(dir, "exp");
+            ADD_FAILURE() << "a second exclusive lock was granted";
+        } catch (const InputError& e) {
+            EXPECT_NE(std::string(e.what()).find((dir / "exp").string() + " is being written by pid " +
+                                                 std::to_string(getpid())),
+                      std::string::npos)
+                << e.what();
+        }
+        EXPECT_THROW(OutputLock(dir, "exp", OutputLock::Mode::Shared), InputError);
+        EXPECT_NO_THROW(OutputLock(dir, "other")); // per experiment
+    }
+    {
+        const OutputLock s1(dir, "exp", OutputLock::Mode::Shared);
+        EXPECT_NO_THROW(OutputLock(dir, "exp", OutputLock::Mode::Shared)); // shards side by side
+        EXPECT_THROW(OutputLock(dir, "exp"), InputError);                 // but never beside a whole run
+    }
+    EXPECT_NO_THROW(OutputLock(dir, "exp")); // released with its holder
+    fs::remove_all(dir);
+}
+
+// ---- the command line -------------------------------------------------------------------------
+
+// Writes that fail as on a full disk (an LD_PRELOAD shim): exit 3, one line naming the file as the
+// user knows it, the previous results byte for byte as they were, nothing hidden left behind.
+TEST(DataSafety, FailedWriteExitsThreeAndKeepsThePreviousResults) {
+    const fs::path out = fresh("enospc");
+    ASSERT_EQ(run(kSmallRun + "--seed 1 --out " + out.string()).code, 0);
+    const fs::path dir = out / kExp;
+    const std::string summary = slurp(dir / "summary.json"), data = slurp(dir / "data.h5");
+    struct Case {
+        std::string env, file, reason;
+    };
+    const Case cases[] = {
+        {"GRANREPRO_SHIM_FAIL_WRITE=summary.json", "summary.json", "no space left on device"},
+        {"GRANREPRO_SHIM_FAIL_WRITE=summary.json GRANREPRO_SHIM_FAIL_AFTER=4096", "summary.json", "no space left on device"},
+        {"GRANREPRO_SHIM_FAIL_WRITE=data.h5", "data.h5", "no space left on device"},
+        {"GRANREPRO_SHIM_FAIL_WRITE=data.h5 GRANREPRO_SHIM_FAIL_AFTER=20000", "data.h5", "no space left on device"},
+        {"GRANREPRO_SHIM_FAIL_WRITE=.tsv", "tables/", "no space left on device"},
+        {"GRANREPRO_SHIM_FAIL_WRITE=.gp", ".gp", "no space left on device"},
+        {"GRANREPRO_SHIM_FAIL_FSYNC=summary.json", "summary.json", "input/output error"},
+    };
+    for (const auto& c : cases) {
+        const Outcome o = run(kSmallRun + "--seed 2 --out " + out.string(), shim_env(c.env));
+        EXPECT_EQ(o.code, 3) << c.env << ": " << o.err;
+        EXPECT_EQ(lines(o.err), 1) << c.env << ": " << o.err;
+        EXPECT_NE(o.err.find("granrepro: error: " + c.reason + " writing " + dir.string() + "/"), std::string::npos)
+            << c.env << ": " << o.err;
+        EXPECT_NE(o.err.find(c.file), std::string::npos) << c.env << ": " << o.err;
+        EXPECT_EQ(o.err.find("HDF5-DIAG"), std::string::npos) << o.err;
+        EXPECT_EQ(slurp(dir / "summary.json"), summary) << c.env;
+        EXPECT_EQ(slurp(dir / "data.h5"), data) << c.env;
+        EXPECT_TRUE(leftovers(out, kExp).empty()) << c.env;
+    }
+    fs::remove_all(out);
+}
+
+// A checkpoint that cannot be written whole is never renamed into place: the last good one stays.
+TEST(DataSafety, FailedCheckpointWriteNeverReplacesTheLastGoodOne) {
+    const fs::path out = fresh("enospc-ck");
+    const std::string args = "cooling --scale quick --set n_side=30 --quiet --threads 1 --checkpoint-interval 0 ";
+    // The first checkpoints fit, a later one does not.
+    const Outcome o = run(args + "--out " + out.string(),
+                          shim_env("GRANREPRO_SHIM_FAIL_WRITE=.cooling.checkpoint GRANREPRO_SHIM_FAIL_AFTER=2000000"));
+    EXPECT_EQ(o.code, 3) << o.err;
+    EXPECT_EQ(lines(o.err), 1) << o.err;
+    EXPECT_NE(o.err.find("no space left on device writing " + (out / ".cooling.checkpoint").string()), std::string::npos)
+        << o.err;
+    EXPECT_EQ(o.err.find(".partial-"), std::string::npos) << "names the temporary, not the checkpoint: " << o.err;
+    int good = 0;
+    for (const auto& e : fs::directory_iterator(out / ".cooling.checkpoint")) {
+        EXPECT_EQ(e.path().extension(), ".h5") << "a temporary was left: " << e.path();
+        EXPECT_EQ(H5File::open(e.path().string()).read_string_attr("schema"), "granrepro-cooling-run") << e.path();
+        ++good;
+    }
+    EXPECT_GE(good, 1) << "the test needs a checkpoint that fitted";
+    EXPECT_FALSE(fs::exists(out / "cooling"));
+    fs::remove_all(out);
+}
+
+// A real full disk where this machine allows a small tmpfs (user and mount namespaces).
+TEST(DataSafety, FullTmpfsKeepsThePreviousResults) {
+    const fs::path base = fresh("tmpfs");
+    fs::create_directories(base / "mnt");
+    const fs::path dir = base / "mnt" / kExp;
+    // One run's results fit in 256 KiB; a second copy beside them (staged, then exchanged) does not.
+    const std::string mnt = (base / "mnt").string(), bin = GRANREPRO_BINARY;
+    put(base / "full.sh",
+        "mount -t tmpfs -o size=512k tmpfs '" + mnt + "' || exit 77\n" +
+        bin + " " + kSmallRun + "--seed 1 --out '" + mnt + "' > /dev/null 2>&1 || exit 78\n" +
+        "cp '" + (dir / "summary.json").string() + "' '" + (base / "before.json").string() + "'\n" +
+        "dd if=/dev/zero of='" + mnt + "/filler' bs=4k count=16 2> /dev/null\n" +
+        bin + " " + kSmallRun + "--seed 2 --out '" + mnt + "' > /dev/null 2> '" + (base / "err").string() + "'\n" +
+        "echo $? > '" + (base / "rc").string() + "'\n" +
+        "cp '" + (dir / "summary.json").string() + "' '" + (base / "after.json").string() + "'\n" +
+        "ls -A '" + mnt + "' > '" + (base / "listing").string() + "'\n");
+    const int status = std::system(("unshare -rm sh '" + (base / "full.sh").string() + "' 2> /dev/null").c_str());
+    const int code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    if (code == 77 || !fs::exists(base / "rc")) {
+        fs::remove_all(base);
+        GTEST_SKIP() << "cannot mount a tmpfs here (unshare -rm / mount -t tmpfs)";
+    }
+    ASSERT_NE(code, 78) << "the first run did not fit in the tmpfs";
+    const std::string err = slurp(base / "err");
+    EXPECT_EQ(std::stoi(slurp(base / "rc")), 3) << err;
+    EXPECT_EQ(lines(err), 1) << err;
+    EXPECT_NE(err.find("no space left on device writing " + dir.string() + "/"), std::string::npos) << err;
+    EXPECT_EQ(slurp(base / "after.json"), slurp(base / "before.json"));
+    const std::string listing = slurp(base / "listing");
+    EXPECT_EQ(listing.find(".partial-"), std::string::npos) << listing;
+    fs::remove_all(base);
+}
+
+// A kill inside the commit: after the exchange the new results are complete in place; with the
+// two-rename fallback, between the renames, the next run restores the old copy. Either way the
+// next run leaves no hidden folder.
+TEST(DataSafety, KillInTheCommitWindowLosesNoResults) {
+    const fs::path out = fresh("commit-kill");
+    const fs::path dir = out / kExp;
+    ASSERT_EQ(run(kSmallRun + "--seed 1 --out " + out.string()).code, 0);
+    const std::string first = slurp(dir / "summary.json");
+
+    Outcome o = run(kSmallRun + "--seed 2 --out " + out.string(), "GRANREPRO_TEST_KILL_IN_COMMIT=after-exchange");
+    EXPECT_EQ(o.code, 128 + SIGKILL) << "killed";
+    ASSERT_TRUE(fs::exists(dir / "summary.json"));
+    EXPECT_EQ(nlohmann::json::parse(slurp(dir / "summary.json")).at("seed"), 2);
+    EXPECT_EQ(leftovers(out, kExp).size(), 1u) << "the old copy, for the next run to delete";
+    EXPECT_EQ(run("check " + kExp + " --out " + out.string()).code, 0);
+
+    ASSERT_EQ(run(kSmallRun + "--seed 1 --out " + out.string()).code, 0);
+    EXPECT_TRUE(leftovers(out, kExp).empty());
+    EXPECT_EQ(slurp(dir / "summary.json").size(), first.size());
+
+    o = run(kSmallRun + "--seed 3 --out " + out.string(),
+            "GRANREPRO_TEST_COMMIT_NO_EXCHANGE=1 GRANREPRO_TEST_KILL_IN_COMMIT=between-renames");
+    EXPECT_EQ(o.code, 128 + SIGKILL) << "killed";
+    EXPECT_FALSE(fs::exists(dir)) << "the window the exchange closes";
+    const std::string old_results = slurp(out / leftovers(out, kExp).at(0) / "summary.json") +
+                                    slurp(out / leftovers(out, kExp).at(1) / "summary.json");
+    EXPECT_NE(old_results.find("\"seed\": 1"), std::string::npos);
+    // The next run restores the old copy first (it says so), then replaces it as usual.
+    o = run("emergency-brake --set n_vy=15 --set n_positions=3 --seed 4 --out " + out.string());
+    EXPECT_EQ(o.code, 0) << o.err;
+    EXPECT_NE(o.err.find("restored " + dir.string()), std::string::npos) << o.err;
+    EXPECT_EQ(nlohmann::json::parse(slurp(dir / "summary.json")).at("seed"), 4);
+    EXPECT_TRUE(leftovers(out, kExp).empty());
+    fs::remove_all(out);
+}
+
+// Two runs on one --out: the second is refused at once (exit 2, one line naming the first's
+// pid) and the first completes undisturbed.
+TEST(DataSafety, ConcurrentRunOnTheSameOutIsRefused) {
+    const fs::path out = fresh("concurrent");
+    const fs::path err = out.string() + "-err";
+    const pid_t first = spawn("cooling --scale quick --set n_side=30 --quiet --out " + out.string(), err);
+    ASSERT_GT(first, 0);
+    ASSERT_TRUE(wait_until([&] { return !leftovers(out, "cooling").empty(); }, 60)) << slurp(err);
+    kill(first, SIGSTOP); // holds the lock for as long as the second needs, whatever the machine's speed
+    const Outcome second = run("cooling --scale quick --set n_side=30 --quiet --seed 8 --out " + out.string());
+    kill(first, SIGCONT);
+    EXPECT_EQ(second.code, 2) << second.err;
+    EXPECT_EQ(lines(second.err), 1) << second.err;
+    EXPECT_NE(second.err.find((out / "cooling").string() + " is being written by pid " + std::to_string(first)),
+              std::string::npos)
+        << second.err;
+    EXPECT_LE(wait_for(first), 1) << slurp(err);
+    EXPECT_TRUE(fs::exists(out / "cooling" / "summary.json"));
+    EXPECT_EQ(nlohmann::json::parse(slurp(out / "cooling" / "summary.json")).at("seed"), 1);
+    EXPECT_TRUE(leftovers(out, "cooling").empty());
+    fs::remove_all(out);
+    fs::remove(err);
+}
+
+// SIGTERM during a quick cooling run: the running jobs save a final checkpoint at their next
+// sample time and stop (none runs to its end: no results are committed), no staging folder is
+// left, exit 143 with one line; the rerun resumes and its datasets equal an uninterrupted run's
+// bit for bit.
+TEST(DataSafety, SigtermWritesAFinalCheckpointAndTheRerunIsIdentical) {
+    const fs::path a = fresh("term-a"), b = fresh("term-b");
+    const fs::path err = b.string() + "-err";
+    const std::string args = "cooling --scale quick --set n_side=40 --quiet --threads 2 ";
+    ASSERT_LE(run(args + "--out " + a.string()).code, 1);
+
+    // SIGTERM once the run is inside its sweep (its first checkpoint is on disk); before that,
+    // cooling prepares its initial states, which no checkpoint covers.
+    const pid_t pid = spawn(args + "--checkpoint-interval 0 --out " + b.string(), err);
+    ASSERT_GT(pid, 0);
+    const auto has_checkpoint = [&] {
+        std::error_code ec;
+        for (const auto& e : fs::directory_iterator(b / ".cooling.checkpoint", ec))
+            if (e.path().extension() == ".h5") return true;
+        return false;
+    };
+    ASSERT_TRUE(wait_until(has_checkpoint, 120)) << slurp(err);
+    kill(pid, SIGTERM);
+    const int code = wait_for(pid);
+    const std::string text = slurp(err);
+    ASSERT_FALSE(fs::exists(b / "cooling")) << "the run ended before the signal; rc " << code << ": " << text;
+    EXPECT_EQ(code, 143) << text;
+    EXPECT_EQ(lines(text), 1) << text;
+    EXPECT_NE(text.find("interrupted by SIGTERM; final checkpoint written"), std::string::npos) << text;
+    EXPECT_TRUE(leftovers(b, "cooling").empty()) << "staging folder left";
+    int checkpoints = 0;
+    for (const auto& e : fs::directory_iterator(b / ".cooling.checkpoint"))
+        checkpoints += e.path().extension() == ".h5";
+    EXPECT_GE(checkpoints, 1);
+
+    const Outcome resumed = run("cooling --scale quick --set n_side=40 --threads 2 --checkpoint-interval 0 --out " + b.string());
+    ASSERT_LE(resumed.code, 1) << resumed.err;
+    EXPECT_NE(resumed.err.find("resuming"), std::string::npos) << resumed.err;
+    EXPECT_FALSE(fs::exists(b / ".cooling.checkpoint"));
+    EXPECT_TRUE(leftovers(b, "cooling").empty());
+    const H5File fa = H5File::open((a / "cooling" / "data.h5").string());
+    const H5File fb = H5File::open((b / "cooling" / "data.h5").string());
+    for (const char* ds : {"tables/energy_ed/K_over_K0", "tables/energy_ed/C_over_N", "tables/energy_dsmc/K_over_K0",
+                           "tables/impact_parameter_ed/P_t2", "tables/gr_ed/g_t5", "tables/sk_dsmc/S_t5",
+                           "scalars/ed_C_over_N_end", "scalars/dsmc_over_ed_end"}) {
+        const auto va = fa.read_dataset(ds), vb = fb.read_dataset(ds);
+        ASSERT_EQ(va.size(), vb.size()) << ds;
+        EXPECT_EQ(0, std::memcmp(va.data(), vb.data(), va.size() * sizeof(double))) << ds;
+    }
+    fs::remove_all(a);
+    fs::remove_all(b);
+    fs::remove(err);
+}
+
+// `check` validates what it reads: exit 2 and one line naming the file and what is wrong.
+TEST(DataSafety, CheckRefusesDamagedResultsFiles) {
+    const fs::path out = fresh("check-damaged");
+    ASSERT_EQ(run(kSmallRun + "--out " + out.string()).code, 0);
+    const fs::path dir = out / kExp;
+    const std::string summary = slurp(dir / "summary.json"), data = slurp(dir / "data.h5");
+    ASSERT_EQ(run("check " + kExp + " --out " + out.string()).code, 0);
+    struct Case {
+        std::string text, must_mention;
+    };
+    const Case cases[] = {
+        {"[1,2,3]", "a JSON object expected, found an array"},
+        {"{\"scale\":5}", "'scale' must be \"quick\" or \"paper\", found 5"},
+        {"{\"scale\":\"bogus\"}", "'scale' must be \"quick\" or \"paper\", found \"bogus\""},
+        {"{\"scale\":\"quick\"}", "has no 'scalars' object"},
+        {"{\"scale\":\"quick\",\"scalars\":{\"v_crit_vx0.3\":\"x\"}}", "scalar 'v_crit_vx0.3' must be a number or null"},
+        {"garbage", "not valid JSON"},
+        {summary.substr(0, summary.size() / 2), "not valid JSON"},
+    };
+    for (const auto& c : cases) {
+        put(dir / "summary.json", c.text);
+        const Outcome o = run("check " + kExp + " --out " + out.string());
+        EXPECT_EQ(o.code, 2) << c.text << ": " << o.err;
+        EXPECT_EQ(lines(o.err), 1) << o.err;
+        EXPECT_NE(o.err.find((dir / "summary.json").string() + ": "), std::string::npos) << o.err;
+        EXPECT_NE(o.err.find(c.must_mention), std::string::npos) << o.err;
+        EXPECT_EQ(o.err.find("--scale"), std::string::npos) << "blames a flag nobody passed: " << o.err;
+    }
+    put(dir / "summary.json", summary);
+    for (const std::size_t keep : {data.size() / 2, data.size() - 100}) {
+        put(dir / "data.h5", data.substr(0, keep));
+        const Outcome o = run("check " + kExp + " --out " + out.string());
+        EXPECT_EQ(o.code, 2) << keep << ": " << o.err;
+        EXPECT_EQ(lines(o.err), 1) << o.err;
+        EXPECT_NE(o.err.find((dir / "data.h5").string() + ": damaged"), std::string::npos) << o.err;
+    }
+    put(dir / "data.h5", data);
+    EXPECT_EQ(run("check " + kExp + " --out " + out.string()).code, 0);
+    fs::remove_all(out);
+}
