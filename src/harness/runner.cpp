@@ -229,9 +229,12 @@ int run_experiment(const std::string& name, const RunOptions& opt, VerdictCounts
         return 0;
     } catch (const InputError&) {
         // A late refusal of the input fails the same way on every rerun: its checkpoints can
-        // never be resumed, so no hidden .X.checkpoint/ outlives it (issue 20).
-        std::error_code ec;
-        fs::remove_all(work_dir, ec);
+        // never be resumed, so no hidden .X.checkpoint/ outlives it (issue 20). Not so for shards
+        // and `gather`: "points missing" is cured by the other shards, whose points are kept.
+        if (plan.mode == SweepPlan::Mode::All) {
+            std::error_code ec;
+            fs::remove_all(work_dir, ec);
+        }
         throw;
     } catch (const Interrupted& e) {
         bool kept = false;
