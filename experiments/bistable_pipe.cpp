@@ -329,6 +329,7 @@ struct Construction {
     double reach = NAN;    // max over the grid of Δv_y(σ_vx) / (g/ṅ) [1]
     double slope = NAN;    // d Δv_y / d v at the measured speed, v_x^i = σ_vx [s] (> 0: stable, Eq. 9 argument)
     double contacts = NAN; // wall grains touched per impact at the measured impact velocities (Fig. 5)
+    double link = NAN;     // the impact curve's Δv_y at the measured impact velocities over the measured Δv_y
 };
 // The upward crossing of need nearest to v_meas on a log grid, NaN if none.
 double stable_crossing(const std::vector<double>& grid, const std::vector<double>& dv, double need, double v_meas) {
@@ -351,7 +352,9 @@ Construction construct(const PipeSpec& base, double k, double e, const RunResult
         dv[i] = impact_mean(base, k, e, rr.sigma_vx, grid[i]).dvy;
         dv_in[i] = impact_mean(base, k, e, rr.vx_in, grid[i]).dvy;
     }
-    c.contacts = impact_mean(base, k, e, rr.vx_in, rr.vy_in).contacts;
+    const ImpactMean at_impact = impact_mean(base, k, e, rr.vx_in, rr.vy_in);
+    c.contacts = at_impact.contacts;
+    c.link = rr.dvy > 0 ? at_impact.dvy / rr.dvy : NAN;
     c.v = stable_crossing(grid, dv, need, v_meas);
     c.v_vxin = stable_crossing(grid, dv_in, need, v_meas);
     c.reach = *std::max_element(dv.begin(), dv.end()) / need;
@@ -415,7 +418,7 @@ void report_k(Result& r, const ParameterSet& p, const PipeSpec& base, double k, 
     std::snprintf(kt, sizeof kt, "k%g", k);
     Table& t = r.table(std::string("steady_") + kt, "steady-state mean velocity against e_N (NaN: no steady state)");
     std::vector<double> cols[2][14];
-    double e_lowest_slow = NAN;
+    double e_lowest_slow = NAN, link_top = NAN;
     int fast_steady = 0;
     for (std::size_t ei = 0; ei < es.size(); ++ei) {
         for (int f = 0; f < 2; ++f) {
@@ -423,6 +426,7 @@ void report_k(Result& r, const ParameterSet& p, const PipeSpec& base, double k, 
             const bool ok = rr.outcome == kSteady;
             const double bal = ok ? rr.ndot * rr.dvy / base.geo.gravity : NAN;
             const Construction c = construct(base, k, es[ei], rr);
+            if (f == 0 && ei + 1 == es.size()) link_top = c.link;
             auto& col = cols[f];
             col[0].push_back(ok ? -rr.v_mean : NAN);
             col[1].push_back(-rr.v_final);
@@ -459,6 +463,9 @@ void report_k(Result& r, const ParameterSet& p, const PipeSpec& base, double k, 
     for (int f = 0; f < 2; ++f)
         for (int c = 0; c < 14; ++c)
             t.add(std::string(names[c]) + (f ? "_fast" : "_slow"), units[c]).values = cols[f][c];
+    r.scalar(std::string("impact_link_top_") + kt, link_top, "1",
+             "slow start at the largest e_N: Δv_y of the wall's impact curve at the measured mean impact velocities "
+             "over the measured Δv_y per wall impact");
     r.scalar(std::string("slow_branch_lowest_eN_") + kt, e_lowest_slow, "1",
              "smallest e_N whose slow start reached a steady state in the normal regime (below v_crit)");
     r.scalar(std::string("fast_branch_fraction_") + kt, double(fast_steady) / double(es.size()), "1",
