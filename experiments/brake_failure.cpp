@@ -7,7 +7,7 @@
 #include <string>
 
 #include "analysis/curve_analysis.hpp"
-#include "experiments/impact_shot.hpp"
+#include "scenarios/impact_shot.hpp"
 #include "harness/experiment.hpp"
 #include "harness/parallel_sweep.hpp"
 #include "models/hertz_kuwabara_kono.hpp"

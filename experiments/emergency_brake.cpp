@@ -8,7 +8,7 @@
 #include <string>
 
 #include "analysis/curve_analysis.hpp"
-#include "experiments/impact_shot.hpp"
+#include "scenarios/impact_shot.hpp"
 #include "harness/experiment.hpp"
 #include "harness/parallel_sweep.hpp"
 #include "models/linear_spring_dashpot.hpp"

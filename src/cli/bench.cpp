@@ -1,5 +1,5 @@
 #include "cli/bench.hpp"
-#include "cli/soft_bench.hpp"
+#include "bench/soft_bench.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -11,11 +11,10 @@
 #include <cmath>
 
 #include "core/input_error.hpp"
-#include "experiments/impact_shot.hpp"
-#include "engines/dsmc/dsmc_bench.hpp"
+#include "bench/dsmc_bench.hpp"
 #include "bench/ed_bench.hpp"
-#include "engines/ed/huge_page_allocator.hpp"
-#include "models/linear_spring_dashpot.hpp"
+#include "bench/impact_bench.hpp"
+#include "bench/memory_latency.hpp"
 
 namespace granrepro {
 
@@ -25,27 +24,6 @@ struct Measurement {
     double rate;          // work units per second
     const char* unit;     // what a work unit is
 };
-
-// Few-body impacts on a wall row at the Fig. 4 parameters: impacts per second and steps per second.
-Measurement bench_impact(double seconds) {
-    const LinearSpringDashpot law{2000.0, 1e4};
-    ImpactSetup s;
-    s.wall_spacing = 0.66e-3;
-    s.x0 = 0.83e-3;
-    s.vx_toward = 0.3;
-    s.dt = law.collision_time(1e-6) / 50;
-    long impacts = 0;
-    const auto t0 = std::chrono::steady_clock::now();
-    double elapsed = 0;
-    while (elapsed < seconds) {
-        s.vy = 0.1 * std::pow(400.0, (impacts % 16) / 15.0);
-        s.y0 = 0.066e-3 * double(impacts % 10);
-        shoot(law, CoulombShear{0.5}, s);
-        ++impacts;
-        elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    }
-    return {double(impacts) / elapsed, "impacts/s"};
-}
 
 double median(std::vector<double> v) {
     std::sort(v.begin(), v.end());
@@ -80,29 +58,9 @@ void report_simple(const char* name, const char* description, Measurement (*fn)(
 }
 
 void bench_impact_report(const BenchOptions& opt) {
-    report_simple("impact", "few-body soft-sphere impacts on a wall row (Schäfer-Wolf Fig. 4 set-up)", bench_impact, opt);
-}
-
-// Latency [ns] of one dependent load at a random cache line of a `bytes` large block, allocated
-// like the ED engine's arrays (huge pages): a pointer chase over a random cyclic permutation.
-// This is the price of a cache miss at a given working set, which is what bounds the ED engine
-// at large N (one event touches a random particle and its neighbours).
-double dependent_load_latency_ns(std::size_t bytes) {
-    constexpr std::size_t kLine = 64 / sizeof(std::size_t);
-    const std::size_t lines = std::max<std::size_t>(2, bytes / 64);
-    HugeVector<std::size_t> chain(lines * kLine);
-    std::vector<std::size_t> order(lines);
-    std::iota(order.begin(), order.end(), std::size_t{0});
-    std::shuffle(order.begin(), order.end(), std::mt19937_64(1));
-    for (std::size_t k = 0; k < lines; ++k) chain[order[k] * kLine] = order[(k + 1) % lines] * kLine;
-    std::size_t p = 0;
-    for (std::size_t k = 0; k < lines; ++k) p = chain[p]; // warm up: one full cycle
-    const long steps = 4'000'000;
-    const auto t0 = std::chrono::steady_clock::now();
-    for (long k = 0; k < steps; ++k) p = chain[p];
-    const double dt = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    if (p == std::size_t(-1)) std::printf(" "); // keep the chase from being optimised away
-    return dt / steps * 1e9;
+    report_simple("impact", "few-body soft-sphere impacts on a wall row (Schäfer-Wolf Fig. 4 set-up)", [](double s) {
+        return Measurement{run_impact_benchmark(s), "impacts/s"};
+    }, opt);
 }
 
 // Elastic disks at rho = 0.25, periodic: events and collisions per CPU second from N = 1e3 to 1e6.

@@ -16,7 +16,7 @@
 #include "core/interrupt.hpp"
 #include "core/provenance.hpp"
 #include "harness/mpi_world.hpp"
-#include "harness/interval.hpp"
+#include "data/interval.hpp"
 #include "harness/runner.hpp"
 #include "io/write_error.hpp"
 

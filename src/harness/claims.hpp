@@ -16,7 +16,7 @@
 #include <string>
 #include <vector>
 
-#include "harness/parameter_set.hpp"
+#include "data/parameter_set.hpp"
 
 namespace granrepro {
 

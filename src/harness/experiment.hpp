@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "harness/parameter_set.hpp"
-#include "harness/result.hpp"
+#include "data/parameter_set.hpp"
+#include "data/result.hpp"
 
 namespace granrepro {
 

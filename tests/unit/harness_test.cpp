@@ -10,7 +10,7 @@
 #include "analysis/curve_analysis.hpp"
 #include "core/input_error.hpp"
 #include "harness/claims.hpp"
-#include "harness/parameter_set.hpp"
+#include "data/parameter_set.hpp"
 #include "io/h5_file.hpp"
 #include "io/result_writer.hpp"
 #include "io/staged_directory.hpp"

@@ -6,7 +6,7 @@
 #include <utility>
 #include <vector>
 
-#include "experiments/pipe_setup.hpp"
+#include "scenarios/pipe_setup.hpp"
 
 using namespace granrepro;
 

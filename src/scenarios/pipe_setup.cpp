@@ -1,4 +1,4 @@
-#include "experiments/pipe_setup.hpp"
+#include "scenarios/pipe_setup.hpp"
 
 #include <cmath>
 #include <numeric>

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "harness/interval.hpp"
+#include "data/interval.hpp"
 
 namespace granrepro {
 

@@ -1,4 +1,4 @@
-#include "harness/parameter_set.hpp"
+#include "data/parameter_set.hpp"
 
 #include <algorithm>
 #include <cmath>

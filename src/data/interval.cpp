@@ -1,4 +1,4 @@
-#include "harness/interval.hpp"
+#include "data/interval.hpp"
 
 #include <cerrno>
 #include <cmath>

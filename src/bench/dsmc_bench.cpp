@@ -1,4 +1,4 @@
-#include "engines/dsmc/dsmc_bench.hpp"
+#include "bench/dsmc_bench.hpp"
 
 #include "core/input_error.hpp"
 #include "core/rng_stream.hpp"

@@ -1,4 +1,4 @@
-#include "cli/soft_bench.hpp"
+#include "bench/soft_bench.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -15,7 +15,7 @@
 #include <unistd.h>
 #include <vector>
 
-#include "experiments/pipe_setup.hpp"
+#include "scenarios/pipe_setup.hpp"
 
 namespace granrepro {
 

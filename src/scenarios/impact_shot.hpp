@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "engines/soft/few_body_engine.hpp"
-#include "harness/parameter_set.hpp"
+#include "data/parameter_set.hpp"
 #include "models/coulomb_shear.hpp"
 
 namespace granrepro {
