@@ -45,6 +45,13 @@ inline double enskog_collision_rate_vbar(double rho, double d, double vbar, doub
 // t0 = 4 / ((1 - r^2) omega0), omega0 the collision rate at t = 0. This is Eq. (19) with
 // sqrt(2 pi) where the paper prints sqrt(pi); the paper's number 23.24 1/s is the sqrt(2 pi) one.
 inline double haff_t0(double r, double omega0) { return 4.0 / ((1.0 - r * r) * omega0); }
+// Luding's Eq. (19) as printed: t0 = sqrt(pi) d s_* / (2 (1 - r^2) rho vbar), s_* = 1/g(d) =
+// (1 - rho)^2 / (1 - 7 rho/16). It is haff_t0 with the Enskog rate at sqrt(2)-times too large
+// a value; drivers show it beside the kinetic t0 (the rejected reading of Eq. 19).
+inline double luding_eq19_t0_printed(double r, double rho, double d, double vbar) {
+    const double s_star = (1.0 - rho) * (1.0 - rho) / (1.0 - 7.0 * rho / 16.0);
+    return std::sqrt(std::numbers::pi) * d * s_star / (2.0 * (1.0 - r * r) * rho * vbar);
+}
 inline double haff_energy_ratio(double t, double t0) { return 1.0 / ((1.0 + t / t0) * (1.0 + t / t0)); }
 // Collisions per particle (2 x pair collisions / N) up to t under Haff's law: omega0 t0 ln(1 + t/t0).
 inline double haff_collisions_per_particle(double t, double t0, double omega0) { return omega0 * t0 * std::log1p(t / t0); }
