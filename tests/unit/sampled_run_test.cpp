@@ -1,0 +1,217 @@
+// The one serialization (io/h5_fields.hpp) and the one sampling loop (harness/sampled_run.hpp):
+// every field type round-trips bit for bit, and a sampled run killed after a checkpoint and
+// resumed equals an uninterrupted one, for ED and DSMC alike (one test body, two engines).
+#include "engines/dsmc/dsmc_engine.hpp"
+#include "engines/ed/ed_engine.hpp"
+#include "engines/ed/ed_initial_states.hpp"
+#include "harness/sampled_run.hpp"
+
+#include <bit>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <gtest/gtest.h>
+#include <limits>
+#include <unistd.h>
+
+using namespace granrepro;
+namespace fs = std::filesystem;
+
+namespace {
+
+enum class Colour { red, green, blue };
+
+struct Inner {
+    double a = 0;
+    std::vector<std::uint32_t> counts;
+    template <class V>
+    void fields(V&& v) {
+        v("a", a);
+        v("counts", counts);
+    }
+};
+
+struct Everything {
+    double x = 0;
+    long n = 0;
+    int i = 0;
+    std::uint64_t big = 0;
+    bool flag = false;
+    Colour colour = Colour::red;
+    std::string text;
+    Vec2 g;
+    std::vector<double> values;
+    std::vector<std::int32_t> ints;
+    std::vector<std::uint8_t> bytes;
+    std::vector<std::uint64_t> u64;
+    std::vector<Vec2> points;
+    Inner inner;
+    std::vector<Inner> list;
+    template <class V>
+    void fields(V&& v) {
+        v("x", x), v("n", n), v("i", i), v("big", big), v("flag", flag), v("colour", colour), v("text", text);
+        v("g", g), v("values", values), v("ints", ints), v("bytes", bytes), v("u64", u64), v("points", points);
+        v("inner", inner), v("list", list);
+    }
+};
+
+std::vector<std::uint64_t> bits(const std::vector<double>& v) {
+    std::vector<std::uint64_t> b;
+    for (double x : v) b.push_back(std::bit_cast<std::uint64_t>(x));
+    return b;
+}
+
+struct TempDir {
+    fs::path path;
+    explicit TempDir(const std::string& tag = "") {
+        path = fs::temp_directory_path() / ("granrepro-sampled-" + std::to_string(::getpid()) + "-" +
+                                            ::testing::UnitTest::GetInstance()->current_test_info()->name() + tag);
+        fs::remove_all(path);
+        fs::create_directories(path);
+    }
+    ~TempDir() { fs::remove_all(path); }
+};
+
+} // namespace
+
+TEST(H5Fields, EveryFieldTypeRoundTripsBitForBit) {
+    TempDir dir;
+    Everything e;
+    e.x = -0.0;
+    e.n = -123456789012;
+    e.i = -7;
+    e.big = std::numeric_limits<std::uint64_t>::max();
+    e.flag = true;
+    e.colour = Colour::blue;
+    e.text = "Luding 1998";
+    e.g = {0.1, -9.81};
+    e.values = {std::nan(""), -INFINITY, 1e-310, 0.1 + 0.2};
+    e.ints = {-1, std::numeric_limits<std::int32_t>::min()};
+    e.bytes = {0, 255};
+    e.u64 = {1, std::uint64_t(1) << 63};
+    e.points = {{1.5, -2.5}, {3e300, 4e-300}};
+    e.inner = {2.5, {7, 8}};
+    e.list = {{1.0, {}}, {std::nextafter(1.0, 2.0), {3}}};
+    const fs::path file = dir.path / "f.h5";
+    {
+        const H5File f = H5File::create(file.string());
+        write_fields(f.group("e"), e);
+    }
+    Everything r;
+    {
+        const H5File f = H5File::open(file.string());
+        read_fields(f.open_group("e"), r);
+    }
+    EXPECT_EQ(std::bit_cast<std::uint64_t>(r.x), std::bit_cast<std::uint64_t>(e.x)); // the sign of -0
+    EXPECT_EQ(r.n, e.n);
+    EXPECT_EQ(r.i, e.i);
+    EXPECT_EQ(r.big, e.big);
+    EXPECT_EQ(r.flag, e.flag);
+    EXPECT_EQ(r.colour, e.colour);
+    EXPECT_EQ(r.text, e.text);
+    EXPECT_EQ(r.g.x, e.g.x);
+    EXPECT_EQ(r.g.y, e.g.y);
+    EXPECT_EQ(bits(r.values), bits(e.values)); // NaN included
+    EXPECT_EQ(r.ints, e.ints);
+    EXPECT_EQ(r.bytes, e.bytes);
+    EXPECT_EQ(r.u64, e.u64);
+    ASSERT_EQ(r.points.size(), 2u);
+    EXPECT_EQ(r.points[1].x, 3e300);
+    EXPECT_EQ(r.points[1].y, 4e-300);
+    EXPECT_EQ(r.inner.a, 2.5);
+    EXPECT_EQ(r.inner.counts, e.inner.counts);
+    ASSERT_EQ(r.list.size(), 2u);
+    EXPECT_EQ(r.list[1].a, e.list[1].a);
+    EXPECT_EQ(r.list[1].counts, e.list[1].counts);
+}
+
+TEST(H5Fields, AMissingFieldThrows) {
+    TempDir dir;
+    const fs::path file = dir.path / "f.h5";
+    {
+        const H5File f = H5File::create(file.string());
+        write_fields(f.group("e"), Inner{1.0, {2}});
+    }
+    const H5File f = H5File::open(file.string());
+    Everything r;
+    EXPECT_ANY_THROW(read_fields(f.open_group("e"), r));
+}
+
+namespace {
+
+// What the sampled run carries: the samples and an observer's running count.
+struct Carry {
+    std::vector<double> t, k;
+    std::uint64_t observed = 0;
+    template <class V>
+    void fields(V&& v) {
+        v("t", t), v("K", k), v("observed", observed);
+    }
+};
+
+EdEngine small_ed_gas() {
+    const std::size_t n = 200;
+    const double l = 1e-3 * std::sqrt(n * M_PI / (4.0 * 0.25));
+    EdConfig cfg;
+    cfg.lx = cfg.ly = l;
+    cfg.law = RoughDiskCollision{0.9, 0.0, -1.0, 0.5};
+    RngStream rng(5, 0);
+    const std::vector<double> rad(n, 0.5e-3), mass(n, 1e-6);
+    const auto pos = random_positions(rad, l, l, true, true, rng);
+    return EdEngine(cfg, pos, maxwellian_velocities(mass, 1.0, rng), rad, mass);
+}
+
+DsmcEngine small_dsmc_gas() {
+    const std::size_t n = 400;
+    DsmcConfig cfg;
+    cfg.lx = cfg.ly = 1e-3 * std::sqrt(n * M_PI / (4.0 * 0.25));
+    cfg.r = 0.9;
+    cfg.seed = 5;
+    RngStream rng(5, 0);
+    const std::vector<double> rad(n, 0.5e-3), mass(n, 1e-6);
+    const auto pos = random_positions(rad, cfg.lx, cfg.ly, true, true, rng);
+    return DsmcEngine(cfg, pos, maxwellian_velocities(mass, 1.0, rng), rad, mass);
+}
+
+// Samples K at 40 times; `stop_after_saves` > 0 kills the run (as a SIGKILL would) once that many
+// checkpoints are on disk. Returns the carry, resumed from the checkpoint if there is one.
+template <class Make>
+Carry sampled(Make make, const fs::path& dir, long stop_after_saves) {
+    ParameterSet params;
+    const RunContext ctx{params, Scale::Quick, 1, 1, true, dir, 0.0}; // interval 0: save at every sample
+    RunCheckpoint checkpoint(ctx, "test");
+    SampledRun<Carry> run(checkpoint, "granrepro-test-run", 1);
+    auto engine = make();
+    Carry carry;
+    decltype(engine.save_state()) saved;
+    if (run.resume(saved, carry)) engine.restore_state(saved);
+    const auto trigger = [](long i) { return i < 40 ? std::optional<double>(5e-4 * double(i + 1)) : std::nullopt; };
+    run.run(engine, carry, trigger, [&](const CollisionRecord&) { ++carry.observed; },
+            [&](long i, double t) {
+                carry.t.push_back(t);
+                carry.k.push_back(total_kinetic_energy(engine));
+                if (stop_after_saves > 0 && checkpoint.saves() >= stop_after_saves) throw std::runtime_error("killed");
+                return i == 35; // the sampler may end the run early
+            },
+            40 * 5e-4);
+    return carry;
+}
+
+template <class Make>
+void expect_resume_is_bit_identical(Make make) {
+    TempDir whole_dir("-whole"), parts_dir("-parts");
+    const Carry whole = sampled(make, whole_dir.path, 0);
+    EXPECT_THROW(sampled(make, parts_dir.path, 12), std::runtime_error);
+    const Carry resumed = sampled(make, parts_dir.path, 0);
+    ASSERT_EQ(whole.t.size(), 36u); // stopped by the sampler after sample 35
+    EXPECT_GT(whole.observed, 1000u);
+    EXPECT_EQ(bits(resumed.t), bits(whole.t));
+    EXPECT_EQ(bits(resumed.k), bits(whole.k));
+    EXPECT_EQ(resumed.observed, whole.observed);
+    EXPECT_LT(whole.k.back(), 0.5 * whole.k.front()); // it cooled: the samples are not all one value
+}
+
+} // namespace
+
+TEST(SampledRun, KilledAndResumedEqualsUninterruptedEd) { expect_resume_is_bit_identical(small_ed_gas); }
+TEST(SampledRun, KilledAndResumedEqualsUninterruptedDsmc) { expect_resume_is_bit_identical(small_dsmc_gas); }
