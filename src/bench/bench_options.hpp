@@ -1,5 +1,6 @@
 // What `granrepro bench <target>` was asked for: repeats, duration and per-target options.
 #pragma once
+#include <string>
 
 namespace granrepro {
 
@@ -9,6 +10,10 @@ struct BenchOptions {
     long steps = 0;     // soft: time steps of one timed run (0: the target's default)
     int threads = 2;    // soft: threads of the multi-core comparison
     bool sizes = false; // soft: cost against the number of grains instead of the LAMMPS comparison
+    std::string experiment = "bistable-pipe"; // sweep: a sweeping experiment
+    std::string scale = "quick";              // sweep: quick or paper
+    int ranks = 2;                            // sweep: MPI ranks compared with one
+    std::string from_log;                     // sweep: project from this run.log instead of running
 };
 
 } // namespace granrepro

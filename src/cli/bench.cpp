@@ -15,6 +15,7 @@
 #include "bench/ed_bench.hpp"
 #include "bench/impact_bench.hpp"
 #include "bench/memory_latency.hpp"
+#include "bench/sweep_bench.hpp"
 
 namespace granrepro {
 
@@ -109,6 +110,7 @@ const std::vector<Target>& targets() {
         {"soft", bench_soft_report},
         {"ed", bench_ed_report},
         {"dsmc", bench_dsmc_report},
+        {"sweep", bench_sweep_report},
     };
     return t;
 }

@@ -398,8 +398,15 @@ static int run_main(int argc, char** argv) {
         ->capture_default_str()
         ->type_name("INT");
     bench->add_flag("--sizes", bench_opt.sizes, "soft: steps/s and memory against the number of grains");
+    bench->add_option("--experiment", bench_opt.experiment, "sweep: the sweeping experiment to time (default bistable-pipe)");
+    bench->add_option("--scale", bench_opt.scale, "sweep: quick (default) or paper");
+    std::string bench_ranks = std::to_string(bench_opt.ranks);
+    bench->add_option("--ranks", bench_ranks, "sweep: MPI ranks compared with one (2 to 256, default 2)");
+    bench->add_option("--from-log", bench_opt.from_log, "sweep: project rank counts from this run.log instead of running");
     bench->callback([&] {
         bench_opt.threads = parse_positive_int("--threads", bench_threads, 256);
+        bench_opt.ranks = parse_positive_int("--ranks", bench_ranks, 256);
+        parse_scale(bench_opt.scale); // one line naming --scale and what is allowed
         rc = run_bench(bench_target, bench_opt);
     });
 

@@ -7,10 +7,12 @@
 #include <exception>
 #include <mutex>
 #include <thread>
+#include <time.h>
 
 #include "core/input_error.hpp"
 #include "harness/mpi_world.hpp"
 #include "harness/progress.hpp"
+#include "harness/run_log.hpp"
 #include "harness/sweep_checkpoint.hpp"
 
 #ifdef GRANREPRO_HAVE_MPI
@@ -23,6 +25,21 @@ namespace {
 
 // Threads of a rank > 0 that fetch points, each with its own message tag (1 + thread).
 int serving_threads(const RunContext& ctx) { return mpi::threads_may_call_mpi() ? std::max(1, ctx.threads) : 1; }
+
+// CPU seconds of the calling thread: a point's cost, unaffected by other processes sharing the
+// cores (what `granrepro bench sweep` projects rank counts from).
+double thread_cpu_seconds() {
+    timespec ts{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+    return double(ts.tv_sec) + 1e-9 * double(ts.tv_nsec);
+}
+
+// compute(i) and its cost [CPU s].
+std::pair<nlohmann::json, double> timed(const std::function<nlohmann::json(long)>& compute, long i) {
+    const double c0 = thread_cpu_seconds();
+    nlohmann::json value = compute(i);
+    return {std::move(value), thread_cpu_seconds() - c0};
+}
 
 [[noreturn]] void point_failed(long i, const char* what) {
     std::fprintf(stderr, "granrepro: rank %d: sweep point %ld failed: %s\n", mpi::rank(), i, what);
@@ -41,7 +58,7 @@ void wait_for(MPI_Request& request) {
 }
 
 // Rank > 0: each thread asks rank 0 for a point, computes it, sends the result with the next
-// request, until rank 0 answers -1.
+// request ("<index> <CPU seconds> <json>"), until rank 0 answers -1.
 void serve_points(const RunContext& ctx, const std::function<nlohmann::json(long)>& compute) {
     auto worker = [&](int thread) {
         const int tag = 1 + thread;
@@ -55,7 +72,10 @@ void serve_points(const RunContext& ctx, const std::function<nlohmann::json(long
             wait_for(request);
             if (next < 0) return;
             try {
-                message = std::to_string(next) + " " + compute(long(next)).dump();
+                auto [value, cost] = timed(compute, long(next));
+                char head[64];
+                std::snprintf(head, sizeof head, "%lld %.17g ", next, cost);
+                message = head + value.dump();
             } catch (const std::exception& e) {
                 point_failed(long(next), e.what());
             }
@@ -84,6 +104,7 @@ SweepResult distributed_sweep(const RunContext& ctx, const std::string& label, c
     SweepCheckpoint checkpoint(ctx, label);
     SweepResult out;
     out.points.resize(std::size_t(n));
+    out.cpu_seconds.assign(std::size_t(n), -1.0);
     std::vector<char> have(std::size_t(n), 0);
     for (long i = 0; i < n; ++i)
         if (auto saved = checkpoint.load(i)) {
@@ -126,10 +147,14 @@ SweepResult distributed_sweep(const RunContext& ctx, const std::string& label, c
         std::lock_guard<std::mutex> lock(mutex);
         return next < todo.size() ? todo[next++] : -1;
     };
-    auto store = [&](long i, nlohmann::json value) {
+    auto store = [&](long i, nlohmann::json value, double cost, int rank) {
         std::lock_guard<std::mutex> lock(mutex); // also makes the interruption hook exact
         checkpoint.save(i, value);
         out.points[std::size_t(i)] = std::move(value);
+        out.cpu_seconds[std::size_t(i)] = cost;
+        char text[160];
+        std::snprintf(text, sizeof text, "sweep %s: point %ld cost %.6g CPU s (rank %d)", label.c_str(), i, cost, rank);
+        run_log().line(text);
         progress.tick();
         if (++computed == stop_after) {
             std::fprintf(stderr, "granrepro: %s: interrupted after point %ld (GRANREPRO_INTERRUPT_AFTER_POINTS)\n",
@@ -140,7 +165,10 @@ SweepResult distributed_sweep(const RunContext& ctx, const std::string& label, c
     auto local = [&] {
         long i = -1;
         try {
-            while ((i = dispense()) >= 0) store(i, compute(i));
+            while ((i = dispense()) >= 0) {
+                auto [value, cost] = timed(compute, i);
+                store(i, std::move(value), cost, mpi::rank());
+            }
         } catch (const std::exception& e) {
             if (spread) point_failed(i, e.what());
             std::lock_guard<std::mutex> lock(mutex);
@@ -171,7 +199,11 @@ SweepResult distributed_sweep(const RunContext& ctx, const std::string& label, c
                      MPI_STATUS_IGNORE);
             const std::size_t space = message.find(' ');
             const long done = std::stol(message.substr(0, space));
-            if (done >= 0) store(done, nlohmann::json::parse(message.substr(space + 1)));
+            if (done >= 0) {
+                const std::size_t space2 = message.find(' ', space + 1);
+                store(done, nlohmann::json::parse(message.substr(space2 + 1)),
+                      std::stod(message.substr(space + 1, space2 - space - 1)), status.MPI_SOURCE);
+            }
             long long give = dispense();
             MPI_Request request;
             MPI_Isend(&give, 1, MPI_LONG_LONG, status.MPI_SOURCE, status.MPI_TAG, MPI_COMM_WORLD, &request);

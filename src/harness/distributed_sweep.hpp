@@ -14,6 +14,9 @@
 //            ranks (and computes too) and alone returns; the other ranks throw SweepServed;
 //   Shard  - compute the missing points of shard I, then throw ShardFinished;
 //   Gather - compute nothing; an InputError names the missing points ("N points missing: ...").
+// Each computed point's cost (CPU seconds of the thread that computed it, on whichever rank) goes
+// into run.log as "sweep <label>: point <i> cost <s> CPU s (rank <r>)": `granrepro bench sweep`
+// projects rank counts from these lines.
 #pragma once
 #include <functional>
 #include <nlohmann/json.hpp>
@@ -28,6 +31,7 @@ namespace granrepro {
 struct SweepResult {
     std::vector<nlohmann::json> points; // indexed by point
     long resumed = 0;                   // points loaded from the checkpoint instead of computed
+    std::vector<double> cpu_seconds;    // each computed point's cost [CPU s]; -1 for resumed points
 };
 
 // Thrown on ranks > 0 once rank 0 has no more points for them: the rest is rank 0's job.

@@ -1,0 +1,27 @@
+// `granrepro bench sweep`: what spreading a sweep over MPI ranks buys. Measures the wall time of
+// one experiment's sweep with 1 rank and with --ranks ranks (medians of --repeats runs), reads
+// each point's CPU cost from the 1-rank run's run.log, and projects 2 to 256 ranks from those
+// costs (Amdahl: the serial part plus the makespan of handing points out longest first, which is
+// bounded by the longest point). `--from-log run.log` projects from an earlier run instead,
+// e.g. a paper-scale run too long to repeat.
+#pragma once
+#include <filesystem>
+#include <vector>
+
+#include "bench/bench_options.hpp"
+
+namespace granrepro {
+
+struct SweepCosts {
+    std::vector<double> cost; // per computed point [CPU s]
+    double wall = 0;          // the run's wall time, if logged [s]
+};
+
+// The "sweep <label>: point <i> cost <s> CPU s" and "run finished: wall time <s> s" lines of a run.log.
+SweepCosts read_sweep_costs(const std::filesystem::path& run_log);
+// Wall time of the points on `ranks` workers that take them longest first as they become free [s].
+double projected_makespan(const std::vector<double>& cost, int ranks);
+void print_projection(const SweepCosts& c, const std::vector<int>& ranks);
+void bench_sweep_report(const BenchOptions& opt);
+
+} // namespace granrepro

@@ -1,0 +1,37 @@
+// `granrepro bench sweep`'s projection: the makespan of handing points out longest first, and
+// the run.log lines it reads the point costs from.
+#include "bench/sweep_bench.hpp"
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+using namespace granrepro;
+
+TEST(SweepBench, MakespanOfLongestFirst) {
+    const std::vector<double> cost = {2, 3, 2, 3, 2};
+    EXPECT_DOUBLE_EQ(projected_makespan(cost, 1), 12.0); // one rank: the sum
+    EXPECT_DOUBLE_EQ(projected_makespan(cost, 2), 7.0);  // 3+2+2 and 3+2
+    EXPECT_DOUBLE_EQ(projected_makespan(cost, 3), 5.0);  // 3+2, 3+2, 2
+    EXPECT_DOUBLE_EQ(projected_makespan(cost, 256), 3.0); // bounded by the longest point
+}
+
+TEST(SweepBench, ReadsPointCostsAndWallTimeFromRunLog) {
+    const auto file = std::filesystem::temp_directory_path() / ("granrepro-sweep-bench-" + std::to_string(::getpid()) + ".log");
+    {
+        std::ofstream out(file);
+        out << "[      0.0 s] parameter k_N = 2000 [N/m]\n"
+            << "[      1.5 s] sweep bistable-pipe: point 3 cost 1.25 CPU s (rank 0)\n"
+            << "[      2.5 s] sweep bistable-pipe: point 0 cost 2.5e-01 CPU s (rank 1)\n"
+            << "[      9.0 s] run finished: wall time 8.5 s\n";
+    }
+    const SweepCosts c = read_sweep_costs(file);
+    std::filesystem::remove(file);
+    ASSERT_EQ(c.cost.size(), 2u);
+    EXPECT_EQ(c.cost[0], 1.25);
+    EXPECT_EQ(c.cost[1], 0.25);
+    EXPECT_EQ(c.wall, 8.5);
+    EXPECT_ANY_THROW(read_sweep_costs(file)); // gone: an input error naming it
+}
