@@ -2,6 +2,7 @@
 // row along y at x = 0), as in Schäfer & Wolf (1995) Figs. 2-5. Shared by the brake-failure and
 // emergency-brake experiments and by the pipe experiment's link to the impact curves.
 #pragma once
+#include <array>
 #include <cmath>
 #include <numbers>
 #include <string>
@@ -33,7 +34,34 @@ struct ImpactOutcome {
     bool completed = false;// the grain left the wall for good within max_steps
 };
 
-// The free-wall contact of Eq. (1) must rebound: gamma_N below 2 sqrt(k_N/m), i.e. e_N in (0, 1]
+// The free grain, the wall grains and their contact, Eqs. (1), (2), (5): the parameters the
+// impact experiments share (experiments/brake-failure.toml, emergency-brake.toml), read once.
+struct ImpactShotSpec {
+    double d_free = 0, m_free = 0, d_wall = 0; // [m], [kg], [m]
+    double k_N = 0;                            // [N/m]
+    double gamma_N = 0;                        // [1/s]
+    double mu = 0;
+    FrictionNormal friction_normal = FrictionNormal::Magnitude; // reading of Eq. (2)
+    double steps_per_contact = 0;              // dt = t_col / steps_per_contact, Eq. (5)
+    template <class V> void fields(V&& v) {
+        v("d_free", d_free); v("m_free", m_free); v("d_wall", d_wall); v("k_N", k_N); v("gamma_N", gamma_N);
+        v("mu", mu); v("friction_normal", friction_normal); v("steps_per_contact", steps_per_contact);
+    }
+    // Centre distance at which the free grain touches a wall grain [m].
+    double reach() const { return 0.5 * (d_free + d_wall); }
+    CoulombShear shear() const { return {mu, friction_normal}; }
+    // A shot of this free grain from (x0, 0) at (-vx_toward, vy); a single wall grain unless
+    // wall_spacing is set.
+    ImpactSetup shot(double x0, double vx_toward, double vy, double dt) const {
+        return {.d_free = d_free, .m_free = m_free, .d_wall = d_wall, .x0 = x0, .vx_toward = vx_toward, .vy = vy, .dt = dt};
+    }
+};
+
+// The readings of Eq. (2) that the impact experiments compare side by side.
+inline constexpr std::array kFrictionNormals{FrictionNormal::Magnitude, FrictionNormal::Clipped, FrictionNormal::Elastic,
+                                             FrictionNormal::Signed};
+
+// (By name, until the drivers read ImpactShotSpec.) The free-wall contact of Eq. (1) must rebound: gamma_N below 2 sqrt(k_N/m), i.e. e_N in (0, 1]
 // (Eq. 4), and its time step t_col/steps_per_contact must be a positive number (k_N = 1e308
 // makes it 0). Shared parameter check of the impact experiments. Returns that time step [s].
 inline double validate_free_wall_law(const ParameterSet& p) {
@@ -44,6 +72,23 @@ inline double validate_free_wall_law(const ParameterSet& p) {
                      number_text(2 * std::sqrt(k / m)) + " 1/s so that e_N is in (0, 1]");
     const double w2 = k / m - 0.25 * g * g;
     const double dt = std::numbers::pi / std::sqrt(w2) / p.real("steps_per_contact");
+    if (!(dt > 0 && std::isfinite(dt)) || !(w2 < INFINITY))
+        p.reject(std::vector<std::string>{"k_N", "m_free", "steps_per_contact"},
+                 "the time step t_col/steps_per_contact (Eq. 4) is " + number_text(dt) + " s, not a usable number");
+    return dt;
+}
+
+// The free-wall contact of Eq. (1) must rebound: gamma_N below 2 sqrt(k_N/m), i.e. e_N in (0, 1]
+// (Eq. 4), and its time step t_col/steps_per_contact must be a positive number (k_N = 1e308
+// makes it 0). Shared parameter check of the impact experiments. Returns that time step [s].
+inline double validate_free_wall_law(const ParameterSet& p, const ImpactShotSpec& s) {
+    const double m = s.m_free, k = s.k_N, g = s.gamma_N;
+    if (!(g * g / 4 < k / m))
+        p.reject(std::vector<std::string>{"gamma_N", "k_N", "m_free"},
+                 "over-damped free-wall contact; gamma_N must be below 2 sqrt(k_N/m_free) = " +
+                     number_text(2 * std::sqrt(k / m)) + " 1/s so that e_N is in (0, 1]");
+    const double w2 = k / m - 0.25 * g * g;
+    const double dt = std::numbers::pi / std::sqrt(w2) / s.steps_per_contact;
     if (!(dt > 0 && std::isfinite(dt)) || !(w2 < INFINITY))
         p.reject(std::vector<std::string>{"k_N", "m_free", "steps_per_contact"},
                  "the time step t_col/steps_per_contact (Eq. 4) is " + number_text(dt) + " s, not a usable number");
