@@ -61,23 +61,6 @@ struct ImpactShotSpec {
 inline constexpr std::array kFrictionNormals{FrictionNormal::Magnitude, FrictionNormal::Clipped, FrictionNormal::Elastic,
                                              FrictionNormal::Signed};
 
-// (By name, until the drivers read ImpactShotSpec.) The free-wall contact of Eq. (1) must rebound: gamma_N below 2 sqrt(k_N/m), i.e. e_N in (0, 1]
-// (Eq. 4), and its time step t_col/steps_per_contact must be a positive number (k_N = 1e308
-// makes it 0). Shared parameter check of the impact experiments. Returns that time step [s].
-inline double validate_free_wall_law(const ParameterSet& p) {
-    const double m = p.real("m_free"), k = p.real("k_N"), g = p.real("gamma_N");
-    if (!(g * g / 4 < k / m))
-        p.reject(std::vector<std::string>{"gamma_N", "k_N", "m_free"},
-                 "over-damped free-wall contact; gamma_N must be below 2 sqrt(k_N/m_free) = " +
-                     number_text(2 * std::sqrt(k / m)) + " 1/s so that e_N is in (0, 1]");
-    const double w2 = k / m - 0.25 * g * g;
-    const double dt = std::numbers::pi / std::sqrt(w2) / p.real("steps_per_contact");
-    if (!(dt > 0 && std::isfinite(dt)) || !(w2 < INFINITY))
-        p.reject(std::vector<std::string>{"k_N", "m_free", "steps_per_contact"},
-                 "the time step t_col/steps_per_contact (Eq. 4) is " + number_text(dt) + " s, not a usable number");
-    return dt;
-}
-
 // The free-wall contact of Eq. (1) must rebound: gamma_N below 2 sqrt(k_N/m), i.e. e_N in (0, 1]
 // (Eq. 4), and its time step t_col/steps_per_contact must be a positive number (k_N = 1e308
 // makes it 0). Shared parameter check of the impact experiments. Returns that time step [s].
@@ -102,11 +85,6 @@ inline void limit_shot_steps(const ParameterSet& p, const std::vector<std::strin
                              double dt, double contact_steps) {
     const double steps = path / (speed * dt) + 4 * contact_steps;
     p.limit_work(names, steps, double(ImpactSetup{}.max_steps), "time steps in its slowest impact");
-}
-
-// Coulomb's law of Eq. (2) from the parameters mu and friction_normal (its reading).
-inline CoulombShear coulomb_from(const ParameterSet& p) {
-    return {p.real("mu"), *parse_friction_normal(p.text("friction_normal"))};
 }
 
 template <class NormalLaw>
