@@ -6,51 +6,67 @@
 #include <array>
 #include <cmath>
 #include <string>
+#include <utility>
 
 #include "analysis/curve_analysis.hpp"
 #include "scenarios/impact_shot.hpp"
 #include "harness/experiment.hpp"
 #include "harness/parallel_sweep.hpp"
+#include "data/spec.hpp"
 #include "models/linear_spring_dashpot.hpp"
 
 namespace granrepro::experiments {
 
 namespace {
 
+struct EmergencyBrakeSpec : ImpactShotSpec {
+    double wall_spacing = 0;       // wall-grain centre distance, the wall's wavelength [m]
+    double pipe_wall_spacing = 0;  // the bistable pipe's, for its impact curves [m]
+    double x_start = 0;            // start line's distance from the wall grains' centres [m]
+    long n_positions = 0;          // start positions over one wavelength
+    std::vector<double> vx_list;   // v_x^i towards the wall [m/s]
+    double vy_min = 0, vy_max = 0; // [m/s]
+    int n_vy = 0;
+    std::vector<double> kN_scan;   // further k_N at vx_list[0], e_N held [N/m]
+    template <class V> void fields(V&& v) {
+        ImpactShotSpec::fields(v);
+        v("wall_spacing", wall_spacing); v("pipe_wall_spacing", pipe_wall_spacing); v("x_start", x_start);
+        v("n_positions", n_positions); v("vx_list", vx_list); v("vy_min", vy_min); v("vy_max", vy_max);
+        v("n_vy", n_vy); v("kN_scan", kN_scan);
+    }
+};
+
 void validate(const ParameterSet& p) {
-    const double dt = validate_free_wall_law(p);
-    const double reach = 0.5 * (p.real("d_free") + p.real("d_wall"));
-    if (p.real("x_start") < reach)
+    const auto s = read_spec<EmergencyBrakeSpec>(p);
+    const double dt = validate_free_wall_law(p, s);
+    if (s.x_start < s.reach())
         p.reject("x_start", "the free grain would start overlapping the wall grains; must be at least (d_free + d_wall)/2 = " +
-                                number_text(reach) + " m");
-    if (p.real("vy_min") >= p.real("vy_max")) p.reject("vy_min", "must be below vy_max");
+                                number_text(s.reach()) + " m");
+    if (s.vy_min >= s.vy_max) p.reject("vy_min", "must be below vy_max");
     // A wall: the free grain must not fit through the gap between two wall grains, or it never
     // comes back and each shot runs to max_steps.
-    for (const char* spacing : {"wall_spacing", "pipe_wall_spacing"}) {
-        if (p.real(spacing) < p.real("d_wall") * (1 - 1e-12))
-            p.reject(std::vector<std::string>{spacing, "d_wall"}, std::string(spacing) + " must be at least d_wall (wall grains would overlap)");
-        if (p.real(spacing) - p.real("d_wall") >= p.real("d_free"))
-            p.reject(std::vector<std::string>{spacing, "d_wall", "d_free"},
-                     "the gap between wall grains (" + std::string(spacing) + " - d_wall) must be narrower than d_free");
+    for (const auto& [name, spacing] : {std::pair{"wall_spacing", s.wall_spacing}, std::pair{"pipe_wall_spacing", s.pipe_wall_spacing}}) {
+        if (spacing < s.d_wall * (1 - 1e-12))
+            p.reject(std::vector<std::string>{name, "d_wall"}, std::string(name) + " must be at least d_wall (wall grains would overlap)");
+        if (spacing - s.d_wall >= s.d_free)
+            p.reject(std::vector<std::string>{name, "d_wall", "d_free"},
+                     "the gap between wall grains (" + std::string(name) + " - d_wall) must be narrower than d_free");
     }
+    double k_min = s.k_N, k_max = s.k_N;
+    for (double k : s.kN_scan) { k_min = std::min(k_min, k); k_max = std::max(k_max, k); }
+    const auto [vx_min, vx_max] = std::minmax_element(s.vx_list.begin(), s.vx_list.end());
     // The fastest shot must take several steps over a wall grain: at most d_wall/2 per step at
     // the softest law of the k_N scan (the largest dt).
-    double k_min = p.real("k_N");
-    for (double k : p.reals("kN_scan")) k_min = std::min(k_min, k);
-    const double dt_max = dt * std::sqrt(p.real("k_N") / k_min);
-    const double v_fast = std::max(p.real("vy_max"), *std::max_element(p.reals("vx_list").begin(), p.reals("vx_list").end()));
-    if (!(v_fast * dt_max <= 0.5 * p.real("d_wall")))
+    const double dt_max = dt * std::sqrt(s.k_N / k_min);
+    if (!(std::max(s.vy_max, *vx_max) * dt_max <= 0.5 * s.d_wall))
         p.reject(std::vector<std::string>{"vy_max", "vx_list", "kN_scan", "k_N", "m_free", "steps_per_contact"},
-                 "vy_max and every v_x^i must be at most d_wall / (2 dt) = " + number_text(0.5 * p.real("d_wall") / dt_max) +
+                 "vy_max and every v_x^i must be at most d_wall / (2 dt) = " + number_text(0.5 * s.d_wall / dt_max) +
                      " m/s (dt = " + number_text(dt_max) + " s at the softest k_N): faster grains skip through the wall");
     // The slowest shot: the smallest v_x^i from x_start to the wall and a diameter into it, at
     // the time step of the stiffest law of the k_N scan.
-    double k_max = p.real("k_N");
-    for (double k : p.reals("kN_scan")) k_max = std::max(k_max, k);
-    const double vx_min = *std::min_element(p.reals("vx_list").begin(), p.reals("vx_list").end());
     limit_shot_steps(p, {"x_start", "d_free", "vx_list", "kN_scan", "k_N", "m_free", "steps_per_contact"},
-                     p.real("x_start") - reach + p.real("d_free"), vx_min, dt * std::sqrt(p.real("k_N") / k_max),
-                     p.real("steps_per_contact") * std::sqrt(k_max / p.real("k_N")));
+                     s.x_start - s.reach() + s.d_free, *vx_min, dt * std::sqrt(s.k_N / k_max),
+                     s.steps_per_contact * std::sqrt(k_max / s.k_N));
 }
 
 struct Point {
@@ -59,152 +75,139 @@ struct Point {
     int incomplete = 0;
 };
 
-constexpr std::array kReadings{FrictionNormal::Magnitude, FrictionNormal::Clipped, FrictionNormal::Elastic,
-                               FrictionNormal::Signed};
+// Series: one per v_x^i at the experiment's k_N (the figures), one per extra k_N at vx_list[0],
+// one per v_x^i on the pipe's wall spacing (Fig. 6's construction needs the impact curves of the
+// pipe's own wall), and one per other reading of Eq. (2) and v_x^i.
+struct Series {
+    double vx;
+    LinearSpringDashpot law;
+    CoulombShear shear;
+    double spacing;
+    std::string tag, what; // name suffix, table description
+    bool scan = false;     // k_N scan: only its maximum is reported
+};
 
-std::string label(const char* prefix, double x) {
-    char buf[48];
-    std::snprintf(buf, sizeof buf, "%s%g", prefix, x);
-    return buf;
+std::vector<Series> all_series(const EmergencyBrakeSpec& s, const LinearSpringDashpot& law) {
+    const double e_N = law.restitution(s.m_free);
+    const CoulombShear shear = s.shear();
+    const auto at = [](double vx) { return " at v_x^i = " + number_text(vx) + " m/s"; };
+    std::vector<Series> series;
+    for (double vx : s.vx_list)
+        series.push_back({vx, law, shear, s.wall_spacing, "vx" + number_text(vx), "mean over start positions" + at(vx)});
+    for (double k : s.kN_scan)
+        series.push_back({s.vx_list.front(), LinearSpringDashpot::from_restitution(k, e_N, s.m_free), shear, s.wall_spacing,
+                          "kN" + number_text(k), "k_N scan at the first v_x^i, e_N held fixed", true});
+    if (s.pipe_wall_spacing != s.wall_spacing)
+        for (double vx : s.vx_list)
+            series.push_back({vx, law, shear, s.pipe_wall_spacing, "pipe_vx" + number_text(vx), "on the pipe's wall spacing" + at(vx)});
+    for (auto reading : kFrictionNormals)
+        if (reading != shear.reading)
+            for (double vx : s.vx_list)
+                series.push_back({vx, law, CoulombShear{shear.mu, reading}, s.wall_spacing,
+                                  std::string("eq2_") + to_string(reading) + "_vx" + number_text(vx),
+                                  std::string("reading ") + to_string(reading) + " of Eq. (2)" + at(vx)});
+    return series;
+}
+
+// One point of a series: the mean over n_positions start positions spaced over one wavelength.
+Point mean_impact(const EmergencyBrakeSpec& s, const Series& se, double vy) {
+    ImpactSetup setup = s.shot(s.x_start, se.vx, vy, se.law.collision_time(s.m_free) / s.steps_per_contact);
+    setup.wall_spacing = se.spacing;
+    const long npos = s.n_positions;
+    double sum = 0, sum2 = 0, contacts = 0, multi = 0, back = 0;
+    Point out;
+    for (long k = 0; k < npos; ++k) {
+        setup.y0 = setup.wall_spacing * double(k) / double(npos);
+        const ImpactOutcome o = shoot(se.law, se.shear, setup);
+        sum += o.dvy;
+        sum2 += o.dvy * o.dvy;
+        contacts += o.wall_grains;
+        multi += o.wall_grains >= 2;
+        back += (o.dvx - se.vx) / se.vx;
+        out.incomplete += !o.completed;
+    }
+    const double mean = sum / double(npos);
+    out.dvy = mean;
+    out.dvy_sem = npos > 1 ? std::sqrt(std::max(0.0, sum2 / double(npos) - mean * mean) / double(npos - 1)) : 0.0;
+    out.contacts = contacts / double(npos);
+    out.multi_fraction = multi / double(npos);
+    out.vx_return = back / double(npos);
+    return out;
+}
+
+// Figs. 4 and 5 for one series: its table, the first maximum of Δv_y (brake failure sets in),
+// the minimum after it and the rise to vy_max, and where multiple contacts set in.
+void report_series(Result& r, const std::vector<double>& vy, const Series& se, const std::vector<Point>& pts) {
+    const std::size_t n = vy.size();
+    const std::string& tag = se.tag;
+    Table& t = r.table("impacts_" + tag, se.what);
+    const auto column = [&](double Point::*field) {
+        std::vector<double> c;
+        for (const Point& q : pts) c.push_back(q.*field);
+        return c;
+    };
+    const auto dvy = column(&Point::dvy), cont = column(&Point::contacts), back = column(&Point::vx_return);
+    t.add("vy_i", "m/s").values = vy;
+    t.add("dvy", "m/s").values = dvy;
+    t.add("dvy_sem", "m/s").values = column(&Point::dvy_sem);
+    t.add("contacts", "1").values = cont;
+    t.add("multi_fraction", "1").values = column(&Point::multi_fraction);
+    t.add("vx_return", "1").values = back;
+
+    const Peak pk = first_maximum(vy, dvy);
+    std::size_t imin = std::size_t(std::max(pk.index, 0));
+    for (std::size_t i = imin; i < n; ++i)
+        if (dvy[i] < dvy[imin]) imin = i;
+    r.scalar("v_crit_" + tag, pk.x, "m/s", "v_y^i at the first maximum of mean Δv_y");
+    r.scalar("dvy_peak_" + tag, pk.y, "m/s", "height of the first maximum");
+    if (se.scan) return;
+    r.scalar("v_min_" + tag, vy[imin], "m/s", "v_y^i where Δv_y is smallest after the first maximum (rise begins)");
+    r.scalar("rise_ratio_" + tag, dvy.back() / dvy[imin], "1", "Δv_y at vy_max over its minimum after the peak");
+    // Fig. 5 plots the mean number of contacts; the multiple-contact regime starts where it reaches 2.
+    const double onset = first_upward_crossing(vy, cont, 2.0);
+    r.scalar("v_multi_onset_" + tag, onset, "m/s", "v_y^i at which the mean number of wall grains touched reaches 2");
+    r.scalar("onset_over_vmin_" + tag, onset / vy[imin], "1", "multi-contact onset over the start of the Δv_y rise");
+    r.scalar("contacts_at_vmax_" + tag, cont.back(), "1", "mean wall grains touched at vy_max");
+    r.scalar("vx_return_at_vmax_" + tag, back.back(), "1", "mean v_x^f / v_x^i at vy_max (the wall's return of the speed towards it)");
+}
+
+// v_crit and the peak height must grow with k_N (text below Fig. 5): 1 if they do over the
+// experiment's k_N and the scan, at the first v_x^i.
+double grows_with_kN(const Result& r, const EmergencyBrakeSpec& s) {
+    std::vector<std::pair<double, std::string>> ks;
+    ks.push_back({s.k_N, "vx" + number_text(s.vx_list.front())});
+    for (double k : s.kN_scan) ks.push_back({k, "kN" + number_text(k)});
+    std::sort(ks.begin(), ks.end());
+    double monotone = 1;
+    const auto at = [&](const char* name, std::size_t a) { return r.find_scalar(name + ks[a].second)->value; };
+    for (std::size_t a = 1; a < ks.size(); ++a)
+        monotone = monotone && at("v_crit_", a) > at("v_crit_", a - 1) && at("dvy_peak_", a) > at("dvy_peak_", a - 1);
+    return monotone;
 }
 
 Result run(const RunContext& ctx) {
-    const ParameterSet& p = ctx.params;
-    const double m = p.real("m_free");
-    const LinearSpringDashpot law{p.real("k_N"), p.real("gamma_N")};
-    const double e_N = law.restitution(m);
-    const auto vy = log_space(p.real("vy_min"), p.real("vy_max"), int(p.integer("n_vy")));
-    const auto& vxs = p.reals("vx_list");
-    const auto& kscan = p.reals("kN_scan");
-    const long npos = p.integer("n_positions");
+    const auto s = read_spec<EmergencyBrakeSpec>(ctx.params);
+    const LinearSpringDashpot law{s.k_N, s.gamma_N};
+    const auto vy = log_space(s.vy_min, s.vy_max, s.n_vy);
     const std::size_t n = vy.size();
-
-    // Series: one per v_x^i at the experiment's k_N (the figures), one per extra k_N at
-    // vx_list[0], one per v_x^i on the pipe's wall spacing (Fig. 6's construction needs the impact
-    // curves of the pipe's own wall), and one per other reading of Eq. (2) and v_x^i.
-    enum class Kind { Main, KScan, PipeWall, Reading };
-    struct Series {
-        Kind kind;
-        double vx;
-        LinearSpringDashpot law;
-        CoulombShear shear;
-        double spacing;
-        std::string tag;
-    };
-    const CoulombShear shear = coulomb_from(p);
-    const double spacing = p.real("wall_spacing"), pipe_spacing = p.real("pipe_wall_spacing");
-    std::vector<Series> series;
-    for (double vx : vxs) series.push_back({Kind::Main, vx, law, shear, spacing, label("vx", vx)});
-    for (double k : kscan)
-        series.push_back({Kind::KScan, vxs.front(), LinearSpringDashpot::from_restitution(k, e_N, m), shear, spacing,
-                          label("kN", k)});
-    if (pipe_spacing != spacing)
-        for (double vx : vxs) series.push_back({Kind::PipeWall, vx, law, shear, pipe_spacing, label("pipe_vx", vx)});
-    for (auto reading : kReadings)
-        if (reading != shear.reading)
-            for (double vx : vxs)
-                series.push_back({Kind::Reading, vx, law, CoulombShear{shear.mu, reading}, spacing,
-                                  std::string("eq2_") + to_string(reading) + label("_vx", vx)});
-
+    const std::vector<Series> series = all_series(s, law);
     std::vector<std::vector<Point>> pts(series.size(), std::vector<Point>(n));
     Progress progress("emergency-brake", long(series.size() * n), ctx.quiet);
     parallel_sweep(long(series.size() * n), ctx.threads, &progress, [&](long task) {
-        const Series& s = series[std::size_t(task) / n];
-        const std::size_t i = std::size_t(task) % n;
-        ImpactSetup setup;
-        setup.d_free = p.real("d_free");
-        setup.m_free = m;
-        setup.d_wall = p.real("d_wall");
-        setup.wall_spacing = s.spacing;
-        setup.x0 = p.real("x_start");
-        setup.vx_toward = s.vx;
-        setup.vy = vy[i];
-        setup.dt = s.law.collision_time(m) / p.real("steps_per_contact");
-        double sum = 0, sum2 = 0, contacts = 0, multi = 0, back = 0;
-        Point& out = pts[std::size_t(task) / n][i];
-        for (long k = 0; k < npos; ++k) {
-            setup.y0 = setup.wall_spacing * double(k) / double(npos);
-            const ImpactOutcome o = shoot(s.law, s.shear, setup);
-            sum += o.dvy;
-            sum2 += o.dvy * o.dvy;
-            contacts += o.wall_grains;
-            multi += o.wall_grains >= 2;
-            back += (o.dvx - s.vx) / s.vx;
-            out.incomplete += !o.completed;
-        }
-        const double mean = sum / double(npos);
-        out.dvy = mean;
-        out.dvy_sem = npos > 1 ? std::sqrt(std::max(0.0, sum2 / double(npos) - mean * mean) / double(npos - 1)) : 0.0;
-        out.contacts = contacts / double(npos);
-        out.multi_fraction = multi / double(npos);
-        out.vx_return = back / double(npos);
+        const std::size_t si = std::size_t(task) / n, i = std::size_t(task) % n;
+        pts[si][i] = mean_impact(s, series[si], vy[i]);
     });
 
     Result r;
     int incomplete = 0;
-    for (const auto& s : pts)
-        for (const auto& q : s) incomplete += q.incomplete;
+    for (const auto& se : pts)
+        for (const auto& q : se) incomplete += q.incomplete;
     r.scalar("incomplete_impacts", incomplete, "1", "impacts that had not ended within max_steps");
-    r.scalar("e_N", e_N, "1", "free-wall restitution of the linear law, Eq. (4)");
-    r.scalar("t_col", law.collision_time(m), "s", "free-wall contact duration, Eq. (4)");
-
-    for (std::size_t si = 0; si < series.size(); ++si) {
-        const Series& se = series[si];
-        const bool main = se.kind != Kind::KScan;
-        const std::string& tag = se.tag;
-        const std::string at = "at v_x^i = " + label("", se.vx) + " m/s";
-        Table& t = r.table("impacts_" + tag, se.kind == Kind::Main       ? "mean over start positions " + at
-                                             : se.kind == Kind::KScan    ? "k_N scan at the first v_x^i, e_N held fixed"
-                                             : se.kind == Kind::PipeWall ? "on the pipe's wall spacing " + at
-                                                                         : std::string("reading ") + to_string(se.shear.reading) + " of Eq. (2) " + at);
-        std::vector<double> dvy(n), sem(n), cont(n), multi(n), back(n);
-        for (std::size_t i = 0; i < n; ++i) {
-            dvy[i] = pts[si][i].dvy;
-            sem[i] = pts[si][i].dvy_sem;
-            cont[i] = pts[si][i].contacts;
-            multi[i] = pts[si][i].multi_fraction;
-            back[i] = pts[si][i].vx_return;
-        }
-        t.add("vy_i", "m/s").values = vy;
-        t.add("dvy", "m/s").values = dvy;
-        t.add("dvy_sem", "m/s").values = sem;
-        t.add("contacts", "1").values = cont;
-        t.add("multi_fraction", "1").values = multi;
-        t.add("vx_return", "1").values = back;
-
-        // The first maximum (brake failure sets in), the minimum after it, and the rise to v_max.
-        const Peak pk = first_maximum(vy, dvy);
-        std::size_t imin = std::size_t(std::max(pk.index, 0));
-        for (std::size_t i = imin; i < n; ++i)
-            if (dvy[i] < dvy[imin]) imin = i;
-        r.scalar("v_crit_" + tag, pk.x, "m/s", "v_y^i at the first maximum of mean Δv_y");
-        r.scalar("dvy_peak_" + tag, pk.y, "m/s", "height of the first maximum");
-        if (!main) continue;
-        r.scalar("v_min_" + tag, vy[imin], "m/s", "v_y^i where Δv_y is smallest after the first maximum (rise begins)");
-        r.scalar("rise_ratio_" + tag, dvy.back() / dvy[imin], "1", "Δv_y at vy_max over its minimum after the peak");
-        // Fig. 5 plots the mean number of contacts; the multiple-contact regime starts where it reaches 2.
-        const double onset = first_upward_crossing(vy, cont, 2.0);
-        r.scalar("v_multi_onset_" + tag, onset, "m/s", "v_y^i at which the mean number of wall grains touched reaches 2");
-        r.scalar("onset_over_vmin_" + tag, onset / vy[imin], "1", "multi-contact onset over the start of the Δv_y rise");
-        r.scalar("contacts_at_vmax_" + tag, cont.back(), "1", "mean wall grains touched at vy_max");
-        r.scalar("vx_return_at_vmax_" + tag, back.back(), "1", "mean v_x^f / v_x^i at vy_max (the wall's return of the speed towards it)");
-    }
-    if (!kscan.empty()) {
-        // v_crit and the peak height must grow with k_N (text below Fig. 5).
-        std::vector<std::pair<double, std::string>> ks;
-        ks.push_back({law.k_N, label("vx", vxs.front())});
-        for (double k : kscan) ks.push_back({k, label("kN", k)});
-        std::sort(ks.begin(), ks.end());
-        double monotone = 1;
-        for (std::size_t a = 1; a < ks.size(); ++a) {
-            const double v0 = r.find_scalar("v_crit_" + ks[a - 1].second)->value;
-            const double v1 = r.find_scalar("v_crit_" + ks[a].second)->value;
-            const double h0 = r.find_scalar("dvy_peak_" + ks[a - 1].second)->value;
-            const double h1 = r.find_scalar("dvy_peak_" + ks[a].second)->value;
-            monotone = monotone && v1 > v0 && h1 > h0;
-        }
-        r.scalar("v_crit_and_peak_grow_with_kN", monotone, "1", "1 if v_crit and the peak height increase with k_N");
-    }
+    r.scalar("e_N", law.restitution(s.m_free), "1", "free-wall restitution of the linear law, Eq. (4)");
+    r.scalar("t_col", law.collision_time(s.m_free), "s", "free-wall contact duration, Eq. (4)");
+    for (std::size_t si = 0; si < series.size(); ++si) report_series(r, vy, series[si], pts[si]);
+    if (!s.kN_scan.empty())
+        r.scalar("v_crit_and_peak_grow_with_kN", grows_with_kN(r, s), "1", "1 if v_crit and the peak height increase with k_N");
     return r;
 }
 

@@ -39,6 +39,8 @@ inline std::optional<FrictionNormal> parse_friction_normal(const std::string& s)
         if (s == to_string(r)) return r;
     return std::nullopt;
 }
+// For typed specs (data/spec.hpp): the TOML's choices have been checked, so value() cannot throw.
+inline void parse_choice(const std::string& s, FrictionNormal& r) { r = parse_friction_normal(s).value(); }
 
 struct CoulombShear {
     double mu = 0.0; // dynamic friction coefficient [1]

@@ -2,6 +2,7 @@
 // row along y at x = 0), as in Schäfer & Wolf (1995) Figs. 2-5. Shared by the brake-failure and
 // emergency-brake experiments and by the pipe experiment's link to the impact curves.
 #pragma once
+#include <array>
 #include <cmath>
 #include <numbers>
 #include <string>
@@ -33,17 +34,44 @@ struct ImpactOutcome {
     bool completed = false;// the grain left the wall for good within max_steps
 };
 
+// The free grain, the wall grains and their contact, Eqs. (1), (2), (5): the parameters the
+// impact experiments share (experiments/brake-failure.toml, emergency-brake.toml), read once.
+struct ImpactShotSpec {
+    double d_free = 0, m_free = 0, d_wall = 0; // [m], [kg], [m]
+    double k_N = 0;                            // [N/m]
+    double gamma_N = 0;                        // [1/s]
+    double mu = 0;
+    FrictionNormal friction_normal = FrictionNormal::Magnitude; // reading of Eq. (2)
+    double steps_per_contact = 0;              // dt = t_col / steps_per_contact, Eq. (5)
+    template <class V> void fields(V&& v) {
+        v("d_free", d_free); v("m_free", m_free); v("d_wall", d_wall); v("k_N", k_N); v("gamma_N", gamma_N);
+        v("mu", mu); v("friction_normal", friction_normal); v("steps_per_contact", steps_per_contact);
+    }
+    // Centre distance at which the free grain touches a wall grain [m].
+    double reach() const { return 0.5 * (d_free + d_wall); }
+    CoulombShear shear() const { return {mu, friction_normal}; }
+    // A shot of this free grain from (x0, 0) at (-vx_toward, vy); a single wall grain unless
+    // wall_spacing is set.
+    ImpactSetup shot(double x0, double vx_toward, double vy, double dt) const {
+        return {.d_free = d_free, .m_free = m_free, .d_wall = d_wall, .x0 = x0, .vx_toward = vx_toward, .vy = vy, .dt = dt};
+    }
+};
+
+// The readings of Eq. (2) that the impact experiments compare side by side.
+inline constexpr std::array kFrictionNormals{FrictionNormal::Magnitude, FrictionNormal::Clipped, FrictionNormal::Elastic,
+                                             FrictionNormal::Signed};
+
 // The free-wall contact of Eq. (1) must rebound: gamma_N below 2 sqrt(k_N/m), i.e. e_N in (0, 1]
 // (Eq. 4), and its time step t_col/steps_per_contact must be a positive number (k_N = 1e308
 // makes it 0). Shared parameter check of the impact experiments. Returns that time step [s].
-inline double validate_free_wall_law(const ParameterSet& p) {
-    const double m = p.real("m_free"), k = p.real("k_N"), g = p.real("gamma_N");
+inline double validate_free_wall_law(const ParameterSet& p, const ImpactShotSpec& s) {
+    const double m = s.m_free, k = s.k_N, g = s.gamma_N;
     if (!(g * g / 4 < k / m))
         p.reject(std::vector<std::string>{"gamma_N", "k_N", "m_free"},
                  "over-damped free-wall contact; gamma_N must be below 2 sqrt(k_N/m_free) = " +
                      number_text(2 * std::sqrt(k / m)) + " 1/s so that e_N is in (0, 1]");
     const double w2 = k / m - 0.25 * g * g;
-    const double dt = std::numbers::pi / std::sqrt(w2) / p.real("steps_per_contact");
+    const double dt = std::numbers::pi / std::sqrt(w2) / s.steps_per_contact;
     if (!(dt > 0 && std::isfinite(dt)) || !(w2 < INFINITY))
         p.reject(std::vector<std::string>{"k_N", "m_free", "steps_per_contact"},
                  "the time step t_col/steps_per_contact (Eq. 4) is " + number_text(dt) + " s, not a usable number");
@@ -57,11 +85,6 @@ inline void limit_shot_steps(const ParameterSet& p, const std::vector<std::strin
                              double dt, double contact_steps) {
     const double steps = path / (speed * dt) + 4 * contact_steps;
     p.limit_work(names, steps, double(ImpactSetup{}.max_steps), "time steps in its slowest impact");
-}
-
-// Coulomb's law of Eq. (2) from the parameters mu and friction_normal (its reading).
-inline CoulombShear coulomb_from(const ParameterSet& p) {
-    return {p.real("mu"), *parse_friction_normal(p.text("friction_normal"))};
 }
 
 template <class NormalLaw>
