@@ -54,16 +54,19 @@ enum class Start { lattice, random };
 void parse_choice(const std::string& s, Start& x) { x = s == "lattice" ? Start::lattice : Start::random; }
 
 struct ClusterSpec {
-    long n_side = 0; // N = n_side^2
-    double box_over_d = 0, d = 0, mass = 0, vbar = 0, mu = 0, r = 0, t_c = 0; // d [m], mass [kg], vbar [m/s], t_c [s]
-    bool tc_both = false;
+    long n_side = 0;                         // N = n_side^2
+    double box_over_d = 0, cluster_cell = 0; // in diameters
+    double d = 0, mass = 0, vbar = 0;        // [m], [kg], [m/s]
+    double r = 0, mu = 0;
+    double t_c = 0, t_base = 0, t_max = 0, late_slope_from = 0, elastic_until = 0; // [s]
     double tc_compare_until = 0; // [s]; 0: no run with the other pair rule
+    bool tc_both = false;
     Start initial_positions = Start::lattice;
-    double equilibration = 0, t_base = 0, cn_end = 0, t_max = 0; // collisions per particle, [s], C/N, [s]
+    double equilibration = 0; // collisions per particle at r = 1
+    double cn_end = 0, poisson_until_cn = 0, tail_fit_from = 0, hist_quantile = 0;
+    double tail_rate = 0; // [1/s]
     int samples_per_octave = 0, hist_bins = 0;
     std::vector<double> paper_cn, snapshot_times; // snapshot_times [s]
-    double cluster_cell = 0, poisson_until_cn = 0, tail_fit_from = 0, hist_quantile = 0;
-    double tail_rate = 0, late_slope_from = 0, elastic_until = 0; // [1/s], [s], [s]
     template <class V>
     void fields(V&& v) {
         v("n_side", n_side), v("box_over_d", box_over_d), v("d", d), v("mass", mass), v("vbar", vbar);
@@ -94,8 +97,7 @@ void validate(const ParameterSet& p) {
     // The main run to C/N = cn_end (or t_max), the other pair rule beside it, the
     // equilibration: bounded by 2 (cn_end + equilibration) collisions per particle.
     const double n = double(s.n_side) * double(s.n_side);
-    p.limit_work({"cn_end", "n_side", "equilibration"}, 2 * n / 2 * (s.cn_end + s.equilibration), kMaxCollisions,
-                 "collisions");
+    p.limit_work({"cn_end", "n_side", "equilibration"}, 2 * n / 2 * (s.cn_end + s.equilibration), kMaxCollisions, "collisions");
     // Samples at t_base 2^(j/m) up to t_max, each holding the N positions.
     const double samples = std::log2(s.t_max / s.t_base) * double(s.samples_per_octave);
     p.limit_work({"t_max", "t_base", "samples_per_octave"}, samples, 1e5, "samples");
@@ -103,7 +105,7 @@ void validate(const ParameterSet& p) {
 
 // What an instant t = t_base 2^k is rebuilt from (make_instant); the checkpoint holds only this.
 struct InstantRecord {
-    double t = 0, cn = 0, elastic_cn = 0;
+    double t = 0, cn = 0, elastic_cn = 0; // t [s]; C/N and TC-elastic C/N at t
     double fast_fraction = 0; // particles with a collision within t_c of their previous one in (t/2, t]
     std::vector<double> rate;          // N_c per particle over (t/2, t] [1/s]
     std::vector<std::uint64_t> counts; // collisions per particle over (0, t]
@@ -208,7 +210,7 @@ struct LoopState {
 };
 
 constexpr const char* kRunSchema = "granrepro-cluster-growth-run";
-constexpr long kRunSchemaVersion = 3; // 3: LoopState walked by its fields() (harness/sampled_run.hpp)
+constexpr long kRunSchemaVersion = 3; // 3: the carry written field by field (harness/sampled_run.hpp)
 
 // The initial state: disks on a square lattice (Sec. 4.1) or placed at random, Maxwellian
 // velocities, equilibrated elastically.
@@ -233,7 +235,7 @@ EquilibratedGas initial_gas(const ClusterSpec& s, std::uint64_t seed) {
     return gas;
 }
 
-// The TCED gas at t = 0 (Eq. 7 with pair rule tc_both) and its loop state.
+// The TCED gas at t = 0: Eq. (7) with pair rule tc_both.
 EdEngine tced_engine(const ClusterSpec& s, const EquilibratedGas& gas, bool tc_both) {
     EdConfig cfg;
     cfg.lx = cfg.ly = s.L();
@@ -245,6 +247,7 @@ EdEngine tced_engine(const ClusterSpec& s, const EquilibratedGas& gas, bool tc_b
     return EdEngine(cfg, gas.pos, gas.vel, s.radii(), s.masses());
 }
 
+// The samples at t = 0 and the observer's state before the first collision.
 LoopState fresh_loop(const EdEngine& eng, std::size_t n) {
     const EdKineticEnergy k0 = eng.kinetic_energy();
     LoopState st;
@@ -721,26 +724,24 @@ void report_at_paper_cn(Result& res, const std::vector<Instant>& instants, const
 
 // B over the clustered instants 70 <= C/N <= 1404 (the paper quotes one B for them).
 void report_clustered_B(Result& res, const std::vector<Instant>& instants) {
-    double lsum = 0;
-    int cnt = 0;
-    double bmin = INFINITY, bmax = -INFINITY;
-    for (const auto& in : instants)
-        if (in.cn >= 70 && in.cn <= 1404 && std::isfinite(in.power.value)) {
+    double lsum = 0, ls = 0, bmin = INFINITY, bmax = -INFINITY;
+    int cnt = 0, c = 0, better = 0;
+    for (const auto& in : instants) {
+        if (!(in.cn >= 70 && in.cn <= 1404)) continue;
+        if (std::isfinite(in.power.value)) {
             lsum += std::log(in.power.value);
             ++cnt;
             bmin = std::min(bmin, in.power.value);
             bmax = std::max(bmax, in.power.value);
         }
-    res.scalar("B_geomean_70_1404", cnt ? std::exp(lsum / cnt) : NAN, "1/s", "geometric mean of B over the instants with 70 <= C/N <= 1404");
-    res.scalar("B_min_70_1404", cnt ? bmin : NAN, "1/s", "smallest B there");
-    double ls = 0;
-    int c = 0, better = 0;
-    for (const auto& in : instants)
-        if (in.cn >= 70 && in.cn <= 1404 && std::isfinite(in.power_tail.value)) {
+        if (std::isfinite(in.power_tail.value)) { // the tail fit
             ls += std::log(in.power_tail.value);
             ++c;
             if (in.power_tail.chi2_reduced < in.expo_tail.chi2_reduced) ++better;
         }
+    }
+    res.scalar("B_geomean_70_1404", cnt ? std::exp(lsum / cnt) : NAN, "1/s", "geometric mean of B over the instants with 70 <= C/N <= 1404");
+    res.scalar("B_min_70_1404", cnt ? bmin : NAN, "1/s", "smallest B there");
     res.scalar("B_tail_geomean_70_1404", c ? std::exp(ls / c) : NAN, "1/s",
                "geometric mean of the tail-fitted B over the instants with 70 <= C/N <= 1404");
     res.scalar("powerlaw_better_tail_share_70_1404", c ? double(better) / c : NAN, "1",
