@@ -23,68 +23,112 @@
 // the per-particle counts at every instant gives N_c = (count(t) - count(t/2)) / (t/2) with no
 // per-collision bookkeeping (1e8 collisions at paper scale).
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <gsl/gsl_fit.h>
 #include <gsl/gsl_sort.h>
 #include <gsl/gsl_statistics_double.h>
+#include <optional>
 #include <string>
 
 #include "analysis/curve_analysis.hpp"
 #include "core/rng_stream.hpp"
+#include "data/spec.hpp"
 #include "engines/ed/ed_engine.hpp"
 #include "engines/ed/ed_initial_states.hpp"
 #include "experiments/work_limits.hpp"
 #include "harness/experiment.hpp"
+#include "harness/parallel_sweep.hpp"
 #include "harness/progress.hpp"
 #include "harness/run_checkpoint.hpp"
 #include "harness/run_log.hpp"
-#include "io/ed_state_file.hpp"
+#include "harness/sampled_run.hpp"
 #include "observables/collision_rate_fit.hpp"
 #include "observables/rate_histogram.hpp"
-#include "harness/parallel_sweep.hpp"
+#include "theory/kinetic_theory.hpp"
 
 namespace granrepro::experiments {
 
 namespace {
 
+enum class Start { lattice, random };
+void parse_choice(const std::string& s, Start& x) { x = s == "lattice" ? Start::lattice : Start::random; }
+
+struct ClusterSpec {
+    long n_side = 0;                         // N = n_side^2
+    double box_over_d = 0, cluster_cell = 0; // in diameters
+    double d = 0, mass = 0, vbar = 0;        // [m], [kg], [m/s]
+    double r = 0, mu = 0;
+    double t_c = 0, t_base = 0, t_max = 0, late_slope_from = 0, elastic_until = 0; // [s]
+    double tc_compare_until = 0; // [s]; 0: no run with the other pair rule
+    bool tc_both = false;
+    Start initial_positions = Start::lattice;
+    double equilibration = 0; // collisions per particle at r = 1
+    double cn_end = 0, poisson_until_cn = 0, tail_fit_from = 0, hist_quantile = 0;
+    double tail_rate = 0; // [1/s]
+    int samples_per_octave = 0, hist_bins = 0;
+    std::vector<double> paper_cn, snapshot_times; // snapshot_times [s]
+    template <class V>
+    void fields(V&& v) {
+        v("n_side", n_side), v("box_over_d", box_over_d), v("d", d), v("mass", mass), v("vbar", vbar);
+        v("mu", mu), v("r", r), v("t_c", t_c), v("tc_both", tc_both), v("tc_compare_until", tc_compare_until);
+        v("initial_positions", initial_positions), v("equilibration", equilibration), v("t_base", t_base);
+        v("samples_per_octave", samples_per_octave), v("cn_end", cn_end), v("t_max", t_max);
+        v("paper_cn", paper_cn), v("snapshot_times", snapshot_times), v("cluster_cell", cluster_cell);
+        v("poisson_until_cn", poisson_until_cn), v("tail_fit_from", tail_fit_from), v("hist_bins", hist_bins);
+        v("hist_quantile", hist_quantile), v("tail_rate", tail_rate), v("late_slope_from", late_slope_from);
+        v("elastic_until", elastic_until);
+    }
+    std::size_t n() const { return std::size_t(n_side * n_side); }
+    double L() const { return box_over_d * d; } // [m]
+    std::vector<double> radii() const { return std::vector<double>(n(), 0.5 * d); }
+    std::vector<double> masses() const { return std::vector<double>(n(), mass); }
+};
+
 void validate(const ParameterSet& p) {
-    const long ns = p.integer("n_side");
-    if (p.real("box_over_d") / double(ns) < 1.0000001)
+    const auto s = read_spec<ClusterSpec>(p);
+    if (s.box_over_d / double(s.n_side) < 1.0000001)
         p.reject(std::vector<std::string>{"box_over_d", "n_side"},
                  "box_over_d too small for a square-lattice start of n_side^2 disks (lattice spacing below d)");
     // The linked-cell grid of the ED engine has ~(box_over_d)^2 cells of one diameter.
-    p.limit_work({"box_over_d"}, p.real("box_over_d") * p.real("box_over_d"), 1e8, "cells of the linked-cell grid");
-    if (p.real("box_over_d") < 3.0) p.reject("box_over_d", "must be at least 3 (three cells for the minimum image)");
-    if (p.real("t_max") <= p.real("t_base")) p.reject("t_max", "must exceed t_base");
-    if (p.reals("paper_cn").empty()) p.reject("paper_cn", "needs at least one value");
-    {
-        // The main run to C/N = cn_end (or t_max), the other pair rule beside it, the
-        // equilibration: bounded by 2 (cn_end + equilibration) collisions per particle.
-        const double n = double(ns) * double(ns);
-        p.limit_work({"cn_end", "n_side", "equilibration"}, 2 * n / 2 * (p.real("cn_end") + p.real("equilibration")),
-                     kMaxCollisions, "collisions");
-        // Samples at t_base 2^(j/m) up to t_max, each holding the N positions.
-        const double samples = std::log2(p.real("t_max") / p.real("t_base")) * double(p.integer("samples_per_octave"));
-        p.limit_work({"t_max", "t_base", "samples_per_octave"}, samples, 1e5, "samples");
-    }
+    p.limit_work({"box_over_d"}, s.box_over_d * s.box_over_d, 1e8, "cells of the linked-cell grid");
+    if (s.box_over_d < 3.0) p.reject("box_over_d", "must be at least 3 (three cells for the minimum image)");
+    if (s.t_max <= s.t_base) p.reject("t_max", "must exceed t_base");
+    if (s.paper_cn.empty()) p.reject("paper_cn", "needs at least one value");
+    // The main run to C/N = cn_end (or t_max), the other pair rule beside it, the
+    // equilibration: bounded by 2 (cn_end + equilibration) collisions per particle.
+    const double n = double(s.n_side) * double(s.n_side);
+    p.limit_work({"cn_end", "n_side", "equilibration"}, 2 * n / 2 * (s.cn_end + s.equilibration), kMaxCollisions, "collisions");
+    // Samples at t_base 2^(j/m) up to t_max, each holding the N positions.
+    const double samples = std::log2(s.t_max / s.t_base) * double(s.samples_per_octave);
+    p.limit_work({"t_max", "t_base", "samples_per_octave"}, samples, 1e5, "samples");
 }
 
-// One instant t = t_base 2^k and what was measured there.
-struct Instant {
-    double t = 0, window = 0, cn = 0, elastic_cn = 0;
-    std::vector<double> rate;     // N_c per particle over (t/2, t] [1/s]
-    std::vector<Vec2> pos;        // positions at t [m]
+// What an instant t = t_base 2^k is rebuilt from (make_instant); the checkpoint holds only this.
+struct InstantRecord {
+    double t = 0, cn = 0, elastic_cn = 0; // t [s]; C/N and TC-elastic C/N at t
+    double fast_fraction = 0; // particles with a collision within t_c of their previous one in (t/2, t]
+    std::vector<double> rate;          // N_c per particle over (t/2, t] [1/s]
+    std::vector<std::uint64_t> counts; // collisions per particle over (0, t]
+    std::vector<Vec2> pos;             // positions at t [m]
+    template <class V>
+    void fields(V&& v) {
+        v("t", t), v("cn", cn), v("elastic_cn", elastic_cn), v("fast_fraction", fast_fraction);
+        v("rate", rate), v("counts", counts), v("position", pos);
+    }
+};
+
+// One instant and what was measured there.
+struct Instant : InstantRecord {
+    double window = 0;
     RateHistogram hist;
     CollisionRateFit poisson, expo, power;
     CollisionRateFit poisson_full; // Eq. (20) for the counts over (0, t]
     CollisionRateFit power_tail, expo_tail; // Eqs. (22), (21) over N_c >= tail_fit_from x mean N_c
     double tail_lo = 0;                    // that lower end [1/s]
     double mean_rate = 0, sd_rate = 0, tail_fraction = 0;
-    double fast_fraction = 0; // particles with a collision within t_c of their previous one in (t/2, t]
 };
 
-RateHistogram histogram(const std::vector<double>& rate, double window, const ParameterSet& p) {
+RateHistogram histogram(const std::vector<double>& rate, double window, const ClusterSpec& s) {
     const double mean = gsl_stats_mean(rate.data(), 1, rate.size());
     if (mean * window <= 30) {
         const double mx = *std::max_element(rate.begin(), rate.end());
@@ -92,25 +136,14 @@ RateHistogram histogram(const std::vector<double>& rate, double window, const Pa
     }
     std::vector<double> sorted = rate;
     std::sort(sorted.begin(), sorted.end());
-    const double hi = gsl_stats_quantile_from_sorted_data(sorted.data(), 1, sorted.size(), p.real("hist_quantile"));
-    return RateHistogram::make(rate, window, RateHistogram::Binning::Linear, int(p.integer("hist_bins")), 0.0,
-                               std::max(hi, 2.0 / window));
+    const double hi = gsl_stats_quantile_from_sorted_data(sorted.data(), 1, sorted.size(), s.hist_quantile);
+    return RateHistogram::make(rate, window, RateHistogram::Binning::Linear, s.hist_bins, 0.0, std::max(hi, 2.0 / window));
 }
 
-CollisionRateFit fit_range(const RateHistogram& h, CollisionRateFit::Model m, double lo) {
+// A fit over N_c >= lo; NaN where the fit fails.
+CollisionRateFit fit(const RateHistogram& h, CollisionRateFit::Model m, double lo = -INFINITY) {
     try {
         return CollisionRateFit::fit(h, m, lo, INFINITY);
-    } catch (const std::exception&) {
-        CollisionRateFit f;
-        f.model = m;
-        f.value = f.error = f.chi2_reduced = NAN;
-        return f;
-    }
-}
-
-CollisionRateFit fit(const RateHistogram& h, CollisionRateFit::Model m) {
-    try {
-        return CollisionRateFit::fit(h, m, -INFINITY, INFINITY);
     } catch (const std::exception&) {
         CollisionRateFit f;
         f.model = m;
@@ -125,269 +158,206 @@ std::string label(const char* prefix, double v) {
     return buf;
 }
 
-// The per-particle rates and counts of an instant fix everything else in it; the checkpoint
-// stores only those (and the positions), and a resumed run recomputes the rest identically.
-Instant make_instant(double t, double cn, double elastic_cn, double fast_fraction, std::vector<double> rate,
-                     const std::vector<std::uint64_t>& counts, std::vector<Vec2> pos, const ParameterSet& p) {
-    const std::size_t n = rate.size();
+// The per-particle rates and counts of an instant fix everything else in it, so a resumed run
+// recomputes it identically.
+Instant make_instant(InstantRecord rec, const ClusterSpec& s) {
     Instant in;
-    in.fast_fraction = fast_fraction;
-    in.t = t;
-    in.window = t / 2;
-    in.cn = cn;
-    in.elastic_cn = elastic_cn;
-    in.rate = std::move(rate);
+    static_cast<InstantRecord&>(in) = std::move(rec);
+    const std::size_t n = in.rate.size();
+    in.window = in.t / 2;
     std::size_t tail = 0;
     for (double r : in.rate)
-        if (r > p.real("tail_rate")) ++tail;
+        if (r > s.tail_rate) ++tail;
     in.mean_rate = gsl_stats_mean(in.rate.data(), 1, n);
     in.sd_rate = gsl_stats_sd(in.rate.data(), 1, n);
     in.tail_fraction = double(tail) / double(n);
-    in.hist = histogram(in.rate, in.window, p);
+    in.hist = histogram(in.rate, in.window, s);
     in.poisson = fit(in.hist, CollisionRateFit::Model::Poisson);
     in.expo = fit(in.hist, CollisionRateFit::Model::Exponential);
     in.power = fit(in.hist, CollisionRateFit::Model::PowerLaw);
     // The tail alone, as the paper reads Fig. 12(b,c): "the probability for large collision
     // frequencies ... can now be approximated by a power law". Still normalised over all N_c (no
     // free amplitude), so B is fixed by the tail's height and curvature.
-    in.tail_lo = p.real("tail_fit_from") * in.mean_rate;
-    in.power_tail = fit_range(in.hist, CollisionRateFit::Model::PowerLaw, in.tail_lo);
-    in.expo_tail = fit_range(in.hist, CollisionRateFit::Model::Exponential, in.tail_lo);
+    in.tail_lo = s.tail_fit_from * in.mean_rate;
+    in.power_tail = fit(in.hist, CollisionRateFit::Model::PowerLaw, in.tail_lo);
+    in.expo_tail = fit(in.hist, CollisionRateFit::Model::Exponential, in.tail_lo);
     // The same Poisson fit with the counts since t = 0 (window t instead of t/2): the paper's
     // chi = 6.5 at C/N = 8 is compared with both readings.
     std::vector<double> full(n);
-    for (std::size_t i = 0; i < n; ++i) full[i] = double(counts[i]) / t;
-    in.poisson_full = fit(histogram(full, t, p), CollisionRateFit::Model::Poisson);
-    in.pos = std::move(pos);
+    for (std::size_t i = 0; i < n; ++i) full[i] = double(in.counts[i]) / in.t;
+    in.poisson_full = fit(histogram(full, in.t, s), CollisionRateFit::Model::Poisson);
     return in;
 }
 
 // Everything the sampling loop carries from one sample to the next, besides the engine.
 struct LoopState {
-    int next_j = 0;                 // index of the next sample time t_base 2^(j/m)
-    double omega_eq = 0;            // elastic collision rate of the equilibration [1/s]
-    double wall_before = 0;         // wall seconds of earlier, interrupted parts [s]
-    std::vector<double> ts, ks, kxs, kys, cns, ecns;
+    std::vector<double> ts, ks, kxs, kys, cns, ecns; // per sample: t [s], K, K_x, K_y [J], C/N, TC-elastic C/N
     std::vector<double> fast_share; // per sample: cumulative share of particle-collisions within t_c of the particle's previous one
     std::vector<double> hot;        // per sample: fraction of particles whose latest interval was <= t_c
-    std::vector<Instant> instants;
-    std::vector<std::vector<std::uint64_t>> instant_counts; // counts at each instant (for resume)
-    std::vector<std::uint64_t> prev_counts;                 // at the previous instant t/2
+    std::vector<InstantRecord> instants;
+    std::vector<std::uint64_t> prev_counts; // at the previous instant t/2
     // Per-particle Eq. (7) bookkeeping from the collision records (observer state).
-    std::vector<double> last_t, last_interval;              // [s]; -inf / +inf before the first
-    std::vector<std::uint32_t> fast, prev_fast;             // collisions within t_c of the previous one, and at t/2
-    std::uint64_t fast_total = 0;                           // their sum over particles
+    std::vector<double> last_t, last_interval;  // [s]; -inf / +inf before the first
+    std::vector<std::uint32_t> fast, prev_fast; // collisions within t_c of the previous one, and at t/2
+    std::uint64_t fast_total = 0;               // their sum over particles
+    template <class V>
+    void fields(V&& v) {
+        v("t", ts), v("K", ks), v("Kx", kxs), v("Ky", kys), v("C_over_N", cns), v("elastic_C_over_N", ecns);
+        v("fast_share", fast_share), v("hot", hot), v("instants", instants), v("prev_counts", prev_counts);
+        v("last_t", last_t), v("last_interval", last_interval), v("fast", fast), v("prev_fast", prev_fast);
+        v("fast_total", fast_total);
+    }
 };
 
 constexpr const char* kRunSchema = "granrepro-cluster-growth-run";
-constexpr long kRunSchemaVersion = 2;
-
-void save_loop(const H5Object& root, const LoopState& s, const EdEngine& eng, double wall_now) {
-    root.stamp_schema(kRunSchema, kRunSchemaVersion);
-    write_ed_state(root.group("engine"), eng.save_state());
-    const H5Object g = root.group("loop");
-    g.attr("next_j", long(s.next_j));
-    g.attr("omega_eq", s.omega_eq);
-    g.attr("wall_seconds", wall_now);
-    g.array("t", s.ts);
-    g.array("K", s.ks);
-    g.array("Kx", s.kxs);
-    g.array("Ky", s.kys);
-    g.array("C_over_N", s.cns);
-    g.array("elastic_C_over_N", s.ecns);
-    g.array("fast_share", s.fast_share);
-    g.array("hot", s.hot);
-    g.array("prev_counts", s.prev_counts);
-    g.array("last_t", s.last_t);
-    g.array("last_interval", s.last_interval);
-    g.array("fast", s.fast);
-    g.array("prev_fast", s.prev_fast);
-    g.attr_u64("fast_total", s.fast_total);
-    g.attr("instants", long(s.instants.size()));
-    for (std::size_t k = 0; k < s.instants.size(); ++k) {
-        const Instant& in = s.instants[k];
-        const H5Object h = g.group("instant" + std::to_string(k));
-        h.attr("t", in.t);
-        h.attr("cn", in.cn);
-        h.attr("elastic_cn", in.elastic_cn);
-        h.attr("fast_fraction", in.fast_fraction);
-        h.array("rate", in.rate);
-        h.array("counts", s.instant_counts[k]);
-        h.vec2_array("position", in.pos);
-    }
-}
-
-LoopState load_loop(const H5Object& root, const ParameterSet& p, EdState& engine) {
-    root.require_schema(kRunSchema, kRunSchemaVersion);
-    engine = read_ed_state(root.open_group("engine"));
-    const H5Object g = root.open_group("loop");
-    LoopState s;
-    s.next_j = int(g.read_long_attr("next_j"));
-    s.omega_eq = g.read_double_attr("omega_eq");
-    s.wall_before = g.read_double_attr("wall_seconds");
-    s.ts = g.read_array<double>("t");
-    s.ks = g.read_array<double>("K");
-    s.kxs = g.read_array<double>("Kx");
-    s.kys = g.read_array<double>("Ky");
-    s.cns = g.read_array<double>("C_over_N");
-    s.ecns = g.read_array<double>("elastic_C_over_N");
-    s.fast_share = g.read_array<double>("fast_share");
-    s.hot = g.read_array<double>("hot");
-    s.prev_counts = g.read_array<std::uint64_t>("prev_counts");
-    s.last_t = g.read_array<double>("last_t");
-    s.last_interval = g.read_array<double>("last_interval");
-    s.fast = g.read_array<std::uint32_t>("fast");
-    s.prev_fast = g.read_array<std::uint32_t>("prev_fast");
-    s.fast_total = g.read_u64_attr("fast_total");
-    const long count = g.read_long_attr("instants");
-    for (long k = 0; k < count; ++k) {
-        const H5Object h = g.open_group("instant" + std::to_string(k));
-        std::vector<Vec2> pos = h.read_vec2_array("position");
-        s.instant_counts.push_back(h.read_array<std::uint64_t>("counts"));
-        s.instants.push_back(make_instant(h.read_double_attr("t"), h.read_double_attr("cn"),
-                                          h.read_double_attr("elastic_cn"), h.read_double_attr("fast_fraction"),
-                                          h.read_array<double>("rate"), s.instant_counts.back(), std::move(pos), p));
-    }
-    return s;
-}
+constexpr long kRunSchemaVersion = 3; // 3: the carry written field by field (harness/sampled_run.hpp)
 
 // The initial state: disks on a square lattice (Sec. 4.1) or placed at random, Maxwellian
 // velocities, equilibrated elastically.
-EquilibratedGas initial_gas(const RunContext& ctx, double L, const std::vector<double>& rad, const std::vector<double>& mass) {
-    const ParameterSet& p = ctx.params;
-    RngStream rng(ctx.seed, 0);
-    if (p.text("initial_positions") == "lattice")
-        return equilibrated_lattice_gas(L, rad, mass, p.real("vbar"), p.real("equilibration"), rng);
+EquilibratedGas initial_gas(const ClusterSpec& s, std::uint64_t seed) {
+    const double L = s.L();
+    const std::vector<double> rad = s.radii(), mass = s.masses();
+    RngStream rng(seed, 0);
+    if (s.initial_positions == Start::lattice)
+        return equilibrated_lattice_gas(L, rad, mass, s.vbar, s.equilibration, rng);
     std::vector<Vec2> pos = random_positions(rad, L, L, true, true, rng);
-    std::vector<Vec2> vel = maxwellian_velocities(mass, p.real("vbar"), rng);
+    std::vector<Vec2> vel = maxwellian_velocities(mass, s.vbar, rng);
     EdConfig cfg;
     cfg.lx = cfg.ly = L;
     cfg.law.r = 1.0;
     EdEngine eq(cfg, pos, vel, rad, mass);
-    equilibrate(eq, p.real("equilibration"));
+    equilibrate(eq, s.equilibration);
     EquilibratedGas gas;
     gas.collision_rate = eq.time() > 0 ? 2.0 * double(eq.total_collisions()) / double(mass.size()) / eq.time() : NAN;
     gas.pos = eq.positions();
     gas.vel = eq.velocities();
-    zero_momentum_and_scale(gas.vel, mass, p.real("vbar"));
+    zero_momentum_and_scale(gas.vel, mass, s.vbar);
     return gas;
 }
 
-// One TCED run from the equilibrated state: samples at t_base 2^(j/m) until C/N >= cn_end at an
-// instant or t >= t_stop; resumes from its checkpoint `name` if there is one.
+// The TCED gas at t = 0: Eq. (7) with pair rule tc_both.
+EdEngine tced_engine(const ClusterSpec& s, const EquilibratedGas& gas, bool tc_both) {
+    EdConfig cfg;
+    cfg.lx = cfg.ly = s.L();
+    cfg.law.r = s.r;
+    cfg.law.mu = s.mu;
+    cfg.law.beta0 = s.mu > 0 ? 0.0 : -1.0;
+    cfg.t_c = s.t_c;
+    cfg.tc_both = tc_both;
+    return EdEngine(cfg, gas.pos, gas.vel, s.radii(), s.masses());
+}
+
+// The samples at t = 0 and the observer's state before the first collision.
+LoopState fresh_loop(const EdEngine& eng, std::size_t n) {
+    const EdKineticEnergy k0 = eng.kinetic_energy();
+    LoopState st;
+    st.ts = {0.0};
+    st.ks = {k0.total()};
+    st.kxs = {k0.kx};
+    st.kys = {k0.ky};
+    st.cns = st.ecns = st.fast_share = st.hot = {0.0};
+    st.last_t.assign(n, -INFINITY);
+    st.last_interval.assign(n, INFINITY);
+    st.fast.assign(n, 0);
+    return st;
+}
+
+// Eq. (7) per particle, from the records: was this collision within t_c of the particle's
+// previous one?
+void observe(LoopState& st, const CollisionRecord& c, double t_c) {
+    for (const int q : {c.i, c.j}) {
+        const auto k = std::size_t(q);
+        const double dt = c.t - st.last_t[k];
+        st.last_interval[k] = dt;
+        if (dt <= t_c) {
+            ++st.fast[k];
+            ++st.fast_total;
+        }
+        st.last_t[k] = c.t;
+    }
+}
+
+// Every sample: K, C/N and the TC-elastic shares (Fig. 10).
+void record_sample(LoopState& st, const EdEngine& eng, double t, double t_c) {
+    const std::size_t n = st.last_interval.size();
+    const EdKineticEnergy k = eng.kinetic_energy();
+    st.ts.push_back(t);
+    st.ks.push_back(k.total());
+    st.kxs.push_back(k.kx);
+    st.kys.push_back(k.ky);
+    st.cns.push_back(2.0 * double(eng.total_collisions()) / double(n));
+    st.ecns.push_back(2.0 * double(eng.elastic_collisions()) / double(n));
+    st.fast_share.push_back(eng.total_collisions() ? double(st.fast_total) / (2.0 * double(eng.total_collisions())) : 0.0);
+    std::size_t hot = 0;
+    for (double iv : st.last_interval)
+        if (iv <= t_c) ++hot;
+    st.hot.push_back(double(hot) / double(n));
+}
+
+// At t = t_base 2^k: N_c over (t/2, t] from the counts now and at the previous instant t/2.
+void record_instant(LoopState& st, const EdEngine& eng, double t) {
+    std::vector<std::uint64_t> counts = eng.collision_counts();
+    if (!st.prev_counts.empty()) {
+        const std::size_t n = counts.size();
+        InstantRecord in{t, st.cns.back(), st.ecns.back(), 0.0, std::vector<double>(n), counts, eng.positions()};
+        std::size_t fast_particles = 0;
+        for (std::size_t i = 0; i < n; ++i) {
+            in.rate[i] = double(counts[i] - st.prev_counts[i]) / (t / 2);
+            if (st.fast[i] > st.prev_fast[i]) ++fast_particles;
+        }
+        in.fast_fraction = double(fast_particles) / double(n);
+        st.instants.push_back(std::move(in));
+    }
+    st.prev_counts = std::move(counts);
+    st.prev_fast = st.fast;
+}
+
 struct RunOutcome {
     LoopState st;
-    std::string error;
-    double wall = 0;
+    std::string error; // the collapse guard's message, if it stopped the run
+    double wall = 0;   // [s]
     double events = 0, collisions = 0;
 };
 
-RunOutcome run_tced(const RunContext& ctx, const EquilibratedGas* gas, bool tc_both, double cn_end, double t_stop,
-                    const std::string& name, Progress* progress) {
-    const ParameterSet& p = ctx.params;
-    const long ns = p.integer("n_side");
-    const std::size_t n = std::size_t(ns * ns);
-    const double d = p.real("d"), L = p.real("box_over_d") * d;
-    const std::vector<double> rad(n, 0.5 * d), mass(n, p.real("mass"));
-    const int m = int(p.integer("samples_per_octave"));
-    const double t_base = p.real("t_base"), t_c = p.real("t_c");
+// One TCED run from the equilibrated state: samples at t_base 2^(j/m), j from -3m, until
+// C/N >= cn_end or t >= t_max at an instant, or t > t_stop; resumes from its checkpoint `name`
+// if there is one.
+RunOutcome run_tced(const RunContext& ctx, const ClusterSpec& s, const EquilibratedGas& gas, bool tc_both, double cn_end,
+                    double t_stop, const std::string& name, Progress* progress) {
+    const int m = s.samples_per_octave;
     RunCheckpoint checkpoint(ctx, name);
+    SampledRun<LoopState> run(checkpoint, kRunSchema, kRunSchemaVersion);
     RunOutcome out;
     LoopState& st = out.st;
     EdState saved;
-    const bool resumed = checkpoint.load([&](const H5Object& root) { st = load_loop(root, p, saved); });
-    EdEngine eng = resumed ? EdEngine(saved) : [&] {
-        st.omega_eq = gas->collision_rate;
-        EdConfig cfg;
-        cfg.lx = cfg.ly = L;
-        cfg.law.r = p.real("r");
-        cfg.law.mu = p.real("mu");
-        cfg.law.beta0 = p.real("mu") > 0 ? 0.0 : -1.0;
-        cfg.t_c = t_c;
-        cfg.tc_both = tc_both;
-        EdEngine fresh(cfg, gas->pos, gas->vel, rad, mass);
-        const EdKineticEnergy k0 = fresh.kinetic_energy();
-        st.next_j = -3 * m;
-        st.ts = {0.0};
-        st.ks = {k0.total()};
-        st.kxs = {k0.kx};
-        st.kys = {k0.ky};
-        st.cns = {0.0};
-        st.ecns = {0.0};
-        st.fast_share = {0.0};
-        st.hot = {0.0};
-        st.last_t.assign(n, -INFINITY);
-        st.last_interval.assign(n, INFINITY);
-        st.fast.assign(n, 0);
-        return fresh;
-    }();
-    // Eq. (7) per particle, from the records: was this collision within t_c of the particle's
-    // previous one?
-    auto obs = [&st, t_c](const CollisionRecord& c) {
-        for (const int q : {c.i, c.j}) {
-            const auto k = std::size_t(q);
-            const double dt = c.t - st.last_t[k];
-            st.last_interval[k] = dt;
-            if (dt <= t_c) {
-                ++st.fast[k];
-                ++st.fast_total;
-            }
-            st.last_t[k] = c.t;
-        }
+    const bool resumed = run.resume(saved, st);
+    EdEngine eng = resumed ? EdEngine(saved) : tced_engine(s, gas, tc_both);
+    if (!resumed) st = fresh_loop(eng, s.n());
+    const ProgressSlot slot(progress, -1); // the engine time is shown, the instants are ticked
+    if (progress) progress->tick((run.next_sample() + m - 1) / m);
+    bool advancing = false; // from a sample time's trigger to its sample: a runtime_error is the engine's
+    const auto trigger = [&](long i) -> std::optional<double> {
+        const double t = s.t_base * std::exp2(double(i - 3 * m) / m);
+        if (t > t_stop * (1 + 1e-12)) return std::nullopt;
+        advancing = true;
+        return t;
     };
-    if (progress)
-        for (int j = -3 * m; j < st.next_j; ++j)
-            if (j % m == 0) progress->tick();
-    const auto wall0 = std::chrono::steady_clock::now();
-    auto wall_now = [&] {
-        return st.wall_before + std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
+    const auto sample = [&](long i, double t) {
+        advancing = false;
+        record_sample(st, eng, t, s.t_c);
+        if ((i - 3 * m) % m != 0) return false;
+        if (progress) progress->tick();
+        record_instant(st, eng, t);
+        return st.cns.back() >= cn_end || t >= s.t_max;
     };
-    for (int j = st.next_j;; ++j) {
-        const double t = t_base * std::exp2(double(j) / m);
-        if (t > t_stop * (1 + 1e-12)) break;
-        try {
-            eng.run_until(t, obs);
-            if (progress) progress->engine_time(-1, t, t_stop);
-        } catch (const std::runtime_error& e) {
-            out.error = e.what(); // the collapse guard; keep what was measured
-            warn("cluster-growth: " + out.error);
-            break;
-        }
-        const EdKineticEnergy k = eng.kinetic_energy();
-        const double cn = 2.0 * double(eng.total_collisions()) / double(n);
-        st.ts.push_back(t);
-        st.ks.push_back(k.total());
-        st.kxs.push_back(k.kx);
-        st.kys.push_back(k.ky);
-        st.cns.push_back(cn);
-        st.ecns.push_back(2.0 * double(eng.elastic_collisions()) / double(n));
-        st.fast_share.push_back(eng.total_collisions() ? double(st.fast_total) / (2.0 * double(eng.total_collisions())) : 0.0);
-        std::size_t hot = 0;
-        for (double iv : st.last_interval)
-            if (iv <= t_c) ++hot;
-        st.hot.push_back(double(hot) / double(n));
-        st.next_j = j + 1;
-        if (j % m == 0) {
-            if (progress) progress->tick();
-            std::vector<std::uint64_t> counts = eng.collision_counts();
-            if (!st.prev_counts.empty()) {
-                std::vector<double> rate(n);
-                std::size_t fast_particles = 0;
-                for (std::size_t i = 0; i < n; ++i) {
-                    rate[i] = double(counts[i] - st.prev_counts[i]) / (t / 2);
-                    if (st.fast[i] > st.prev_fast[i]) ++fast_particles;
-                }
-                st.instants.push_back(make_instant(t, cn, st.ecns.back(), double(fast_particles) / double(n), std::move(rate), counts,
-                                                   eng.positions(), p));
-                st.instant_counts.push_back(counts);
-            }
-            st.prev_counts = std::move(counts);
-            st.prev_fast = st.fast;
-            if (cn >= cn_end || t >= p.real("t_max")) break;
-        }
-        if (checkpoint.due()) checkpoint.save([&](const H5Object& root) { save_loop(root, st, eng, wall_now()); });
+    try {
+        run.run(eng, st, trigger, [&](const CollisionRecord& c) { observe(st, c, s.t_c); }, sample, t_stop);
+    } catch (const std::runtime_error& e) {
+        if (!advancing) throw; // a checkpoint that failed or an interrupt, not the engine
+        out.error = e.what();  // the collapse guard; keep what was measured
+        warn("cluster-growth: " + out.error);
     }
-    out.wall = wall_now();
+    out.wall = run.wall_seconds();
     out.events = double(eng.events_processed());
     out.collisions = double(eng.total_collisions());
     return out;
@@ -440,420 +410,448 @@ int nearest(const std::vector<Instant>& in, double cn) {
     return best;
 }
 
-Result run(const RunContext& ctx) {
-    const ParameterSet& p = ctx.params;
-    const long ns = p.integer("n_side");
-    const std::size_t n = std::size_t(ns * ns);
-    const double d = p.real("d"), L = p.real("box_over_d") * d, r = p.real("r");
-    const std::vector<double> rad(n, 0.5 * d), mass(n, p.real("mass"));
-    const int m = int(p.integer("samples_per_octave"));
-    const double t_base = p.real("t_base"), cn_end = p.real("cn_end"), t_max = p.real("t_max");
-    const bool tc_both = p.flag("tc_both");
-    const double compare_until = p.real("tc_compare_until");
+// The homogeneous gas at t = 0: Enskog's collision rate and t0 of Eq. (18) (sqrt(2 pi) in
+// Eq. 19; see theory/kinetic_theory.hpp).
+struct KineticTheory {
+    double rho = 0, omega_enskog = 0, t0 = 0; // omega [1/s], t0 [s]
+};
 
-    // The main run (pair rule tc_both) to cn_end and, beside it, the other pair rule up to
-    // tc_compare_until, both from one equilibrated state (rebuilt deterministically on resume).
-    const EquilibratedGas gas = initial_gas(ctx, L, rad, mass);
-    const long runs = compare_until > 0 ? 2 : 1;
-    RunOutcome main_run, other_run;
-    Progress progress("cluster-growth", long(std::ceil(std::log2(t_max / t_base))) + 4, ctx.quiet);
-    parallel_sweep(runs, ctx.threads, nullptr, [&](long k) {
-        if (k == 0)
-            main_run = run_tced(ctx, &gas, tc_both, cn_end, t_max, "ed", &progress);
-        else
-            other_run = run_tced(ctx, &gas, !tc_both, INFINITY, compare_until, "ed_other_rule", nullptr);
-    });
-    const LoopState& st = main_run.st;
-    const std::string& error = main_run.error;
-    const double wall = main_run.wall;
-    const auto& ts = st.ts;
-    const auto& ks = st.ks;
-    const auto& kxs = st.kxs;
-    const auto& kys = st.kys;
-    const auto& cns = st.cns;
-    const auto& ecns = st.ecns;
-    const auto& instants = st.instants;
-
-    Result res;
-    const double rho = M_PI / 4 * double(n) / (p.real("box_over_d") * p.real("box_over_d"));
-    const double vbar = p.real("vbar");
+KineticTheory kinetic_theory(const ClusterSpec& s) {
+    const double rho = M_PI / 4 * double(s.n()) / (s.box_over_d * s.box_over_d);
     const double s_star = (1 - rho) * (1 - rho) / (1 - 7 * rho / 16);
-    const double omega_enskog = 8 * rho * vbar / (s_star * d * std::sqrt(2 * M_PI));
-    const double t0 = 4 / ((1 - r * r) * omega_enskog);
-    res.scalar("N", double(n), "1", "number of disks");
-    res.scalar("rho", rho, "1", "area fraction (pi/4) N / L^2");
-    res.scalar("t0_kinetic", t0, "s", "t0 of Eq. (18) from kinetic theory (sqrt(2 pi) in Eq. 19; see cooling.cpp)");
-    res.scalar("omega_equilibration_over_enskog", st.omega_eq / omega_enskog, "1", "elastic collision rate per particle during equilibration over Enskog's");
-    res.scalar("wall_seconds_run", wall, "s", "wall time of the cooling run (after equilibration)");
-    res.scalar("events_per_second", main_run.events / wall, "1/s", "ED events (collisions, cell crossings, stale) per second");
-    res.scalar("collisions_per_second", main_run.collisions / wall, "1/s", "pair collisions per second");
+    const double omega = 8 * rho * s.vbar / (s_star * s.d * std::sqrt(2 * M_PI));
+    return {rho, omega, theory::haff_t0(s.r, omega)};
+}
+
+void report_run(Result& res, const ClusterSpec& s, const KineticTheory& kin, double omega_eq, const RunOutcome& main_run,
+                const RunOutcome* other_run) {
+    res.scalar("N", double(s.n()), "1", "number of disks");
+    res.scalar("rho", kin.rho, "1", "area fraction (pi/4) N / L^2");
+    res.scalar("t0_kinetic", kin.t0, "s", "t0 of Eq. (18) from kinetic theory (sqrt(2 pi) in Eq. 19; see cooling.cpp)");
+    res.scalar("omega_equilibration_over_enskog", omega_eq / kin.omega_enskog, "1", "elastic collision rate per particle during equilibration over Enskog's");
+    res.scalar("wall_seconds_run", main_run.wall, "s", "wall time of the cooling run (after equilibration)");
+    res.scalar("events_per_second", main_run.events / main_run.wall, "1/s", "ED events (collisions, cell crossings, stale) per second");
+    res.scalar("collisions_per_second", main_run.collisions / main_run.wall, "1/s", "pair collisions per second");
     res.scalar("events", main_run.events, "1", "ED events of the cooling run");
-    res.scalar("tc_both", tc_both ? 1.0 : 0.0, "1", "pair rule of the main run: 1 = both partners within t_c, 0 = either");
-    if (runs == 2) res.scalar("wall_seconds_other_rule", other_run.wall, "s", "wall time of the run with the other pair rule");
-    res.scalar("t_end", ts.back(), "s", "end of the run");
-    res.scalar("C_over_N_end", cns.back(), "1", "collisions per particle at the end");
-    res.scalar("stopped_by_engine", error.empty() ? 0.0 : 1.0, "1", "1 if the collapse guard stopped the run");
+    res.scalar("tc_both", s.tc_both ? 1.0 : 0.0, "1", "pair rule of the main run: 1 = both partners within t_c, 0 = either");
+    if (other_run) res.scalar("wall_seconds_other_rule", other_run->wall, "s", "wall time of the run with the other pair rule");
+    res.scalar("t_end", main_run.st.ts.back(), "s", "end of the run");
+    res.scalar("C_over_N_end", main_run.st.cns.back(), "1", "collisions per particle at the end");
+    res.scalar("stopped_by_engine", main_run.error.empty() ? 0.0 : 1.0, "1", "1 if the collapse guard stopped the run");
+}
 
-    // ---- Fig. 10 ------------------------------------------------------------------------------
-    {
-        Table& t = res.table("energy", "K/K0, C/N and TC-elastic collisions per particle against t");
-        std::vector<double> kk, an, e18, s2, s1, efrac;
-        for (std::size_t i = 0; i < ts.size(); ++i) {
-            kk.push_back(ks[i] / ks[0]);
-            an.push_back((kxs[i] - kys[i]) / (kxs[i] + kys[i]));
-            e18.push_back(1 / ((1 + ts[i] / t0) * (1 + ts[i] / t0)));
-            efrac.push_back(cns[i] > 0 ? ecns[i] / cns[i] : NAN);
+// Fig. 10: K/K0, C/N and the TC-elastic collisions per particle against t; returns K/K0.
+std::vector<double> fig10_table(Result& res, const LoopState& st, double t0, double late_from) {
+    const auto& ts = st.ts;
+    Table& t = res.table("energy", "K/K0, C/N and TC-elastic collisions per particle against t");
+    std::vector<double> kk, an, e18, s2, s1, efrac;
+    for (std::size_t i = 0; i < ts.size(); ++i) {
+        kk.push_back(st.ks[i] / st.ks[0]);
+        an.push_back((st.kxs[i] - st.kys[i]) / (st.kxs[i] + st.kys[i]));
+        e18.push_back(theory::haff_energy_ratio(ts[i], t0));
+        efrac.push_back(st.cns[i] > 0 ? st.ecns[i] / st.cns[i] : NAN);
+    }
+    t.add("t", "s").values = ts;
+    t.add("K_over_K0", "1").values = kk;
+    t.add("eq18", "1").values = e18;
+    t.add("anisotropy", "1").values = an;
+    t.add("C_over_N", "1").values = st.cns;
+    t.add("elastic_C_over_N", "1").values = st.ecns;
+    t.add("elastic_fraction", "1").values = efrac;
+    t.add("own_interval_share", "1").values = st.fast_share;
+    t.add("hot_particles", "1").values = st.hot;
+    // Guide lines of Fig. 10(a): slope -2, the t >> t0 asymptote of Eq. (18), (t/t0)^-2; slope -1
+    // through the geometric mean of the samples from late_slope_from on.
+    double lsum = 0;
+    int lcount = 0;
+    for (std::size_t i = 1; i < ts.size(); ++i)
+        if (ts[i] >= late_from) {
+            lsum += std::log(kk[i] * ts[i]);
+            ++lcount;
         }
-        t.add("t", "s").values = ts;
-        t.add("K_over_K0", "1").values = kk;
-        t.add("eq18", "1").values = e18;
-        t.add("anisotropy", "1").values = an;
-        t.add("C_over_N", "1").values = cns;
-        t.add("elastic_C_over_N", "1").values = ecns;
-        t.add("elastic_fraction", "1").values = efrac;
-        t.add("own_interval_share", "1").values = st.fast_share;
-        t.add("hot_particles", "1").values = st.hot;
-        // Guide lines of Fig. 10(a): slope -2, the t >> t0 asymptote of Eq. (18), (t/t0)^-2; slope -1
-        // through the geometric mean of the samples from late_slope_from on.
-        double lsum = 0;
-        int lcount = 0;
-        for (std::size_t i = 1; i < ts.size(); ++i)
-            if (ts[i] >= p.real("late_slope_from")) {
-                lsum += std::log(kk[i] * ts[i]);
-                ++lcount;
-            }
-        for (std::size_t i = 0; i < ts.size(); ++i) {
-            s2.push_back(ts[i] >= t0 ? (t0 / ts[i]) * (t0 / ts[i]) : NAN);
-            s1.push_back(ts[i] >= 0.1 * p.real("late_slope_from") && lcount ? std::exp(lsum / lcount) / ts[i] : NAN);
-        }
-        t.add("slope_minus2", "1").values = s2;
-        t.add("slope_minus1", "1").values = s1;
+    for (std::size_t i = 0; i < ts.size(); ++i) {
+        s2.push_back(ts[i] >= t0 ? (t0 / ts[i]) * (t0 / ts[i]) : NAN);
+        s1.push_back(ts[i] >= 0.1 * late_from && lcount ? std::exp(lsum / lcount) / ts[i] : NAN);
+    }
+    t.add("slope_minus2", "1").values = s2;
+    t.add("slope_minus1", "1").values = s1;
+    return kk;
+}
 
-        // Early cooling: Eq. (18) fitted over t <= t0 (1/sqrt(K/K0) - 1 = t/t0, a line through 0).
-        std::vector<double> x, y;
-        for (std::size_t i = 1; i < ts.size(); ++i)
-            if (ts[i] <= t0) {
-                x.push_back(ts[i]);
-                y.push_back(1 / std::sqrt(kk[i]) - 1);
-            }
-        double c1 = NAN, cov = 0, ss = 0;
-        if (x.size() >= 2) gsl_fit_mul(x.data(), 1, y.data(), 1, x.size(), &c1, &cov, &ss);
-        res.scalar("t0_fit_over_kinetic", c1 * t0, "1", "1/t0 fitted to K(t) over t <= t0 (Eq. 18) over the kinetic-theory value");
-        // Steepest local slope d ln K / d ln t (over one octave) before late_slope_from: Eq. (18)
-        // tends to -2 only for t >> t0, while clustering sets in at a few t0.
-        double steepest = 0;
-        for (std::size_t i = std::size_t(m) + 1; i < ts.size() && ts[i] <= p.real("late_slope_from"); ++i)
-            steepest = std::min(steepest, std::log(kk[i] / kk[i - std::size_t(m)]) / std::log(2.0));
-        res.scalar("K_slope_steepest_early", steepest, "1", "steepest slope of log K against log t over one octave, t <= late_slope_from");
-        const PowerLawFit late = fit_power_law(ts, kk, p.real("late_slope_from"), ts.back());
-        res.scalar("K_slope_late", late.exponent, "1", "average slope of log K against log t from late_slope_from to the end (GSL fit)");
-        res.scalar("K_slope_late_err", late.exponent_err, "1", "its standard error (residual scatter of the 13-per-decade samples)");
-        res.scalar("K_over_eq18_end", kk.back() / e18.back(), "1", "K over Eq. (18) at the end: how much slower than homogeneous cooling");
-        // The TC-elastic share three ways (see the top of this file), for t <= elastic_until and
-        // over the whole run, for the main pair rule and (with tc_compare_until) the other one.
-        const double until = p.real("elastic_until");
-        auto shares = [&](const LoopState& ls, const std::string& tag, const char* rule) {
-            double coll = 0, coll_all = 0, own = 0, hot_max = 0, hot_sum = 0;
-            int hot_n = 0;
-            for (std::size_t i = 1; i < ls.ts.size(); ++i) {
-                if (!(ls.cns[i] > 0)) continue;
-                coll_all = std::max(coll_all, ls.ecns[i] / ls.cns[i]);
-                if (ls.ts[i] > until) continue;
-                coll = std::max(coll, ls.ecns[i] / ls.cns[i]);
-                own = std::max(own, ls.fast_share[i]);
-                hot_max = std::max(hot_max, ls.hot[i]);
-                hot_sum += ls.hot[i];
-                ++hot_n;
-            }
-            const std::string r = std::string(" (") + rule + " rule)";
-            res.scalar("elastic_fraction_early_max" + tag, coll, "1", "largest TC-elastic share of all pair collisions, cumulative, for t <= elastic_until" + r);
-            res.scalar("elastic_fraction_max" + tag, coll_all, "1", "largest TC-elastic share of all pair collisions over the run" + r);
-            res.scalar("own_interval_share_early_max" + tag, own, "1",
-                       "largest cumulative share of particle-collisions within t_c of that particle's previous one, t <= elastic_until" + r);
-            res.scalar("hot_particles_early_max" + tag, hot_max, "1",
-                       "largest fraction of particles whose latest collision came within t_c of the previous one, samples t <= elastic_until" + r);
-            res.scalar("hot_particles_early_mean" + tag, hot_n ? hot_sum / hot_n : NAN, "1", "its mean over those (log-spaced) samples" + r);
-            auto at = [&](double tq, const std::vector<double>& v) -> double {
-                for (std::size_t i = 0; i < ls.ts.size(); ++i)
-                    if (std::abs(ls.ts[i] / tq - 1) < 1e-9) return v[i];
-                return NAN;
-            };
-            for (const char* when : {"0.04", "0.64", "10.24"}) {
-                const double tq = std::stod(when);
-                res.scalar(std::string("C_over_N_at_") + when + "s" + tag, at(tq, ls.cns), "1",
-                           std::string("C/N = (sum of per-particle counts)/N = 2 pair collisions/N at t = ") + when + " s" + r);
-                res.scalar(std::string("pairs_over_N_at_") + when + "s" + tag, 0.5 * at(tq, ls.cns), "1",
-                           std::string("pair collisions/N (each collision counted once) at t = ") + when + " s" + r);
-            }
-        };
-        shares(st, "", tc_both ? "both" : "either");
-        if (runs == 2) shares(other_run.st, tc_both ? "_either" : "_both", tc_both ? "either" : "both");
-        res.scalar("elastic_per_particle_end", ecns.back(), "1", "TC-elastic collisions per particle at the end");
-        res.scalar("C_over_N_eq18_at_0.64s", 4 / (1 - r * r) * std::log(1 + 0.64 / t0), "1",
-                   "C/N at 0.64 s if the gas stayed homogeneous: 4/(1-r^2) ln(1 + t/t0)");
-    }
+// How K(t) departs from homogeneous cooling: Eq. (18) early, the slopes later.
+void fig10_slopes(Result& res, const std::vector<double>& ts, const std::vector<double>& kk, double t0, int m, double late_from) {
+    // Early cooling: Eq. (18) fitted over t <= t0 (1/sqrt(K/K0) - 1 = t/t0, a line through 0).
+    std::vector<double> x, y;
+    for (std::size_t i = 1; i < ts.size(); ++i)
+        if (ts[i] <= t0) {
+            x.push_back(ts[i]);
+            y.push_back(1 / std::sqrt(kk[i]) - 1);
+        }
+    double c1 = NAN, cov = 0, ss = 0;
+    if (x.size() >= 2) gsl_fit_mul(x.data(), 1, y.data(), 1, x.size(), &c1, &cov, &ss);
+    res.scalar("t0_fit_over_kinetic", c1 * t0, "1", "1/t0 fitted to K(t) over t <= t0 (Eq. 18) over the kinetic-theory value");
+    // Steepest local slope d ln K / d ln t (over one octave) before late_slope_from: Eq. (18)
+    // tends to -2 only for t >> t0, while clustering sets in at a few t0.
+    double steepest = 0;
+    for (std::size_t i = std::size_t(m) + 1; i < ts.size() && ts[i] <= late_from; ++i)
+        steepest = std::min(steepest, std::log(kk[i] / kk[i - std::size_t(m)]) / std::log(2.0));
+    res.scalar("K_slope_steepest_early", steepest, "1", "steepest slope of log K against log t over one octave, t <= late_slope_from");
+    const PowerLawFit late = fit_power_law(ts, kk, late_from, ts.back());
+    res.scalar("K_slope_late", late.exponent, "1", "average slope of log K against log t from late_slope_from to the end (GSL fit)");
+    res.scalar("K_slope_late_err", late.exponent_err, "1", "its standard error (residual scatter of the 13-per-decade samples)");
+    res.scalar("K_over_eq18_end", kk.back() / theory::haff_energy_ratio(ts.back(), t0), "1", "K over Eq. (18) at the end: how much slower than homogeneous cooling");
+}
 
-    // ---- Fig. 12: every instant -----------------------------------------------------------------
-    {
-        Table& t = res.table("instants", "per instant t = t_base 2^k: C/N, N_c statistics and the fits of Eqs. (20)-(22)");
-        auto col = [&](const char* name, const char* unit, auto get) {
-            auto& c = t.add(name, unit);
-            for (const auto& in : instants) c.values.push_back(get(in));
+// The TC-elastic share three ways (see the top of this file), for t <= elastic_until and over
+// the whole run, of one run with pair rule `rule`.
+void report_elastic_shares(Result& res, const LoopState& ls, const std::string& tag, const char* rule, double until) {
+    double coll = 0, coll_all = 0, own = 0, hot_max = 0, hot_sum = 0;
+    int hot_n = 0;
+    for (std::size_t i = 1; i < ls.ts.size(); ++i) {
+        if (!(ls.cns[i] > 0)) continue;
+        coll_all = std::max(coll_all, ls.ecns[i] / ls.cns[i]);
+        if (ls.ts[i] > until) continue;
+        coll = std::max(coll, ls.ecns[i] / ls.cns[i]);
+        own = std::max(own, ls.fast_share[i]);
+        hot_max = std::max(hot_max, ls.hot[i]);
+        hot_sum += ls.hot[i];
+        ++hot_n;
+    }
+    const std::string r = std::string(" (") + rule + " rule)";
+    res.scalar("elastic_fraction_early_max" + tag, coll, "1", "largest TC-elastic share of all pair collisions, cumulative, for t <= elastic_until" + r);
+    res.scalar("elastic_fraction_max" + tag, coll_all, "1", "largest TC-elastic share of all pair collisions over the run" + r);
+    res.scalar("own_interval_share_early_max" + tag, own, "1",
+               "largest cumulative share of particle-collisions within t_c of that particle's previous one, t <= elastic_until" + r);
+    res.scalar("hot_particles_early_max" + tag, hot_max, "1",
+               "largest fraction of particles whose latest collision came within t_c of the previous one, samples t <= elastic_until" + r);
+    res.scalar("hot_particles_early_mean" + tag, hot_n ? hot_sum / hot_n : NAN, "1", "its mean over those (log-spaced) samples" + r);
+    auto at = [&](double tq, const std::vector<double>& v) -> double {
+        for (std::size_t i = 0; i < ls.ts.size(); ++i)
+            if (std::abs(ls.ts[i] / tq - 1) < 1e-9) return v[i];
+        return NAN;
+    };
+    for (const char* when : {"0.04", "0.64", "10.24"}) {
+        const double tq = std::stod(when);
+        res.scalar(std::string("C_over_N_at_") + when + "s" + tag, at(tq, ls.cns), "1",
+                   std::string("C/N = (sum of per-particle counts)/N = 2 pair collisions/N at t = ") + when + " s" + r);
+        res.scalar(std::string("pairs_over_N_at_") + when + "s" + tag, 0.5 * at(tq, ls.cns), "1",
+                   std::string("pair collisions/N (each collision counted once) at t = ") + when + " s" + r);
+    }
+}
+
+void fig10(Result& res, const ClusterSpec& s, double t0, const LoopState& st, const LoopState* other) {
+    const std::vector<double> kk = fig10_table(res, st, t0, s.late_slope_from);
+    fig10_slopes(res, st.ts, kk, t0, s.samples_per_octave, s.late_slope_from);
+    // The main pair rule and, with tc_compare_until, the other one.
+    report_elastic_shares(res, st, "", s.tc_both ? "both" : "either", s.elastic_until);
+    if (other) report_elastic_shares(res, *other, s.tc_both ? "_either" : "_both", s.tc_both ? "either" : "both", s.elastic_until);
+    res.scalar("elastic_per_particle_end", st.ecns.back(), "1", "TC-elastic collisions per particle at the end");
+    res.scalar("C_over_N_eq18_at_0.64s", 4 / (1 - s.r * s.r) * std::log(1 + 0.64 / t0), "1",
+               "C/N at 0.64 s if the gas stayed homogeneous: 4/(1-r^2) ln(1 + t/t0)");
+}
+
+// Fig. 12, every instant: C/N, N_c statistics and the fits of Eqs. (20)-(22).
+void fig12_instants_table(Result& res, const std::vector<Instant>& instants) {
+    Table& t = res.table("instants", "per instant t = t_base 2^k: C/N, N_c statistics and the fits of Eqs. (20)-(22)");
+    auto col = [&](const char* name, const char* unit, auto get) {
+        auto& c = t.add(name, unit);
+        for (const auto& in : instants) c.values.push_back(get(in));
+    };
+    col("t", "s", [](const Instant& in) { return in.t; });
+    col("window", "s", [](const Instant& in) { return in.window; });
+    col("C_over_N", "1", [](const Instant& in) { return in.cn; });
+    col("elastic_C_over_N", "1", [](const Instant& in) { return in.elastic_cn; });
+    col("mean_Nc", "1/s", [](const Instant& in) { return in.mean_rate; });
+    col("sd_Nc", "1/s", [](const Instant& in) { return in.sd_rate; });
+    col("fast_particles", "1", [](const Instant& in) { return in.fast_fraction; });
+    col("tail_fraction", "1", [](const Instant& in) { return in.tail_fraction; });
+    col("chi", "1", [](const Instant& in) { return in.poisson.value; });
+    col("chi_err", "1", [](const Instant& in) { return in.poisson.error; });
+    col("chi2red_poisson", "1", [](const Instant& in) { return in.poisson.chi2_reduced; });
+    col("A", "1/s", [](const Instant& in) { return in.expo.value; });
+    col("A_err", "1/s", [](const Instant& in) { return in.expo.error; });
+    col("chi2red_exponential", "1", [](const Instant& in) { return in.expo.chi2_reduced; });
+    col("B", "1/s", [](const Instant& in) { return in.power.value; });
+    col("B_err", "1/s", [](const Instant& in) { return in.power.error; });
+    col("chi2red_powerlaw", "1", [](const Instant& in) { return in.power.chi2_reduced; });
+    col("tail_from", "1/s", [](const Instant& in) { return in.tail_lo; });
+    col("B_tail", "1/s", [](const Instant& in) { return in.power_tail.value; });
+    col("B_tail_err", "1/s", [](const Instant& in) { return in.power_tail.error; });
+    col("chi2red_powerlaw_tail", "1", [](const Instant& in) { return in.power_tail.chi2_reduced; });
+    col("A_tail", "1/s", [](const Instant& in) { return in.expo_tail.value; });
+    col("chi2red_exponential_tail", "1", [](const Instant& in) { return in.expo_tail.chi2_reduced; });
+    col("bins", "1", [](const Instant& in) { return double(in.hist.centres.size()); });
+}
+
+// Sec. 4.3: "a Poisson distribution whose mean and width chi/Dt continuously decrease with time
+// for C/N <= 39": the share of the consecutive instants with C/N <= 39 over which both the mean
+// and the standard deviation of N_c fall.
+void report_poisson_falling(Result& res, const std::vector<Instant>& instants, double until_cn) {
+    int pairs = 0, falling = 0;
+    for (std::size_t k = 1; k < instants.size(); ++k)
+        if (instants[k].cn <= until_cn) {
+            ++pairs;
+            if (instants[k].mean_rate < instants[k - 1].mean_rate && instants[k].sd_rate < instants[k - 1].sd_rate) ++falling;
+        }
+    res.scalar("poisson_mean_width_falling_share", pairs ? double(falling) / pairs : NAN, "1",
+               "share of consecutive instants with C/N <= poisson_until_cn where mean and standard deviation of N_c both fall");
+    res.scalar("poisson_mean_width_pairs", double(pairs), "1", "number of such pairs of instants");
+}
+
+// P(N_c) at one instant with the fitted Eqs. (20)-(22), as Fig. 12 shows it.
+void fig12_histogram_table(Result& res, const Instant& in, std::size_t panel) {
+    Table& h = res.table("pnc_" + std::to_string(panel), "P(N_c) and the fitted Eqs. (20)-(22) at t = " + label("", in.t) + " s");
+    std::vector<double> pp, pe, pw, pwt, pet;
+    for (std::size_t b = 0; b < in.hist.centres.size(); ++b) {
+        const double w = in.hist.edges[b + 1] - std::max(0.0, in.hist.edges[b]);
+        auto model = [&](const CollisionRateFit& f) {
+            return std::isfinite(f.value) ? CollisionRateFit::bin_probability(in.hist, b, f.model, f.value) / w : NAN;
         };
-        col("t", "s", [](const Instant& in) { return in.t; });
-        col("window", "s", [](const Instant& in) { return in.window; });
-        col("C_over_N", "1", [](const Instant& in) { return in.cn; });
-        col("elastic_C_over_N", "1", [](const Instant& in) { return in.elastic_cn; });
-        col("mean_Nc", "1/s", [](const Instant& in) { return in.mean_rate; });
-        col("sd_Nc", "1/s", [](const Instant& in) { return in.sd_rate; });
-        col("fast_particles", "1", [](const Instant& in) { return in.fast_fraction; });
-        col("tail_fraction", "1", [](const Instant& in) { return in.tail_fraction; });
-        col("chi", "1", [](const Instant& in) { return in.poisson.value; });
-        col("chi_err", "1", [](const Instant& in) { return in.poisson.error; });
-        col("chi2red_poisson", "1", [](const Instant& in) { return in.poisson.chi2_reduced; });
-        col("A", "1/s", [](const Instant& in) { return in.expo.value; });
-        col("A_err", "1/s", [](const Instant& in) { return in.expo.error; });
-        col("chi2red_exponential", "1", [](const Instant& in) { return in.expo.chi2_reduced; });
-        col("B", "1/s", [](const Instant& in) { return in.power.value; });
-        col("B_err", "1/s", [](const Instant& in) { return in.power.error; });
-        col("chi2red_powerlaw", "1", [](const Instant& in) { return in.power.chi2_reduced; });
-        col("tail_from", "1/s", [](const Instant& in) { return in.tail_lo; });
-        col("B_tail", "1/s", [](const Instant& in) { return in.power_tail.value; });
-        col("B_tail_err", "1/s", [](const Instant& in) { return in.power_tail.error; });
-        col("chi2red_powerlaw_tail", "1", [](const Instant& in) { return in.power_tail.chi2_reduced; });
-        col("A_tail", "1/s", [](const Instant& in) { return in.expo_tail.value; });
-        col("chi2red_exponential_tail", "1", [](const Instant& in) { return in.expo_tail.chi2_reduced; });
-        col("bins", "1", [](const Instant& in) { return double(in.hist.centres.size()); });
+        pp.push_back(model(in.poisson));
+        pe.push_back(model(in.expo));
+        pw.push_back(model(in.power));
+        // The tail fits only over the bins they were fitted to.
+        const bool tail = in.hist.edges[b] >= in.tail_lo;
+        pwt.push_back(tail ? model(in.power_tail) : NAN);
+        pet.push_back(tail ? model(in.expo_tail) : NAN);
     }
-    // Sec. 4.3: "a Poisson distribution whose mean and width chi/Dt continuously decrease with time
-    // for C/N <= 39": the share of the consecutive instants with C/N <= 39 over which both the mean
-    // and the standard deviation of N_c fall.
-    {
-        int pairs = 0, falling = 0;
-        for (std::size_t k = 1; k < instants.size(); ++k)
-            if (instants[k].cn <= p.real("poisson_until_cn")) {
-                ++pairs;
-                if (instants[k].mean_rate < instants[k - 1].mean_rate && instants[k].sd_rate < instants[k - 1].sd_rate) ++falling;
-            }
-        res.scalar("poisson_mean_width_falling_share", pairs ? double(falling) / pairs : NAN, "1",
-                   "share of consecutive instants with C/N <= poisson_until_cn where mean and standard deviation of N_c both fall");
-        res.scalar("poisson_mean_width_pairs", double(pairs), "1", "number of such pairs of instants");
+    h.add("N_c", "1/s").values = in.hist.centres;
+    h.add("P", "s").values = in.hist.density;
+    h.add("P_err", "s").values = in.hist.error;
+    h.add("poisson_eq20", "s").values = pp;
+    h.add("exponential_eq21", "s").values = pe;
+    h.add("powerlaw_eq22", "s").values = pw;
+    h.add("powerlaw_eq22_tail", "s").values = pwt;
+    h.add("exponential_eq21_tail", "s").values = pet;
+}
+
+void fig12_panel_scalars(Result& res, const Instant& in, const std::string& tag) {
+    res.scalar("cn_nearest" + tag, in.cn, "1", "our C/N at the instant nearest to the paper's");
+    res.scalar("t_nearest" + tag, in.t, "s", "its time");
+    res.scalar("chi" + tag, in.poisson.value, "1", "Poisson Eq. (20) chi (mean count in Δt = t/2)");
+    res.scalar("chi_err" + tag, in.poisson.error, "1", "its standard error (Cramer-Rao)");
+    res.scalar("chi_since_start" + tag, in.poisson_full.value, "1", "Eq. (20) chi for the counts over (0, t] (window t, not t/2)");
+    res.scalar("chi_since_start_err" + tag, in.poisson_full.error, "1", "its standard error");
+    res.scalar("chi_rate" + tag, in.poisson.value / in.window, "1/s", "chi / Δt, the Poisson mean rate");
+    res.scalar("chi2red_poisson" + tag, in.poisson.chi2_reduced, "1", "Pearson chi^2/dof of the Poisson fit");
+    res.scalar("A" + tag, in.expo.value, "1/s", "exponential Eq. (21) A");
+    res.scalar("A_err" + tag, in.expo.error, "1/s", "its standard error");
+    res.scalar("chi2red_exponential" + tag, in.expo.chi2_reduced, "1", "Pearson chi^2/dof of the exponential fit");
+    res.scalar("B" + tag, in.power.value, "1/s", "power law Eq. (22) B");
+    res.scalar("B_tail" + tag, in.power_tail.value, "1/s", "Eq. (22) B fitted to the tail N_c >= tail_fit_from x mean N_c");
+    res.scalar("B_tail_err" + tag, in.power_tail.error, "1/s", "its standard error");
+    res.scalar("powerlaw_over_exponential_chi2_tail" + tag, in.power_tail.chi2_reduced / in.expo_tail.chi2_reduced, "1",
+               "chi^2/dof of Eq. (22) over that of Eq. (21), both fitted to the tail only (< 1: power law better there)");
+    res.scalar("B_err" + tag, in.power.error, "1/s", "its standard error");
+    res.scalar("chi2red_powerlaw" + tag, in.power.chi2_reduced, "1", "Pearson chi^2/dof of the power-law fit");
+    res.scalar("mean_Nc" + tag, in.mean_rate, "1/s", "mean N_c");
+    res.scalar("tail_fraction" + tag, in.tail_fraction, "1", "fraction of particles with N_c > tail_rate");
+    res.scalar("poisson_over_best_other_chi2" + tag, in.poisson.chi2_reduced / std::min(in.expo.chi2_reduced, in.power.chi2_reduced), "1",
+               "chi^2/dof of Eq. (20) over the better of Eqs. (21), (22) (< 1: Poisson fits best)");
+    res.scalar("powerlaw_over_exponential_chi2" + tag, in.power.chi2_reduced / in.expo.chi2_reduced, "1",
+               "chi^2/dof of Eq. (22) over that of Eq. (21) (< 1: the power law fits better)");
+}
+
+// The instants nearest to the paper's C/N values, and the last: histogram tables and scalars for the claims.
+void fig12_panels(Result& res, const std::vector<Instant>& instants, const std::vector<double>& pcn) {
+    std::vector<int> sel;
+    for (double c : pcn) sel.push_back(nearest(instants, c));
+    sel.push_back(instants.empty() ? -1 : int(instants.size()) - 1); // the last, beyond 2567
+    std::vector<double> mp, mc, mt, mw;
+    for (std::size_t s = 0; s < sel.size(); ++s) {
+        const double paper = s < pcn.size() ? pcn[s] : NAN;
+        mp.push_back(paper);
+        if (sel[s] < 0) {
+            mc.push_back(NAN); mt.push_back(NAN); mw.push_back(NAN);
+            continue;
+        }
+        const Instant& in = instants[std::size_t(sel[s])];
+        mc.push_back(in.cn);
+        mt.push_back(in.t);
+        mw.push_back(in.window);
+        fig12_histogram_table(res, in, s);
+        fig12_panel_scalars(res, in, s < pcn.size() ? label("_cn", paper) : std::string("_last"));
     }
-    // The instants nearest to the paper's C/N values: histogram tables and scalars for the claims.
-    {
-        const auto& pcn = p.reals("paper_cn");
-        std::vector<int> sel;
-        for (double c : pcn) sel.push_back(nearest(instants, c));
-        sel.push_back(instants.empty() ? -1 : int(instants.size()) - 1); // the last, beyond 2567
-        std::vector<double> mp, mc, mt, mw;
-        for (std::size_t s = 0; s < sel.size(); ++s) {
-            const double paper = s < pcn.size() ? pcn[s] : NAN;
-            mp.push_back(paper);
-            if (sel[s] < 0) {
-                mc.push_back(NAN); mt.push_back(NAN); mw.push_back(NAN);
-                continue;
-            }
-            const Instant& in = instants[std::size_t(sel[s])];
-            mc.push_back(in.cn);
-            mt.push_back(in.t);
-            mw.push_back(in.window);
-            Table& h = res.table("pnc_" + std::to_string(s), "P(N_c) and the fitted Eqs. (20)-(22) at t = " + label("", in.t) + " s");
-            std::vector<double> pp, pe, pw, pwt, pet;
-            for (std::size_t b = 0; b < in.hist.centres.size(); ++b) {
-                const double w = in.hist.edges[b + 1] - std::max(0.0, in.hist.edges[b]);
-                auto model = [&](const CollisionRateFit& f) {
-                    return std::isfinite(f.value) ? CollisionRateFit::bin_probability(in.hist, b, f.model, f.value) / w : NAN;
-                };
-                pp.push_back(model(in.poisson));
-                pe.push_back(model(in.expo));
-                pw.push_back(model(in.power));
-                // The tail fits only over the bins they were fitted to.
-                const bool tail = in.hist.edges[b] >= in.tail_lo;
-                pwt.push_back(tail ? model(in.power_tail) : NAN);
-                pet.push_back(tail ? model(in.expo_tail) : NAN);
-            }
-            h.add("N_c", "1/s").values = in.hist.centres;
-            h.add("P", "s").values = in.hist.density;
-            h.add("P_err", "s").values = in.hist.error;
-            h.add("poisson_eq20", "s").values = pp;
-            h.add("exponential_eq21", "s").values = pe;
-            h.add("powerlaw_eq22", "s").values = pw;
-            h.add("powerlaw_eq22_tail", "s").values = pwt;
-            h.add("exponential_eq21_tail", "s").values = pet;
-            const std::string tag = s < pcn.size() ? label("_cn", paper) : std::string("_last");
-            res.scalar("cn_nearest" + tag, in.cn, "1", "our C/N at the instant nearest to the paper's");
-            res.scalar("t_nearest" + tag, in.t, "s", "its time");
-            res.scalar("chi" + tag, in.poisson.value, "1", "Poisson Eq. (20) chi (mean count in Δt = t/2)");
-            res.scalar("chi_err" + tag, in.poisson.error, "1", "its standard error (Cramer-Rao)");
-            res.scalar("chi_since_start" + tag, in.poisson_full.value, "1", "Eq. (20) chi for the counts over (0, t] (window t, not t/2)");
-            res.scalar("chi_since_start_err" + tag, in.poisson_full.error, "1", "its standard error");
-            res.scalar("chi_rate" + tag, in.poisson.value / in.window, "1/s", "chi / Δt, the Poisson mean rate");
-            res.scalar("chi2red_poisson" + tag, in.poisson.chi2_reduced, "1", "Pearson chi^2/dof of the Poisson fit");
-            res.scalar("A" + tag, in.expo.value, "1/s", "exponential Eq. (21) A");
-            res.scalar("A_err" + tag, in.expo.error, "1/s", "its standard error");
-            res.scalar("chi2red_exponential" + tag, in.expo.chi2_reduced, "1", "Pearson chi^2/dof of the exponential fit");
-            res.scalar("B" + tag, in.power.value, "1/s", "power law Eq. (22) B");
-            res.scalar("B_tail" + tag, in.power_tail.value, "1/s", "Eq. (22) B fitted to the tail N_c >= tail_fit_from x mean N_c");
-            res.scalar("B_tail_err" + tag, in.power_tail.error, "1/s", "its standard error");
-            res.scalar("powerlaw_over_exponential_chi2_tail" + tag, in.power_tail.chi2_reduced / in.expo_tail.chi2_reduced, "1",
-                       "chi^2/dof of Eq. (22) over that of Eq. (21), both fitted to the tail only (< 1: power law better there)");
-            res.scalar("B_err" + tag, in.power.error, "1/s", "its standard error");
-            res.scalar("chi2red_powerlaw" + tag, in.power.chi2_reduced, "1", "Pearson chi^2/dof of the power-law fit");
-            res.scalar("mean_Nc" + tag, in.mean_rate, "1/s", "mean N_c");
-            res.scalar("tail_fraction" + tag, in.tail_fraction, "1", "fraction of particles with N_c > tail_rate");
-            res.scalar("poisson_over_best_other_chi2" + tag, in.poisson.chi2_reduced / std::min(in.expo.chi2_reduced, in.power.chi2_reduced), "1",
-                       "chi^2/dof of Eq. (20) over the better of Eqs. (21), (22) (< 1: Poisson fits best)");
-            res.scalar("powerlaw_over_exponential_chi2" + tag, in.power.chi2_reduced / in.expo.chi2_reduced, "1",
-                       "chi^2/dof of Eq. (22) over that of Eq. (21) (< 1: the power law fits better)");
+    // Created last: res.table() may move the tables created before.
+    Table& meta = res.table("fig12_selection", "instants shown in Fig. 12: the paper's C/N and ours");
+    meta.add("paper_C_over_N", "1").values = mp;
+    meta.add("C_over_N", "1").values = mc;
+    meta.add("t", "s").values = mt;
+    meta.add("window", "s").values = mw;
+}
+
+// From the first clustered snapshot on (C/N >= 70, Sec. 4.3): the smallest rank of the tenth
+// with the largest mean N_c (10 = the densest at every such snapshot).
+void report_cluster_centres(Result& res, const std::vector<double>& mt, const std::vector<double>& mc,
+                            const std::vector<double>& top, const std::vector<double>& ratio) {
+    double worst = NAN, min_ratio = NAN;
+    for (std::size_t k = 0; k < mt.size(); ++k)
+        if (mc[k] >= 70) {
+            worst = std::isnan(worst) ? top[k] : std::min(worst, top[k]);
+            min_ratio = std::isnan(min_ratio) ? ratio[k] : std::min(min_ratio, ratio[k]);
         }
-        // Created last: res.table() may move the tables created before.
-        Table& meta = res.table("fig12_selection", "instants shown in Fig. 12: the paper's C/N and ours");
-        meta.add("paper_C_over_N", "1").values = mp;
-        meta.add("C_over_N", "1").values = mc;
-        meta.add("t", "s").values = mt;
-        meta.add("window", "s").values = mw;
+    res.scalar("densest_tenth_rank_of_max_Nc", worst, "1",
+               "over the clustered snapshots (C/N >= 70): the lowest density rank (1-10) of the tenth of particles with the largest mean N_c");
+    res.scalar("densest_tenth_Nc_over_mean_min", min_ratio, "1", "the smallest ratio of the densest tenth's mean N_c to the overall mean there");
+    for (std::size_t k = 0; k < mt.size(); ++k) {
+        res.scalar("densest_tenth_Nc_over_mean" + label("_t", mt[k]), ratio[k], "1", "mean N_c of the densest tenth over the overall mean at this snapshot");
+        res.scalar("densest_tenth_rank_of_max_Nc" + label("_t", mt[k]), top[k], "1", "density rank (1-10) of the tenth with the largest mean N_c");
     }
-    // The fitted parameters at exactly the paper's C/N: linear interpolation of ln(parameter)
-    // in ln(C/N) between the two instants around it (consecutive instants differ by a factor 2
-    // in t and by 1.1-2 in C/N, so the nearest instant alone can be far from the paper's C/N).
-    {
-        auto interp = [&](double cn, auto get) {
-            for (std::size_t k = 1; k < instants.size(); ++k)
-                if (instants[k - 1].cn <= cn && instants[k].cn >= cn) {
-                    const double f = std::log(cn / instants[k - 1].cn) / std::log(instants[k].cn / instants[k - 1].cn);
-                    return std::exp(std::log(get(instants[k - 1])) * (1 - f) + std::log(get(instants[k])) * f);
-                }
-            return double(NAN);
-        };
-        for (double c : p.reals("paper_cn")) {
-            const std::string tag = label("_at_cn", c);
-            res.scalar("chi" + tag, interp(c, [](const Instant& in) { return in.poisson.value; }), "1", "Eq. (20) chi interpolated to the paper's C/N");
-            res.scalar("A" + tag, interp(c, [](const Instant& in) { return in.expo.value; }), "1/s", "Eq. (21) A interpolated to the paper's C/N");
-            res.scalar("B" + tag, interp(c, [](const Instant& in) { return in.power.value; }), "1/s", "Eq. (22) B interpolated to the paper's C/N");
-            res.scalar("t" + tag, interp(c, [](const Instant& in) { return in.t; }), "s", "time at which C/N reached the paper's value (interpolated)");
+}
+
+// The fitted parameters at exactly the paper's C/N: linear interpolation of ln(parameter) in
+// ln(C/N) between the two instants around it (consecutive instants differ by a factor 2 in t and
+// by 1.1-2 in C/N, so the nearest instant alone can be far from the paper's C/N).
+template <class Get>
+double at_cn(const std::vector<Instant>& instants, double cn, Get get) {
+    for (std::size_t k = 1; k < instants.size(); ++k)
+        if (instants[k - 1].cn <= cn && instants[k].cn >= cn) {
+            const double f = std::log(cn / instants[k - 1].cn) / std::log(instants[k].cn / instants[k - 1].cn);
+            return std::exp(std::log(get(instants[k - 1])) * (1 - f) + std::log(get(instants[k])) * f);
         }
-        // B over the clustered instants 70 <= C/N <= 1404 (the paper quotes one B for them).
-        double lsum = 0;
-        int cnt = 0;
-        double bmin = INFINITY, bmax = -INFINITY;
-        for (const auto& in : instants)
-            if (in.cn >= 70 && in.cn <= 1404 && std::isfinite(in.power.value)) {
-                lsum += std::log(in.power.value);
-                ++cnt;
-                bmin = std::min(bmin, in.power.value);
-                bmax = std::max(bmax, in.power.value);
-            }
-        res.scalar("B_geomean_70_1404", cnt ? std::exp(lsum / cnt) : NAN, "1/s", "geometric mean of B over the instants with 70 <= C/N <= 1404");
-        res.scalar("B_min_70_1404", cnt ? bmin : NAN, "1/s", "smallest B there");
-        {
-            double ls = 0;
-            int c = 0, better = 0;
-            for (const auto& in : instants)
-                if (in.cn >= 70 && in.cn <= 1404 && std::isfinite(in.power_tail.value)) {
-                    ls += std::log(in.power_tail.value);
-                    ++c;
-                    if (in.power_tail.chi2_reduced < in.expo_tail.chi2_reduced) ++better;
-                }
-            res.scalar("B_tail_geomean_70_1404", c ? std::exp(ls / c) : NAN, "1/s",
-                       "geometric mean of the tail-fitted B over the instants with 70 <= C/N <= 1404");
-            res.scalar("powerlaw_better_tail_share_70_1404", c ? double(better) / c : NAN, "1",
-                       "share of those instants where Eq. (22) fits the tail better than Eq. (21)");
+    return double(NAN);
+}
+
+void report_at_paper_cn(Result& res, const std::vector<Instant>& instants, const std::vector<double>& paper_cn) {
+    for (double c : paper_cn) {
+        const std::string tag = label("_at_cn", c);
+        res.scalar("chi" + tag, at_cn(instants, c, [](const Instant& in) { return in.poisson.value; }), "1", "Eq. (20) chi interpolated to the paper's C/N");
+        res.scalar("A" + tag, at_cn(instants, c, [](const Instant& in) { return in.expo.value; }), "1/s", "Eq. (21) A interpolated to the paper's C/N");
+        res.scalar("B" + tag, at_cn(instants, c, [](const Instant& in) { return in.power.value; }), "1/s", "Eq. (22) B interpolated to the paper's C/N");
+        res.scalar("t" + tag, at_cn(instants, c, [](const Instant& in) { return in.t; }), "s", "time at which C/N reached the paper's value (interpolated)");
+    }
+}
+
+// B over the clustered instants 70 <= C/N <= 1404 (the paper quotes one B for them).
+void report_clustered_B(Result& res, const std::vector<Instant>& instants) {
+    double lsum = 0, ls = 0, bmin = INFINITY, bmax = -INFINITY;
+    int cnt = 0, c = 0, better = 0;
+    for (const auto& in : instants) {
+        if (!(in.cn >= 70 && in.cn <= 1404)) continue;
+        if (std::isfinite(in.power.value)) {
+            lsum += std::log(in.power.value);
+            ++cnt;
+            bmin = std::min(bmin, in.power.value);
+            bmax = std::max(bmax, in.power.value);
         }
-        res.scalar("B_max_70_1404", cnt ? bmax : NAN, "1/s", "largest B there");
-        // From which C/N on the power law fits better than the exponential at every later instant.
-        double from = NAN;
-        for (std::size_t k = instants.size(); k-- > 0;) {
-            if (!(instants[k].power.chi2_reduced < instants[k].expo.chi2_reduced)) break;
-            from = instants[k].cn;
+        if (std::isfinite(in.power_tail.value)) { // the tail fit
+            ls += std::log(in.power_tail.value);
+            ++c;
+            if (in.power_tail.chi2_reduced < in.expo_tail.chi2_reduced) ++better;
         }
-        res.scalar("powerlaw_better_from_cn", from, "1", "smallest C/N from which on Eq. (22) fits better than Eq. (21) at every instant");
-        const int k1 = nearest(instants, 1404.0), k2 = nearest(instants, 2567.0), k0 = nearest(instants, 183.0);
-        if (k0 >= 0 && k1 >= 0 && k2 >= 0) {
-            res.scalar("B_ratio_1404_over_183", instants[std::size_t(k1)].power.value / instants[std::size_t(k0)].power.value, "1",
-                       "B at the instant nearest C/N = 1404 over B nearest 183 (shape change)");
-            res.scalar("tail_ratio_2567_over_1404", instants[std::size_t(k2)].tail_fraction / instants[std::size_t(k1)].tail_fraction, "1",
-                       "P(N_c > tail_rate) nearest C/N = 2567 over that nearest 1404 (< 1: the tail drops again)");
-            res.scalar("tail_ratio_last_over_1404", instants.back().tail_fraction / instants[std::size_t(k1)].tail_fraction, "1",
-                       "P(N_c > tail_rate) at the last instant over that nearest C/N = 1404");
-        }
+    }
+    res.scalar("B_geomean_70_1404", cnt ? std::exp(lsum / cnt) : NAN, "1/s", "geometric mean of B over the instants with 70 <= C/N <= 1404");
+    res.scalar("B_min_70_1404", cnt ? bmin : NAN, "1/s", "smallest B there");
+    res.scalar("B_tail_geomean_70_1404", c ? std::exp(ls / c) : NAN, "1/s",
+               "geometric mean of the tail-fitted B over the instants with 70 <= C/N <= 1404");
+    res.scalar("powerlaw_better_tail_share_70_1404", c ? double(better) / c : NAN, "1",
+               "share of those instants where Eq. (22) fits the tail better than Eq. (21)");
+    res.scalar("B_max_70_1404", cnt ? bmax : NAN, "1/s", "largest B there");
+}
+
+// Where the power law Eq. (22) takes over from the exponential Eq. (21), and how the shape
+// changes after (Section 4.3).
+void report_powerlaw_onset(Result& res, const std::vector<Instant>& instants) {
+    // From which C/N on the power law fits better than the exponential at every later instant.
+    double from = NAN;
+    for (std::size_t k = instants.size(); k-- > 0;) {
+        if (!(instants[k].power.chi2_reduced < instants[k].expo.chi2_reduced)) break;
+        from = instants[k].cn;
+    }
+    res.scalar("powerlaw_better_from_cn", from, "1", "smallest C/N from which on Eq. (22) fits better than Eq. (21) at every instant");
+    const int k1 = nearest(instants, 1404.0), k2 = nearest(instants, 2567.0), k0 = nearest(instants, 183.0);
+    if (k0 >= 0 && k1 >= 0 && k2 >= 0) {
+        res.scalar("B_ratio_1404_over_183", instants[std::size_t(k1)].power.value / instants[std::size_t(k0)].power.value, "1",
+                   "B at the instant nearest C/N = 1404 over B nearest 183 (shape change)");
+        res.scalar("tail_ratio_2567_over_1404", instants[std::size_t(k2)].tail_fraction / instants[std::size_t(k1)].tail_fraction, "1",
+                   "P(N_c > tail_rate) nearest C/N = 2567 over that nearest 1404 (< 1: the tail drops again)");
+        res.scalar("tail_ratio_last_over_1404", instants.back().tail_fraction / instants[std::size_t(k1)].tail_fraction, "1",
+                   "P(N_c > tail_rate) at the last instant over that nearest C/N = 1404");
     }
     // Which form fits best over the instants after C/N = 70 (Section 4.3: power law).
-    {
-        double n_after = 0, pow_best = 0;
-        for (const auto& in : instants)
-            if (in.cn > 70 && std::isfinite(in.power.chi2_reduced) && std::isfinite(in.expo.chi2_reduced)) {
-                ++n_after;
-                if (in.power.chi2_reduced < in.expo.chi2_reduced) ++pow_best;
-            }
-        res.scalar("powerlaw_better_share_after_70", n_after > 0 ? pow_best / n_after : NAN, "1",
-                   "share of the instants with C/N > 70 where Eq. (22) fits better than Eq. (21)");
-    }
+    double n_after = 0, pow_best = 0;
+    for (const auto& in : instants)
+        if (in.cn > 70 && std::isfinite(in.power.chi2_reduced) && std::isfinite(in.expo.chi2_reduced)) {
+            ++n_after;
+            if (in.power.chi2_reduced < in.expo.chi2_reduced) ++pow_best;
+        }
+    res.scalar("powerlaw_better_share_after_70", n_after > 0 ? pow_best / n_after : NAN, "1",
+               "share of the instants with C/N > 70 where Eq. (22) fits better than Eq. (21)");
+}
 
-    // ---- Fig. 11: snapshots at the paper's times ---------------------------------------------------
-    {
-        std::vector<double> mt, mc;
-        std::vector<const Instant*> shown;
-        for (double tq : p.reals("snapshot_times"))
-            for (const auto& in : instants)
-                if (std::abs(in.t / tq - 1) < 1e-9) shown.push_back(&in);
-        // One colour range for all panels: from the smallest positive N_c to the largest.
-        double lo = INFINITY, hi = 0;
-        for (const Instant* in : shown)
-            for (double v : in->rate)
-                if (v > 0) {
-                    lo = std::min(lo, v);
-                    hi = std::max(hi, v);
-                }
-        for (const Instant* in : shown) {
-            mt.push_back(in->t);
-            mc.push_back(in->cn);
-            Table& sn = res.table("snapshot_" + std::to_string(mt.size() - 1),
-                                  "positions and N_c over the last t/2 at t = " + label("", in->t) + " s");
-            std::vector<double> x, y;
-            for (const Vec2& q : in->pos) {
-                x.push_back(q.x / d);
-                y.push_back(q.y / d);
+// Fig. 11: positions coloured by N_c at the paper's times, one colour range for all panels.
+// Sec. 4.2: "in the bright regions in the centers of the clusters the collision frequency is
+// largest". Particles ranked by the number of disks around them (cells of cluster_cell
+// diameters, 3 x 3 block); mean N_c per tenth, densest tenth last. The claim looks at which
+// tenth has the largest mean N_c.
+void fig11(Result& res, const std::vector<Instant>& instants, const ClusterSpec& s) {
+    std::vector<const Instant*> shown;
+    for (double tq : s.snapshot_times)
+        for (const auto& in : instants)
+            if (std::abs(in.t / tq - 1) < 1e-9) shown.push_back(&in);
+    double lo = INFINITY, hi = 0; // from the smallest positive N_c to the largest
+    for (const Instant* in : shown)
+        for (double v : in->rate)
+            if (v > 0) {
+                lo = std::min(lo, v);
+                hi = std::max(hi, v);
             }
-            sn.add("x_over_d", "1").values = std::move(x);
-            sn.add("y_over_d", "1").values = std::move(y);
-            sn.add("N_c", "1/s").values = in->rate;
+    std::vector<double> mt, mc, top, ratio;
+    for (const Instant* in : shown) {
+        mt.push_back(in->t);
+        mc.push_back(in->cn);
+        Table& sn = res.table("snapshot_" + std::to_string(mt.size() - 1),
+                              "positions and N_c over the last t/2 at t = " + label("", in->t) + " s");
+        std::vector<double> x, y;
+        for (const Vec2& q : in->pos) {
+            x.push_back(q.x / s.d);
+            y.push_back(q.y / s.d);
         }
-        // Sec. 4.2: "in the bright regions in the centers of the clusters the collision frequency is
-        // largest". Particles ranked by the number of disks around them (cells of cluster_cell
-        // diameters, 3 x 3 block); mean N_c per tenth, densest tenth last. The claim looks at
-        // which tenth has the largest mean N_c.
-        const int groups = 10;
-        std::vector<double> top, ratio;
-        for (const Instant* in : shown) {
-            const auto g = rate_by_density(*in, L, p.real("cluster_cell") * d, groups);
-            top.push_back(double(std::max_element(g.begin(), g.end()) - g.begin() + 1));
-            ratio.push_back(g.back() / in->mean_rate);
-        }
-        {
-            Table& meta = res.table("fig11_selection", "instants of the snapshots, the common colour range, and N_c in the densest tenth");
-            meta.add("t", "s").values = mt;
-            meta.add("C_over_N", "1").values = mc;
-            meta.add("Nc_colour_lo", "1/s").values = std::vector<double>(mt.size(), lo);
-            meta.add("Nc_colour_hi", "1/s").values = std::vector<double>(mt.size(), hi);
-            meta.add("densest_tenth_with_max_Nc", "1").values = top;
-            meta.add("densest_tenth_Nc_over_mean", "1").values = ratio;
-        }
-        // From the first clustered snapshot on (C/N >= 70, Sec. 4.3): the smallest rank of the
-        // tenth with the largest mean N_c (10 = the densest at every such snapshot).
-        double worst = NAN, min_ratio = NAN;
-        for (std::size_t k = 0; k < shown.size(); ++k)
-            if (mc[k] >= 70) {
-                worst = std::isnan(worst) ? top[k] : std::min(worst, top[k]);
-                min_ratio = std::isnan(min_ratio) ? ratio[k] : std::min(min_ratio, ratio[k]);
-            }
-        res.scalar("densest_tenth_rank_of_max_Nc", worst, "1",
-                   "over the clustered snapshots (C/N >= 70): the lowest density rank (1-10) of the tenth of particles with the largest mean N_c");
-        res.scalar("densest_tenth_Nc_over_mean_min", min_ratio, "1", "the smallest ratio of the densest tenth's mean N_c to the overall mean there");
-        for (std::size_t k = 0; k < shown.size(); ++k) {
-            res.scalar("densest_tenth_Nc_over_mean" + label("_t", mt[k]), ratio[k], "1", "mean N_c of the densest tenth over the overall mean at this snapshot");
-            res.scalar("densest_tenth_rank_of_max_Nc" + label("_t", mt[k]), top[k], "1", "density rank (1-10) of the tenth with the largest mean N_c");
-        }
+        sn.add("x_over_d", "1").values = std::move(x);
+        sn.add("y_over_d", "1").values = std::move(y);
+        sn.add("N_c", "1/s").values = in->rate;
+        const auto g = rate_by_density(*in, s.L(), s.cluster_cell * s.d, 10);
+        top.push_back(double(std::max_element(g.begin(), g.end()) - g.begin() + 1));
+        ratio.push_back(g.back() / in->mean_rate);
     }
+    Table& meta = res.table("fig11_selection", "instants of the snapshots, the common colour range, and N_c in the densest tenth");
+    meta.add("t", "s").values = mt;
+    meta.add("C_over_N", "1").values = mc;
+    meta.add("Nc_colour_lo", "1/s").values = std::vector<double>(mt.size(), lo);
+    meta.add("Nc_colour_hi", "1/s").values = std::vector<double>(mt.size(), hi);
+    meta.add("densest_tenth_with_max_Nc", "1").values = top;
+    meta.add("densest_tenth_Nc_over_mean", "1").values = ratio;
+    report_cluster_centres(res, mt, mc, top, ratio);
+}
+
+Result run(const RunContext& ctx) {
+    const auto s = read_spec<ClusterSpec>(ctx.params);
+    // The main run (pair rule tc_both) to cn_end and, beside it, the other pair rule up to
+    // tc_compare_until, both from one equilibrated state (rebuilt deterministically on resume).
+    const EquilibratedGas gas = initial_gas(s, ctx.seed);
+    const bool compare = s.tc_compare_until > 0;
+    RunOutcome main_run, other_run;
+    Progress progress("cluster-growth", long(std::ceil(std::log2(s.t_max / s.t_base))) + 4, ctx.quiet);
+    parallel_sweep(compare ? 2 : 1, ctx.threads, nullptr, [&](long k) {
+        if (k == 0)
+            main_run = run_tced(ctx, s, gas, s.tc_both, s.cn_end, s.t_max, "ed", &progress);
+        else
+            other_run = run_tced(ctx, s, gas, !s.tc_both, INFINITY, s.tc_compare_until, "ed_other_rule", nullptr);
+    });
+    std::vector<Instant> instants;
+    for (InstantRecord& rec : main_run.st.instants) instants.push_back(make_instant(std::move(rec), s));
+
+    Result res;
+    const KineticTheory kin = kinetic_theory(s);
+    report_run(res, s, kin, gas.collision_rate, main_run, compare ? &other_run : nullptr);
+    fig10(res, s, kin.t0, main_run.st, compare ? &other_run.st : nullptr);
+    fig12_instants_table(res, instants);
+    report_poisson_falling(res, instants, s.poisson_until_cn);
+    fig12_panels(res, instants, s.paper_cn);
+    report_at_paper_cn(res, instants, s.paper_cn);
+    report_clustered_B(res, instants);
+    report_powerlaw_onset(res, instants);
+    fig11(res, instants, s);
     return res;
 }
 
