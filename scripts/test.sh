@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # The test job: install dependencies, build (Release) into build-test/ with the tests, check that
-# ctest sees every kind of test, run every ctest label (unit, validation, repro; repro includes
-# the re-check of the committed paper-scale results and the gnuplot-warning check of every
-# figure), then rebuild into build-asan/ with AddressSanitizer + UBSan and run the unit tests again.
+# ctest sees every kind of test, run every ctest label (unit, integration, validation, repro, sweep;
+# repro includes the re-check of the committed paper-scale results and the gnuplot-warning check of
+# every figure), then rebuild into build-asan/ with AddressSanitizer + UBSan and run the unit and
+# integration tests again (the integration tests spawn the sanitized binary).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh
@@ -12,6 +13,7 @@ jobs=$(nproc)
 # configuration that loses tests (e.g. GRANREPRO_TESTS=OFF, a failed gtest discovery) fails here
 # instead of passing with "No tests were found".
 min_unit=232
+min_integration=0
 min_validation=25
 min_repro=29
 min_sweep=7
@@ -39,14 +41,17 @@ build() { # folder, build type, target ("" = all), more cmake options...
 
 build build-test Release ""
 require_tests build-test unit "$min_unit"
+require_tests build-test integration "$min_integration"
 require_tests build-test validation "$min_validation"
 require_tests build-test repro "$min_repro"
 require_tests build-test sweep "$min_sweep"
 (cd build-test && ctest -j"$jobs" --no-tests=error --output-on-failure)
 
 build build-asan Debug unit_tests -DGRANREPRO_SANITIZE=ON
+build build-asan Debug integration_tests -DGRANREPRO_SANITIZE=ON
 require_tests build-asan unit "$min_unit"
+require_tests build-asan integration "$min_integration"
 # The input fuzz tests (about 2,500 refused inputs, run in the Release pass above) take 12 min under
-# the sanitizers on 2 cores; the sanitizer pass runs every other unit test.
+# the sanitizers on 2 cores; the sanitizer pass runs every other unit and integration test.
 (cd build-asan && ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
-   ctest -j"$jobs" -L '^unit$' -E '^Experiments/InputFuzz' --no-tests=error --output-on-failure)
+   ctest -j"$jobs" -L '^(unit|integration)$' -E '^Experiments/InputFuzz' --no-tests=error --output-on-failure)
