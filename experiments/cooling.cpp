@@ -211,7 +211,7 @@ EdKineticEnergy kinetic_split(const DsmcEngine& e) {
 // One sample at time t: the kinetic energy, collisions per particle and a2.
 template <class Engine>
 void record_sample(Trace& tr, const Engine& eng, double t) {
-    const double n = double(eng.velocities().size());
+    const double n = double(eng.size());
     const EdKineticEnergy k = kinetic_split(eng);
     const auto a2 = sonine_a2(eng.velocities());
     tr.t.push_back(t);
@@ -586,6 +586,8 @@ Result report_dsmc_only(const CoolingSpec& c, const std::vector<Trace>& dss) {
 // the measured elastic collision rate.
 void add_setup(Result& res, const CoolingSpec& c, const Setup& s, const std::vector<Trace>& eds, const std::vector<Trace>& dss) {
     const double r = c.r;
+    // Eq. (19) as printed; theory::luding_eq19_t0_printed forms s_* otherwise and differs in the
+    // last bit.
     const double s_star = 1 / theory::henderson_contact_value(c.rho);
     const double t0_printed = std::sqrt(M_PI) * c.d * s_star / (2 * (1 - r * r) * c.rho * c.vbar);
     const double t0_measured_rate = 4 / ((1 - r * r) * s.omega_measured);
