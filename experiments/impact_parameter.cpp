@@ -10,29 +10,57 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
+#include <nlohmann/json.hpp>
 #include <numeric>
 #include <string>
 #include <vector>
 
 #include "analysis/eddy_pair.hpp"
 #include "core/input_error.hpp"
-#include "core/vec3.hpp"
 #include "core/rng_stream.hpp"
+#include "core/vec3.hpp"
+#include "data/spec.hpp"
 #include "engines/ed/ed_engine.hpp"
 #include "engines/ed/ed_initial_states.hpp"
 #include "engines/ed3d/hard_sphere_gas.hpp"
 #include "experiments/work_limits.hpp"
+#include "harness/distributed_sweep.hpp"
 #include "harness/experiment.hpp"
-#include "theory/kinetic_theory.hpp"
-#include "harness/parallel_sweep.hpp"
-#include "harness/progress.hpp"
 #include "observables/collisional_stress.hpp"
 #include "observables/impact_parameter_histogram.hpp"
-#include "observables/kinetic_energy.hpp"
+#include "theory/kinetic_theory.hpp"
 
 namespace granrepro::experiments {
 
 namespace {
+
+struct ImpactSpec {
+    long N = 0, seeds = 0, stress_snapshots = 0, eddy_shuffles = 0, elastic3d_n_side = 0;
+    int n_bins = 0, stress_cells = 0;       // stress cells per side
+    double rho = 0, d = 0, m = 0, vbar = 0; // area fraction, [m], [kg], [m/s]
+    double t_c = 0, t_end = 0, stress_t_begin = 0;                            // [s]
+    double equilibration_collisions = 0, elastic_collisions_per_particle = 0; // per particle
+    double arrow_rms_length = 0;                                              // [d]
+    double eddy_significance = 0, elastic3d_collisions = 0;
+    std::vector<double> restitutions, elastic_densities, elastic3d_packing, window_edges; // window_edges [s]
+    template <class V> void fields(V&& v) {
+        v("N", N); v("seeds", seeds); v("stress_snapshots", stress_snapshots); v("eddy_shuffles", eddy_shuffles);
+        v("elastic3d_n_side", elastic3d_n_side); v("n_bins", n_bins); v("stress_cells", stress_cells); v("rho", rho);
+        v("d", d); v("m", m); v("vbar", vbar); v("t_c", t_c); v("t_end", t_end); v("stress_t_begin", stress_t_begin);
+        v("equilibration_collisions", equilibration_collisions); v("arrow_rms_length", arrow_rms_length);
+        v("elastic_collisions_per_particle", elastic_collisions_per_particle); v("eddy_significance", eddy_significance);
+        v("elastic3d_collisions", elastic3d_collisions); v("restitutions", restitutions); v("window_edges", window_edges);
+        v("elastic_densities", elastic_densities); v("elastic3d_packing", elastic3d_packing);
+    }
+    // Sweep points: seed s, run k (the cooling runs, then the elastic densities) is 2D point
+    // s * per_seed() + k; the 3D packing fractions follow the 2D points.
+    std::size_t n_r() const { return restitutions.size(); }
+    std::size_t per_seed() const { return restitutions.size() + elastic_densities.size(); }
+    std::size_t n_seeds() const { return static_cast<std::size_t>(seeds); }
+    std::size_t n_2d() const { return per_seed() * n_seeds(); }
+    std::size_t n_windows() const { return window_edges.size() - 1; }
+};
 
 // Side of the periodic square box holding n disks of diameter d [m] at area fraction rho.
 double box_side(std::size_t n, double d, double rho) {
@@ -69,22 +97,64 @@ std::vector<Vec2> staggered_lattice(std::size_t n, double l, double d) {
     return out;
 }
 
-// Counts of one sweep point; seeds are merged by adding counts.
+// One sweep point; it travels as JSON. A 2D run gives b/d counts (seeds are merged by adding them)
+// and measures of its end state; the figure run (seed 0 of each r) also keeps Fig. 5's panel and
+// its cooling curve. A 3D point gives its counts as one window.
 struct PointResult {
     std::vector<std::vector<std::uint64_t>> counts; // [window][bin]
     std::uint64_t pair_collisions = 0, elastic_by_tc = 0;
-    // Only for the inelastic runs of the first seed (Fig. 5 and the cooling curve):
-    std::vector<Vec2> pos, vel;
-    std::vector<CollisionalStress::Cell> cells;
-    std::vector<double> k_t, k_val; // K(t) [s], [J]
-    double k0 = 0.0;
-    double sigma_max = NAN, flow_fraction = NAN; // every seed, see panel_measures()
-    double v_rms = NAN;                          // every seed: rms speed at t_end [m/s]
-    // Every seed: the strongest co-rotating eddy pair at t_end (src/analysis/eddy_pair.hpp), the
-    // share of velocity shuffles it beats, and the mean pressure of the stress cells in its two
-    // cores over that of the other cells.
-    double eddy_strength = NAN, eddy_beats = NAN, eddy_core_pressure_ratio = NAN;
+    std::vector<Vec2> pos, vel; // at t_end
+    std::vector<CollisionalStress::Cell> cells; // stress window
+    std::vector<double> k_t, k_val;   // K(t) [s], [J]
+    double k0 = 0.0, k_end = 0.0;     // translational K at t = 0 and t_end [J]
+    double sigma_max = NAN, flow_fraction = NAN, v_rms = NAN; // see sigma_max_of(), flow_fraction(); [m/s]
+    double eddy_strength = NAN, eddy_beats = NAN, eddy_core_pressure_ratio = NAN; // see eddy_measures()
+    template <class V> void fields(V&& v) {
+        v("counts", counts); v("pairs", pair_collisions); v("elastic_by_tc", elastic_by_tc); v("pos", pos);
+        v("vel", vel); v("cells", cells); v("k_t", k_t); v("k_val", k_val); v("k0", k0); v("k_end", k_end);
+        v("sigma_max", sigma_max); v("flow_fraction", flow_fraction); v("v_rms", v_rms);
+        v("eddy_strength", eddy_strength); v("eddy_beats", eddy_beats); v("eddy_core_pressure_ratio", eddy_core_pressure_ratio);
+    }
 };
+
+PointResult counts_only(const std::vector<std::uint64_t>& c) { PointResult r; r.counts = {c}; return r; }
+
+// JSON of the fields; doubles round-trip bit for bit, and null stands for NaN, which JSON lacks.
+nlohmann::json enc(double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr); }
+nlohmann::json enc(Vec2 v) { return {enc(v.x), enc(v.y)}; }
+// Of a stress cell, what Fig. 5 and the eddy cores use: eigenvalues, axes, collisions, total (pressure).
+nlohmann::json enc(const CollisionalStress::Cell& c) {
+    return {enc(c.sigma_min), enc(c.sigma_max), enc(c.axis_min.x()), enc(c.axis_min.y()), enc(c.axis_max.x()),
+            enc(c.axis_max.y()), c.collisions, enc(c.total(0, 0)), enc(c.total(0, 1)), enc(c.total(1, 0)), enc(c.total(1, 1))};
+}
+template <class T> nlohmann::json enc(const T& x) { return x; }
+template <class T> nlohmann::json enc(const std::vector<T>& v) {
+    nlohmann::json j = nlohmann::json::array();
+    for (const T& x : v) j.push_back(enc(x));
+    return j;
+}
+void dec(const nlohmann::json& j, double& x) { x = j.is_null() ? NAN : j.get<double>(); }
+void dec(const nlohmann::json& j, Vec2& v) { dec(j.at(0), v.x); dec(j.at(1), v.y); }
+void dec(const nlohmann::json& j, CollisionalStress::Cell& c) {
+    dec(j.at(0), c.sigma_min); dec(j.at(1), c.sigma_max); dec(j.at(2), c.axis_min.x()); dec(j.at(3), c.axis_min.y());
+    dec(j.at(4), c.axis_max.x()); dec(j.at(5), c.axis_max.y()); c.collisions = j.at(6);
+    dec(j.at(7), c.total(0, 0)); dec(j.at(8), c.total(0, 1)); dec(j.at(9), c.total(1, 0)); dec(j.at(10), c.total(1, 1));
+}
+template <class T> void dec(const nlohmann::json& j, T& x) { j.get_to(x); }
+template <class T> void dec(const nlohmann::json& j, std::vector<T>& v) {
+    v.resize(j.size());
+    for (std::size_t i = 0; i < v.size(); ++i) dec(j.at(i), v[i]);
+}
+nlohmann::json point_json(PointResult r) {
+    nlohmann::json j;
+    r.fields([&](const char* name, const auto& x) { j[name] = enc(x); });
+    return j;
+}
+PointResult point_from_json(const nlohmann::json& j) {
+    PointResult r;
+    r.fields([&](const char* name, auto& x) { dec(j.at(name), x); });
+    return r;
+}
 
 // P(b/d) from counts: density over [0, 1] with bin width 1/nb, Poisson error sqrt(n) per bin.
 struct Histogram {
@@ -177,194 +247,223 @@ double flow_fraction(const std::vector<Vec2>& pos, const std::vector<Vec2>& vel,
 }
 
 void validate(const ParameterSet& p) {
-    const double t_end = p.real("t_end");
-    {
-        // Pair collisions, bounded above at the initial Enskog rate (cooling only slows it):
-        // t_end = 1e308 s printed nothing for minutes.
-        const double n = double(p.integer("N")), rho = p.real("rho");
-        const double omega = theory::enskog_collision_rate_vbar(rho, p.real("d"), p.real("vbar"), theory::henderson_contact_value(rho));
-        const double eq = p.real("equilibration_collisions");
-        const double per_seed = double(p.reals("restitutions").size()) * n / 2 * (omega * t_end + eq) +
-                                double(p.reals("elastic_densities").size()) * n / 2 *
-                                    (p.real("elastic_collisions_per_particle") + eq);
-        p.limit_work({"t_end", "N", "seeds", "vbar", "rho", "d", "equilibration_collisions",
-                      "elastic_collisions_per_particle", "restitutions", "elastic_densities"},
-                     double(p.integer("seeds")) * per_seed, kMaxCollisions, "pair collisions");
-    }
-    const auto& edges = p.reals("window_edges");
+    const auto s = read_spec<ImpactSpec>(p);
+    const double t_end = s.t_end;
+    // Pair collisions, bounded above at the initial Enskog rate (cooling only slows it):
+    // t_end = 1e308 s printed nothing for minutes.
+    const double nd = double(s.N), eq = s.equilibration_collisions;
+    const double omega = theory::enskog_collision_rate_vbar(s.rho, s.d, s.vbar, theory::henderson_contact_value(s.rho));
+    const double per_seed = double(s.restitutions.size()) * nd / 2 * (omega * t_end + eq) +
+                            double(s.elastic_densities.size()) * nd / 2 * (s.elastic_collisions_per_particle + eq);
+    p.limit_work({"t_end", "N", "seeds", "vbar", "rho", "d", "equilibration_collisions",
+                  "elastic_collisions_per_particle", "restitutions", "elastic_densities"},
+                 double(s.seeds) * per_seed, kMaxCollisions, "pair collisions");
+    const auto& edges = s.window_edges;
     if (edges.size() < 2 || edges.front() != 0.0 || std::fabs(edges.back() - t_end) > 1e-12 * t_end)
         p.reject("window_edges", "must start at 0 s and end at t_end = " + number_text(t_end) + " s");
     for (std::size_t k = 1; k < edges.size(); ++k)
         if (!(edges[k] > edges[k - 1])) p.reject("window_edges", "must be strictly increasing");
-    if (!(p.real("stress_t_begin") < t_end))
-        p.reject("stress_t_begin", "must be below t_end = " + number_text(t_end) + " s");
-    const long nb = p.integer("n_bins");
-    if (nb % 5 != 0) p.reject("n_bins", "must be a multiple of 5 so that bins end at b/d = 0.2 and 0.8");
-    if (p.reals("restitutions").empty()) p.reject("restitutions", "needs at least one value");
+    if (!(s.stress_t_begin < t_end)) p.reject("stress_t_begin", "must be below t_end = " + number_text(t_end) + " s");
+    if (s.n_bins % 5 != 0) p.reject("n_bins", "must be a multiple of 5 so that bins end at b/d = 0.2 and 0.8");
+    if (s.restitutions.empty()) p.reject("restitutions", "needs at least one value");
     // The start lattice must fit (it throws InputError naming rho otherwise).
-    const auto n = static_cast<std::size_t>(p.integer("N"));
-    const double d = p.real("d");
-    staggered_lattice(n, box_side(n, d, p.real("rho")), d);
-    for (double rho : p.reals("elastic_densities")) {
+    const auto n = static_cast<std::size_t>(s.N);
+    staggered_lattice(n, box_side(n, s.d, s.rho), s.d);
+    for (double rho : s.elastic_densities) {
         try {
-            staggered_lattice(n, box_side(n, d, rho), d);
+            staggered_lattice(n, box_side(n, s.d, rho), s.d);
         } catch (const InputError& e) {
             p.reject("elastic_densities", std::string("at ") + number_text(rho) + ": " + e.what());
         }
     }
 }
 
-Result run(const RunContext& ctx) {
-    const ParameterSet& p = ctx.params;
-    const auto n = static_cast<std::size_t>(p.integer("N"));
-    const double d = p.real("d"), m = p.real("m"), vbar = p.real("vbar"), rho = p.real("rho");
-    const double t_end = p.real("t_end"), t_c = p.real("t_c"), eq = p.real("equilibration_collisions");
-    const int nb = static_cast<int>(p.integer("n_bins"));
-    const int nc = static_cast<int>(p.integer("stress_cells"));
-    const double ts0 = p.real("stress_t_begin");
-    const long n_snap = p.integer("stress_snapshots");
-    const auto& rs = p.reals("restitutions");
-    const auto& rhos = p.reals("elastic_densities");
-    const auto& edges = p.reals("window_edges");
-    const double el_coll = p.real("elastic_collisions_per_particle");
-    const auto n_seeds = static_cast<std::size_t>(p.integer("seeds"));
-    const std::size_t per_seed = rs.size() + rhos.size();
-    const std::size_t nw = edges.size() - 1;
-
-    std::vector<PointResult> points(per_seed * n_seeds);
-    Progress progress("impact-parameter", static_cast<long>(points.size()), ctx.quiet);
-    parallel_sweep(static_cast<long>(points.size()), ctx.threads, &progress, [&](long task) {
-        const auto idx = static_cast<std::size_t>(task);
-        const std::size_t seed = idx / per_seed, k = idx % per_seed;
-        const bool inelastic = k < rs.size();
-        const double rho_k = inelastic ? rho : rhos[k - rs.size()];
-        const double l = box_side(n, d, rho_k);
-        RngStream rng(ctx.seed, idx);
-        EdConfig cfg;
-        cfg.lx = cfg.ly = l;
-        // Smooth disks (mu = 0, beta0 = -1): Sec. 2.4 says DSMC's collision scheme "is identical
-        // to the event driven procedure" with the tangential velocity unchanged, beta0 = -1.
-        cfg.law = RoughDiskCollision{inelastic ? rs[k] : 1.0, 0.0, -1.0, 0.4};
-        cfg.t_c = inelastic ? t_c : 0.0;
-        const std::vector<double> rad(n, 0.5 * d), mass(n, m);
-        EdEngine e(cfg, staggered_lattice(n, l, d), maxwellian_velocities(mass, vbar, rng), rad, mass);
-        // Sec. 3: "first allowed to evolve with r = 1 for about 10 collisions per particle"; the
-        // elastic run conserves K, so vbar is still the initial mean velocity at t = 0.
-        equilibrate(e, eq);
-        const double t0 = e.time();
-        std::vector<double> w_edges(edges.size());
-        for (std::size_t w = 0; w < edges.size(); ++w) w_edges[w] = t0 + edges[w];
-        PointResult& out = points[idx];
-
-        if (!inelastic) {
-            ImpactParameterHistogram hist(nb, {t0, std::numeric_limits<double>::max()});
-            e.run_collisions(static_cast<std::uint64_t>(el_coll * static_cast<double>(n) / 2.0 + 0.5),
-                             [&](const CollisionRecord& c) { hist.add(c); });
-            out.counts = {hist.window(0).counts};
-            out.pair_collisions = e.total_collisions();
-            return;
+// Fig. 5 left, "two co-rotating eddies with small stresses inside": the strongest co-rotating
+// pair at t_end (src/analysis/eddy_pair.hpp), the share of n_sh velocity shuffles it beats, and
+// the mean pressure of the stress cells in its two cores over that of the other cells.
+void eddy_measures(PointResult& out, double l, int nc, long n_sh, std::uint64_t shuffle_seed) {
+    const EddyPair ep = find_eddy_pair(out.pos, out.vel, l);
+    const auto sh = shuffled_eddy_strengths(out.pos, out.vel, l, static_cast<int>(n_sh), shuffle_seed);
+    out.eddy_strength = ep.strength;
+    out.eddy_beats = static_cast<double>(std::count_if(sh.begin(), sh.end(), [&](double x) { return x < ep.strength; })) /
+                     static_cast<double>(n_sh);
+    // Cores: cells whose centre lies within a quarter box (the quadrant's inscribed circle) of
+    // either eddy centre.
+    double p_in = 0, n_in = 0, p_out = 0, n_out = 0;
+    for (int iy = 0; iy < nc; ++iy)
+        for (int ix = 0; ix < nc; ++ix) {
+            const Vec2 c{(ix + 0.5) * l / nc, (iy + 0.5) * l / nc};
+            auto dist = [&](Vec2 a) {
+                const double dx = c.x - a.x - l * std::round((c.x - a.x) / l), dy = c.y - a.y - l * std::round((c.y - a.y) / l);
+                return std::hypot(dx, dy);
+            };
+            const double pr = out.cells[static_cast<std::size_t>(ix + nc * iy)].pressure();
+            if (std::min(dist(ep.centre_a), dist(ep.centre_b)) < 0.25 * l) { p_in += pr; n_in += 1; }
+            else { p_out += pr; n_out += 1; }
         }
+    if (n_in > 0 && n_out > 0 && p_out > 0) out.eddy_core_pressure_ratio = (p_in / n_in) / (p_out / n_out);
+}
 
-        ImpactParameterHistogram hist(nb, w_edges);
-        const bool figure_run = seed == 0; // K(t) samples only
-        CollisionalStress stress(nc, nc, 0.0, 0.0, l, l, t0 + ts0, t0 + t_end, true);
-        const std::uint64_t c_before = e.total_collisions(), el_before = e.elastic_collisions();
-        auto observe = [&](const CollisionRecord& c) {
-            hist.add(c);
-            stress.add(c);
-        };
-        // Stops: kinetic-term snapshots in the stress window (midpoints of n_snap equal slices)
-        // and log-spaced K(t) samples for the cooling curve.
-        std::vector<double> stops, snaps;
-        for (long s = 0; s < n_snap; ++s)
-            snaps.push_back(t0 + ts0 + (static_cast<double>(s) + 0.5) * (t_end - ts0) / static_cast<double>(n_snap));
-        stops = snaps;
-        const int n_k = 61;
-        for (int s = 0; s < n_k; ++s) stops.push_back(t0 + t_end * std::pow(10.0, -5.0 + 5.0 * s / (n_k - 1)));
-        std::sort(stops.begin(), stops.end());
-        out.k0 = e.kinetic_energy().kx + e.kinetic_energy().ky;
-        std::size_t next_snap = 0;
-        for (double ts : stops) {
-            e.run_until(ts, observe);
-            if (next_snap < snaps.size() && ts == snaps[next_snap]) {
-                const auto pos = e.positions(), vel = e.velocities();
-                stress.add_snapshot(pos, vel, mass);
-                ++next_snap;
-            } else if (figure_run) {
-                const auto k = e.kinetic_energy();
-                out.k_t.push_back(ts - t0);
-                out.k_val.push_back(k.kx + k.ky);
+// A cooling run from t0 = e.time() to t0 + t_end: b/d per time window, the Eq. (9) stresses of the
+// stress window (kinetic term from stress_snapshots snapshots, the midpoints of equal slices) and
+// the end state; the figure run also keeps its panel and K(t) at log-spaced times.
+PointResult cooling_run(const ImpactSpec& s, EdEngine& e, double l, bool figure_run, std::uint64_t shuffle_seed) {
+    const double t0 = e.time(), t_end = s.t_end, ts0 = s.stress_t_begin;
+    const int nc = s.stress_cells;
+    std::vector<double> w_edges(s.window_edges.size());
+    for (std::size_t w = 0; w < w_edges.size(); ++w) w_edges[w] = t0 + s.window_edges[w];
+    ImpactParameterHistogram hist(s.n_bins, w_edges);
+    CollisionalStress stress(nc, nc, 0.0, 0.0, l, l, t0 + ts0, t0 + t_end, true);
+    const std::uint64_t c_before = e.total_collisions(), el_before = e.elastic_collisions();
+    auto observe = [&](const CollisionRecord& c) { hist.add(c); stress.add(c); };
+    std::vector<double> stops, snaps;
+    for (long k = 0; k < s.stress_snapshots; ++k)
+        snaps.push_back(t0 + ts0 + (static_cast<double>(k) + 0.5) * (t_end - ts0) / static_cast<double>(s.stress_snapshots));
+    stops = snaps;
+    const int n_k = 61;
+    for (int k = 0; k < n_k; ++k) stops.push_back(t0 + t_end * std::pow(10.0, -5.0 + 5.0 * k / (n_k - 1)));
+    std::sort(stops.begin(), stops.end());
+    PointResult out;
+    out.k0 = e.kinetic_energy().kx + e.kinetic_energy().ky;
+    const std::vector<double> mass(static_cast<std::size_t>(s.N), s.m);
+    std::size_t next_snap = 0;
+    for (double ts : stops) {
+        e.run_until(ts, observe);
+        if (next_snap < snaps.size() && ts == snaps[next_snap]) {
+            stress.add_snapshot(e.positions(), e.velocities(), mass);
+            ++next_snap;
+        } else if (figure_run) {
+            const auto k = e.kinetic_energy();
+            out.k_t.push_back(ts - t0);
+            out.k_val.push_back(k.kx + k.ky);
+        }
+    }
+    e.run_until(t0 + t_end, observe);
+    for (std::size_t w = 0; w < s.n_windows(); ++w) out.counts.push_back(hist.window(w).counts);
+    out.pair_collisions = e.total_collisions() - c_before;
+    out.elastic_by_tc = e.elastic_collisions() - el_before;
+    out.pos = e.positions();
+    out.vel = e.velocities();
+    out.cells = stress.result();
+    out.sigma_max = sigma_max_of(out.cells);
+    out.flow_fraction = flow_fraction(out.pos, out.vel, l, nc);
+    double v2 = 0.0;
+    for (const auto& v : out.vel) v2 += norm2(v);
+    out.v_rms = std::sqrt(v2 / static_cast<double>(s.N));
+    out.k_end = 0.5 * s.m * v2;
+    eddy_measures(out, l, nc, s.eddy_shuffles, shuffle_seed);
+    if (!figure_run) { out.pos.clear(); out.vel.clear(); out.cells.clear(); }
+    return out;
+}
+
+// Sec. 3.2 in 3D, "P(b/d) = 2b/d in 3D" for elastic spheres (src/engines/ed3d): n_side^3 spheres
+// on a simple cubic lattice at packing fraction eta, Gaussian velocities of zero mean, about
+// equilibration_collisions per sphere as in Sec. 3, then elastic3d_collisions binned by b/d.
+PointResult run_3d(const ImpactSpec& s, std::uint64_t seed, std::size_t k) {
+    const long side = s.elastic3d_n_side;
+    const auto n3 = static_cast<std::size_t>(side * side * side);
+    const int nb = s.n_bins;
+    const double box = std::cbrt(static_cast<double>(n3) * M_PI / 6 / s.elastic3d_packing[k]) * s.d;
+    RngStream rng3(seed, 1000000 + k);
+    std::vector<Vec3> r, v;
+    Vec3 mean;
+    for (long a = 0; a < side; ++a)
+        for (long b = 0; b < side; ++b)
+            for (long c = 0; c < side; ++c) {
+                r.push_back({(a + 0.5) * box / side, (b + 0.5) * box / side, (c + 0.5) * box / side});
+                v.push_back({s.vbar * rng3.normal(), s.vbar * rng3.normal(), s.vbar * rng3.normal()});
+                mean += v.back();
             }
-        }
-        e.run_until(t0 + t_end, observe);
-        for (std::size_t w = 0; w < nw; ++w) out.counts.push_back(hist.window(w).counts);
-        out.pair_collisions = e.total_collisions() - c_before;
-        out.elastic_by_tc = e.elastic_collisions() - el_before;
-        out.pos = e.positions();
-        out.vel = e.velocities();
-        out.cells = stress.result();
-        out.sigma_max = sigma_max_of(out.cells);
-        out.flow_fraction = flow_fraction(out.pos, out.vel, l, nc);
-        double v2 = 0.0;
-        for (const auto& v : out.vel) v2 += norm2(v);
-        out.v_rms = std::sqrt(v2 / static_cast<double>(n));
-        {
-            const EddyPair ep = find_eddy_pair(out.pos, out.vel, l);
-            const long n_sh = p.integer("eddy_shuffles");
-            const auto sh = shuffled_eddy_strengths(out.pos, out.vel, l, static_cast<int>(n_sh), mix_seed(ctx.seed, idx));
-            out.eddy_strength = ep.strength;
-            out.eddy_beats = static_cast<double>(std::count_if(sh.begin(), sh.end(), [&](double x) { return x < ep.strength; })) /
-                             static_cast<double>(n_sh);
-            // Cores: cells whose centre lies within a quarter box (the quadrant's inscribed circle)
-            // of either eddy centre.
-            double p_in = 0, n_in = 0, p_out = 0, n_out = 0;
-            for (int iy = 0; iy < nc; ++iy)
-                for (int ix = 0; ix < nc; ++ix) {
-                    const Vec2 c{(ix + 0.5) * l / nc, (iy + 0.5) * l / nc};
-                    auto dist = [&](Vec2 a) {
-                        const double dx = c.x - a.x - l * std::round((c.x - a.x) / l), dy = c.y - a.y - l * std::round((c.y - a.y) / l);
-                        return std::hypot(dx, dy);
-                    };
-                    const double pr = out.cells[static_cast<std::size_t>(ix + nc * iy)].pressure();
-                    if (std::min(dist(ep.centre_a), dist(ep.centre_b)) < 0.25 * l) { p_in += pr; n_in += 1; }
-                    else { p_out += pr; n_out += 1; }
-                }
-            if (n_in > 0 && n_out > 0 && p_out > 0) out.eddy_core_pressure_ratio = (p_in / n_in) / (p_out / n_out);
-        }
+    for (Vec3& x : v) x -= mean * (1.0 / static_cast<double>(n3));
+    HardSphereGas3D g(r, v, s.d, box);
+    g.run_collisions(static_cast<std::uint64_t>(s.equilibration_collisions * static_cast<double>(n3) / 2.0 + 0.5));
+    std::vector<std::uint64_t> counts(static_cast<std::size_t>(nb), 0);
+    g.run_collisions(static_cast<std::uint64_t>(s.elastic3d_collisions), [&](double x) {
+        counts[std::min(static_cast<std::size_t>(nb) - 1, static_cast<std::size_t>(x * nb))] += 1;
     });
+    return counts_only(counts);
+}
 
-    // Merge seeds.
-    auto merged = [&](std::size_t k, std::size_t w) {
-        std::vector<std::uint64_t> c(static_cast<std::size_t>(nb), 0);
-        for (std::size_t s = 0; s < n_seeds; ++s) {
-            const auto& src = points[s * per_seed + k].counts[w];
-            for (std::size_t b = 0; b < c.size(); ++b) c[b] += src[b];
-        }
-        return c;
+// Sweep point i: the 2D run of random stream i (see ImpactSpec::per_seed) or a 3D point.
+nlohmann::json run_point(const ImpactSpec& s, std::uint64_t seed, std::size_t i) {
+    if (i >= s.n_2d()) return point_json(run_3d(s, seed, i - s.n_2d()));
+    const auto n = static_cast<std::size_t>(s.N);
+    const std::size_t k = i % s.per_seed();
+    const bool inelastic = k < s.n_r();
+    const double l = box_side(n, s.d, inelastic ? s.rho : s.elastic_densities[k - s.n_r()]);
+    RngStream rng(seed, i);
+    EdConfig cfg;
+    cfg.lx = cfg.ly = l;
+    // Smooth disks (mu = 0, beta0 = -1): Sec. 2.4 says DSMC's collision scheme "is identical
+    // to the event driven procedure" with the tangential velocity unchanged, beta0 = -1.
+    cfg.law = RoughDiskCollision{inelastic ? s.restitutions[k] : 1.0, 0.0, -1.0, 0.4};
+    cfg.t_c = inelastic ? s.t_c : 0.0;
+    const std::vector<double> rad(n, 0.5 * s.d), mass(n, s.m);
+    EdEngine e(cfg, staggered_lattice(n, l, s.d), maxwellian_velocities(mass, s.vbar, rng), rad, mass);
+    // Sec. 3: "first allowed to evolve with r = 1 for about 10 collisions per particle"; the
+    // elastic run conserves K, so vbar is still the initial mean velocity at t = 0.
+    equilibrate(e, s.equilibration_collisions);
+    if (inelastic) return point_json(cooling_run(s, e, l, i < s.per_seed(), mix_seed(seed, i)));
+    ImpactParameterHistogram hist(s.n_bins, {e.time(), std::numeric_limits<double>::max()}); // Fig. 4's elastic check
+    e.run_collisions(static_cast<std::uint64_t>(s.elastic_collisions_per_particle * static_cast<double>(n) / 2.0 + 0.5),
+                     [&](const CollisionRecord& c) { hist.add(c); });
+    return point_json(counts_only(hist.window(0).counts));
+}
+
+// Every point goes through distributed_sweep(), so threads, MPI ranks and --points shards give the
+// same bits. Costliest first, as measured at quick scale: the 3D points (every event moves all
+// spheres), the cooling runs (mostly eddy shuffles), the elastic 2D runs; each group dilute first.
+std::vector<PointResult> sweep(const RunContext& ctx, const ImpactSpec& s) {
+    std::vector<long> order(s.n_2d() + s.elastic3d_packing.size());
+    std::iota(order.begin(), order.end(), 0L);
+    auto cost_rank = [&](long i) {
+        const auto u = static_cast<std::size_t>(i), k = u % s.per_seed();
+        if (u >= s.n_2d()) return std::pair{0, s.elastic3d_packing[u - s.n_2d()]};
+        return k < s.n_r() ? std::pair{1, 0.0} : std::pair{2, s.elastic_densities[k - s.n_r()]};
     };
-    auto merged_all_windows = [&](std::size_t k) {
-        std::vector<std::uint64_t> c(static_cast<std::size_t>(nb), 0);
-        for (std::size_t w = 0; w < nw; ++w) {
-            const auto cw = merged(k, w);
-            for (std::size_t b = 0; b < c.size(); ++b) c[b] += cw[b];
-        }
-        return c;
-    };
+    std::stable_sort(order.begin(), order.end(), [&](long a, long b) { return cost_rank(a) < cost_rank(b); });
+    const SweepResult swept = distributed_sweep(ctx, "impact-parameter", order, [&](long i) {
+        return run_point(s, ctx.seed, static_cast<std::size_t>(i));
+    });
+    std::vector<PointResult> pts;
+    for (const auto& j : swept.points) pts.push_back(point_from_json(j));
+    return pts;
+}
 
-    Result res;
-    const double l = box_side(n, d, rho);
-    res.scalar("box_side", l, "m", "side of the periodic square box at rho (N pi d^2 / (4 L^2) = rho)");
-    res.scalar("box_side_over_d", l / d, "1", "box side in diameters");
+const PointResult& at(const ImpactSpec& s, const std::vector<PointResult>& pts, std::size_t seed, std::size_t k) {
+    return pts[seed * s.per_seed() + k];
+}
 
-    std::vector<double> centres(static_cast<std::size_t>(nb));
-    for (int b = 0; b < nb; ++b) centres[static_cast<std::size_t>(b)] = (b + 0.5) / nb;
+// b/d counts of run k in windows [w0, w1), added over the seeds [seed0, seed1).
+std::vector<std::uint64_t> merged(const ImpactSpec& s, const std::vector<PointResult>& pts, std::size_t k, std::size_t w0,
+                                  std::size_t w1, std::size_t seed0 = 0, std::size_t seed1 = SIZE_MAX) {
+    std::vector<std::uint64_t> c(static_cast<std::size_t>(s.n_bins), 0);
+    for (std::size_t seed = seed0; seed < std::min(seed1, s.n_seeds()); ++seed)
+        for (std::size_t w = w0; w < w1; ++w)
+            for (std::size_t b = 0; b < c.size(); ++b) c[b] += at(s, pts, seed, k).counts[w][b];
+    return c;
+}
 
-    // Fig. 4, inelastic: whole run and the late window (the last of window_edges).
+// Seed-to-seed scatter of the grazing ratio of run k: checks the Poisson errors, which assume
+// independent collisions (correlated re-collisions would make them too small).
+double grazing_ratio_seed_sem(const ImpactSpec& s, const std::vector<PointResult>& pts, std::size_t k) {
+    double s1 = 0, s2 = 0;
+    for (std::size_t seed = 0; seed < s.n_seeds(); ++seed) {
+        const double rr = grazing_ratio(merged(s, pts, k, 0, s.n_windows(), seed, seed + 1)).value;
+        s1 += rr;
+        s2 += rr * rr;
+    }
+    const double ns = static_cast<double>(s.n_seeds()), mean = s1 / ns;
+    return std::sqrt(std::max(0.0, s2 / ns - mean * mean) / (ns - 1.0));
+}
+
+// Fig. 4, inelastic: whole run and the late window (the last of window_edges).
+void fig4_inelastic(Result& res, const ImpactSpec& s, const std::vector<PointResult>& pts, const std::vector<double>& centres) {
     Table& t4 = res.table("fig4_inelastic", "P(b/d) at rho = 0.7495 per r: whole run 0 <= t < t_end and last window");
     t4.add("b_over_d", "1").values = centres;
-    for (std::size_t k = 0; k < rs.size(); ++k) {
-        const std::string lb = label("r", rs[k], "%.2f");
-        const auto all = merged_all_windows(k), late = merged(k, nw - 1);
+    for (std::size_t k = 0; k < s.n_r(); ++k) {
+        const std::string lb = label("r", s.restitutions[k], "%.2f");
+        const auto all = merged(s, pts, k, 0, s.n_windows()), late = merged(s, pts, k, s.n_windows() - 1, s.n_windows());
         const Histogram ha = normalise(all), hl = normalise(late);
         t4.add("P_" + lb, "1").values = ha.p;
         t4.add("err_" + lb, "1").values = ha.err;
@@ -381,52 +480,46 @@ Result run(const RunContext& ctx) {
         res.scalar("grazing_ratio_late_" + lb, rl.value, "1", "P(b/d > 0.8) / P(b/d < 0.2), last window");
         res.scalar("grazing_ratio_late_err_" + lb, rl.err, "1", "its Poisson error");
         res.scalar("grazing_z_late_" + lb, rl.z, "1", "(ratio - 1) / error, last window");
-        // Seed-to-seed scatter of the ratio: checks the Poisson errors, which assume independent
-        // collisions (correlated re-collisions would make them too small).
-        if (n_seeds >= 2) {
-            double s1 = 0, s2 = 0;
-            for (std::size_t s = 0; s < n_seeds; ++s) {
-                std::vector<std::uint64_t> c(static_cast<std::size_t>(nb), 0);
-                for (const auto& cw : points[s * per_seed + k].counts)
-                    for (std::size_t b = 0; b < c.size(); ++b) c[b] += cw[b];
-                const double rr = grazing_ratio(c).value;
-                s1 += rr;
-                s2 += rr * rr;
-            }
-            const double ns = static_cast<double>(n_seeds), mean = s1 / ns;
-            res.scalar("grazing_ratio_seed_sem_" + lb, std::sqrt(std::max(0.0, s2 / ns - mean * mean) / (ns - 1.0)), "1",
+        if (s.n_seeds() >= 2)
+            res.scalar("grazing_ratio_seed_sem_" + lb, grazing_ratio_seed_sem(s, pts, k), "1",
                        "standard error of the mean of the per-seed ratios (compare grazing_ratio_err)");
-        }
         std::uint64_t el = 0, tot = 0;
-        for (std::size_t s = 0; s < n_seeds; ++s) {
-            el += points[s * per_seed + k].elastic_by_tc;
-            tot += points[s * per_seed + k].pair_collisions;
+        for (std::size_t seed = 0; seed < s.n_seeds(); ++seed) {
+            el += at(s, pts, seed, k).elastic_by_tc;
+            tot += at(s, pts, seed, k).pair_collisions;
         }
         res.scalar("tc_elastic_fraction_" + lb, tot ? static_cast<double>(el) / static_cast<double>(tot) : NAN, "1",
                    "fraction of collisions made elastic by the TC model (Eq. 7)");
     }
-    // Time-resolved P(b/d) (as Fig. 3 does for the large system): one table per r.
-    for (std::size_t k = 0; k < rs.size(); ++k) {
-        const std::string lb = label("r", rs[k], "%.2f");
+}
+
+// Time-resolved P(b/d) (as Fig. 3 does for the large system): one table per r.
+void fig4_windows(Result& res, const ImpactSpec& s, const std::vector<PointResult>& pts, const std::vector<double>& centres) {
+    const auto& edges = s.window_edges;
+    for (std::size_t k = 0; k < s.n_r(); ++k) {
+        const std::string lb = label("r", s.restitutions[k], "%.2f");
         Table& tw = res.table("windows_" + lb, "P(b/d) per time window (window_edges), all seeds");
         tw.add("b_over_d", "1").values = centres;
-        for (std::size_t w = 0; w < nw; ++w) {
-            const Histogram h = normalise(merged(k, w));
+        for (std::size_t w = 0; w < s.n_windows(); ++w) {
+            const auto c = merged(s, pts, k, w, w + 1);
+            const Histogram h = normalise(c);
             const std::string wl = label("t", edges[w], "%g") + label("-", edges[w + 1], "%g");
             tw.add("P_" + wl, "1").values = h.p;
             tw.add("err_" + wl, "1").values = h.err;
-            res.scalar("grazing_ratio_" + lb + "_" + wl, grazing_ratio(merged(k, w)).value, "1",
+            res.scalar("grazing_ratio_" + lb + "_" + wl, grazing_ratio(c).value, "1",
                        "P(b/d > 0.8) / P(b/d < 0.2) in that window");
         }
     }
+}
 
-    // Fig. 4, elastic check (Sec. 3.2, "P(b/d) is not sensitive to the density").
+// Fig. 4, elastic check (Sec. 3.2, "P(b/d) is not sensitive to the density").
+void fig4_elastic(Result& res, const ImpactSpec& s, const std::vector<PointResult>& pts, const std::vector<double>& centres) {
     Table& te = res.table("fig4_elastic", "P(b/d) at r = 1 for N = 240 and several densities");
     te.add("b_over_d", "1").values = centres;
     double worst_chi2 = 0.0;
-    for (std::size_t j = 0; j < rhos.size(); ++j) {
-        const std::string lb = label("rho", rhos[j], "%g");
-        const auto c = merged(rs.size() + j, 0);
+    for (std::size_t j = 0; j < s.elastic_densities.size(); ++j) {
+        const std::string lb = label("rho", s.elastic_densities[j], "%g");
+        const auto c = merged(s, pts, s.n_r() + j, 0, 1);
         const Histogram h = normalise(c);
         te.add("P_" + lb, "1").values = h.p;
         te.add("err_" + lb, "1").values = h.err;
@@ -438,238 +531,193 @@ Result run(const RunContext& ctx) {
         res.scalar("elastic_collisions_" + lb, static_cast<double>(h.total), "1", "pair collisions counted, all seeds");
     }
     res.scalar("elastic_chi2_dof_worst", worst_chi2, "1", "largest chi^2 per dof over the elastic densities");
+}
 
-    // Sec. 3.2 in 3D: "P(b/d) = 2b/d in 3D" for elastic spheres (src/engines/ed3d), per packing
-    // fraction; chi^2 of the bins against 2 b/d (and, to show the test's power, against 1).
-    {
-        const auto& etas = p.reals("elastic3d_packing");
-        const long side = p.integer("elastic3d_n_side");
-        const auto n3 = static_cast<std::size_t>(side * side * side);
-        const auto coll3 = static_cast<std::uint64_t>(p.real("elastic3d_collisions"));
-        std::vector<std::vector<std::uint64_t>> c3(etas.size(), std::vector<std::uint64_t>(static_cast<std::size_t>(nb), 0));
-        parallel_sweep(static_cast<long>(etas.size()), ctx.threads, nullptr, [&](long task) {
-            const auto k = static_cast<std::size_t>(task);
-            const double box = std::cbrt(static_cast<double>(n3) * M_PI / 6 / etas[k]) * d;
-            RngStream rng3(ctx.seed, 1000000 + k);
-            std::vector<Vec3> r, v;
-            Vec3 mean;
-            for (long a = 0; a < side; ++a)
-                for (long b = 0; b < side; ++b)
-                    for (long c = 0; c < side; ++c) {
-                        r.push_back({(a + 0.5) * box / side, (b + 0.5) * box / side, (c + 0.5) * box / side});
-                        v.push_back({vbar * rng3.normal(), vbar * rng3.normal(), vbar * rng3.normal()});
-                        mean += v.back();
-                    }
-            for (Vec3& x : v) x -= mean * (1.0 / static_cast<double>(n3));
-            HardSphereGas3D g(r, v, d, box);
-            g.run_collisions(static_cast<std::uint64_t>(eq * static_cast<double>(n3) / 2.0 + 0.5)); // as Sec. 3: ~10 per sphere at r = 1
-            g.run_collisions(coll3, [&](double x) {
-                c3[k][std::min(static_cast<std::size_t>(nb) - 1, static_cast<std::size_t>(x * nb))] += 1;
-            });
-        });
-        Table& t3 = res.table("fig4_elastic_3d", "P(b/d) of elastic smooth hard spheres in 3D (periodic cube), per packing fraction, and 2 b/d");
-        t3.add("b_over_d", "1").values = centres;
-        std::vector<double> two_x;
-        for (double x : centres) two_x.push_back(2 * x);
-        t3.add("P_2bd", "1").values = two_x;
-        for (std::size_t k = 0; k < etas.size(); ++k) {
-            const std::string lb = label("eta", etas[k], "%g");
-            const Histogram h = normalise(c3[k]);
-            t3.add("P_" + lb, "1").values = h.p;
-            t3.add("err_" + lb, "1").values = h.err;
-            // chi^2 against a density f on [0, 1] with exact bin integrals; dof = bins - 1.
-            auto chi2 = [&](auto cdf) {
-                const double tot = static_cast<double>(h.total);
-                double x2 = 0;
-                for (int b = 0; b < nb; ++b) {
-                    const double e = tot * (cdf((b + 1.0) / nb) - cdf(static_cast<double>(b) / nb));
-                    const double o = static_cast<double>(c3[k][static_cast<std::size_t>(b)]);
-                    x2 += (o - e) * (o - e) / e;
-                }
-                return x2 / (nb - 1.0);
-            };
-            res.scalar("elastic3d_chi2_dof_" + lb, chi2([](double x) { return x * x; }), "1",
-                       "chi^2 per dof of the 3D P(b/d) against 2 b/d (molecular chaos in 3D)");
-            res.scalar("elastic3d_chi2_dof_flat_" + lb, chi2([](double x) { return x; }), "1",
-                       "chi^2 per dof of the 3D P(b/d) against the 2D form 1 (the test's power)");
-            res.scalar("elastic3d_collisions_" + lb, static_cast<double>(h.total), "1", "collisions counted");
-        }
+// The 3D check per packing fraction: chi^2 of the bins against 2 b/d (and, to show the test's
+// power, against 1).
+void fig4_elastic_3d(Result& res, const ImpactSpec& s, const std::vector<PointResult>& pts, const std::vector<double>& centres) {
+    const int nb = s.n_bins;
+    Table& t3 = res.table("fig4_elastic_3d", "P(b/d) of elastic smooth hard spheres in 3D (periodic cube), per packing fraction, and 2 b/d");
+    t3.add("b_over_d", "1").values = centres;
+    std::vector<double> two_x;
+    for (double x : centres) two_x.push_back(2 * x);
+    t3.add("P_2bd", "1").values = two_x;
+    for (std::size_t k = 0; k < s.elastic3d_packing.size(); ++k) {
+        const std::string lb = label("eta", s.elastic3d_packing[k], "%g");
+        const auto& c3 = pts[s.n_2d() + k].counts[0];
+        const Histogram h = normalise(c3);
+        t3.add("P_" + lb, "1").values = h.p;
+        t3.add("err_" + lb, "1").values = h.err;
+        // chi^2 against a density f on [0, 1] with exact bin integrals; dof = bins - 1.
+        auto chi2 = [&](auto cdf) {
+            const double tot = static_cast<double>(h.total);
+            double x2 = 0;
+            for (int b = 0; b < nb; ++b) {
+                const double e = tot * (cdf((b + 1.0) / nb) - cdf(static_cast<double>(b) / nb));
+                const double o = static_cast<double>(c3[static_cast<std::size_t>(b)]);
+                x2 += (o - e) * (o - e) / e;
+            }
+            return x2 / (nb - 1.0);
+        };
+        res.scalar("elastic3d_chi2_dof_" + lb, chi2([](double x) { return x * x; }), "1",
+                   "chi^2 per dof of the 3D P(b/d) against 2 b/d (molecular chaos in 3D)");
+        res.scalar("elastic3d_chi2_dof_flat_" + lb, chi2([](double x) { return x; }), "1",
+                   "chi^2 per dof of the 3D P(b/d) against the 2D form 1 (the test's power)");
+        res.scalar("elastic3d_collisions_" + lb, static_cast<double>(h.total), "1", "collisions counted");
     }
+}
 
-    // Fig. 5: seed 0 of each r. Columns are filled as local vectors first: Table::add and
-    // Result::table grow vectors, so references into them must not be held across calls.
-    std::vector<double> sig_max(rs.size()), v_rms(rs.size()), taus(rs.size());
-    const double arrow_rms = p.real("arrow_rms_length");
-    for (std::size_t k = 0; k < rs.size(); ++k) {
-        const PointResult& pr = points[k];
-        const std::string lb = label("r", rs[k], "%.2f");
-        double v2 = 0.0;
-        for (const auto& v : pr.vel) v2 += norm2(v);
-        v_rms[k] = std::sqrt(v2 / static_cast<double>(n));
+// Appends a row to a table whose columns are all in place.
+void add_row(Table& t, std::initializer_list<double> row) {
+    auto col = t.columns.begin();
+    for (double x : row) (col++)->values.push_back(x);
+}
+
+// Fig. 5 top: the particles of the figure run with arrows of length velocity x tau [d].
+void fig5_snapshot(Result& res, const ImpactSpec& s, const PointResult& pr, const std::string& lb, double tau) {
+    Table& t = res.table("fig5_snapshot_" + lb, "particles at t = t_end with velocity arrows (seed 0)");
+    for (const char* c : {"x_over_d", "y_over_d", "arrow_x_over_d", "arrow_y_over_d"}) t.add(c, "1");
+    t.add("vx", "m/s");
+    t.add("vy", "m/s");
+    for (std::size_t i = 0; i < pr.pos.size(); ++i) {
+        const Vec2 x = pr.pos[i], v = pr.vel[i];
+        add_row(t, {x.x / s.d, x.y / s.d, v.x * tau / s.d, v.y * tau / s.d, v.x, v.y});
+    }
+}
+
+// Fig. 5 bottom: a cross per cell. Half-length of an arm: |sigma| / sigma_max of the panel times
+// 0.45 cell widths, so that sigma_max has the same length in every panel (as in the paper).
+void fig5_stress(Result& res, const ImpactSpec& s, const PointResult& pr, const std::string& lb, double l) {
+    const int nc = s.stress_cells;
+    const double smax = pr.sigma_max, cell = l / nc / s.d;
+    Table& t = res.table("fig5_stress_" + lb, "principal stresses of Eq. (9) per cell, stress window (seed 0)");
+    const char* const cols[][2] = {{"x_over_d", "1"}, {"y_over_d", "1"}, {"sigma_1", "N/m"}, {"sigma_2", "N/m"},
+                                   {"axis1_x_over_d", "1"}, {"axis1_y_over_d", "1"}, {"axis2_x_over_d", "1"},
+                                   {"axis2_y_over_d", "1"}, {"collisions", "1"}, {"pressure", "N/m"}};
+    for (const auto& c : cols) t.add(c[0], c[1]);
+    for (int iy = 0; iy < nc; ++iy)
+        for (int ix = 0; ix < nc; ++ix) {
+            const auto& c = pr.cells[static_cast<std::size_t>(ix + nc * iy)];
+            const double h1 = smax > 0 ? 0.45 * cell * std::fabs(c.sigma_min) / smax : 0.0;
+            const double h2 = smax > 0 ? 0.45 * cell * std::fabs(c.sigma_max) / smax : 0.0;
+            // sigma_1, sigma_2: the compressive principal stresses, positive.
+            add_row(t, {(ix + 0.5) * cell, (iy + 0.5) * cell, -c.sigma_min, -c.sigma_max, h1 * c.axis_min.x(), h1 * c.axis_min.y(),
+                        h2 * c.axis_max.x(), h2 * c.axis_max.y(), static_cast<double>(c.collisions), c.pressure()});
+        }
+}
+
+// One panel of Fig. 5 per r: the figure run (seed 0), and how typical it is over the seeds.
+void fig5_panels(Result& res, const ImpactSpec& s, const std::vector<PointResult>& pts, double l) {
+    std::vector<double> sig_max, v_rms, taus;
+    for (std::size_t k = 0; k < s.n_r(); ++k) {
+        const PointResult& pr = pts[k];
+        const std::string lb = label("r", s.restitutions[k], "%.2f");
         // Arrows: a particle moving at the panel's rms speed gets an arrow of arrow_rms_length d;
         // tau [s] turns a velocity into an arrow length (the paper's factors 1, 3, 7 play this role).
-        taus[k] = v_rms[k] > 0 ? arrow_rms * d / v_rms[k] : 0.0;
-        std::vector<double> cx, cy, avx, avy, vx, vy;
-        for (std::size_t i = 0; i < n; ++i) {
-            cx.push_back(pr.pos[i].x / d);
-            cy.push_back(pr.pos[i].y / d);
-            avx.push_back(pr.vel[i].x * taus[k] / d);
-            avy.push_back(pr.vel[i].y * taus[k] / d);
-            vx.push_back(pr.vel[i].x);
-            vy.push_back(pr.vel[i].y);
-        }
-        {
-            Table& ts = res.table("fig5_snapshot_" + lb, "particles at t = t_end with velocity arrows (seed 0)");
-            ts.add("x_over_d", "1").values = cx;
-            ts.add("y_over_d", "1").values = cy;
-            ts.add("arrow_x_over_d", "1").values = avx;
-            ts.add("arrow_y_over_d", "1").values = avy;
-            ts.add("vx", "m/s").values = vx;
-            ts.add("vy", "m/s").values = vy;
-        }
-        const double smax = pr.sigma_max;
-        sig_max[k] = smax;
-        // Half-length of a cross arm: |sigma| / sigma_max of the panel times 0.45 cell widths, so
-        // that sigma_max has the same length in every panel (as in the paper's Fig. 5).
-        const double cell = l / nc / d;
-        std::vector<double> sx, sy, s1, s2, a1x, a1y, a2x, a2y, ncol, press;
-        for (int iy = 0; iy < nc; ++iy)
-            for (int ix = 0; ix < nc; ++ix) {
-                const auto& c = pr.cells[static_cast<std::size_t>(ix + nc * iy)];
-                const double h1 = smax > 0 ? 0.45 * cell * std::fabs(c.sigma_min) / smax : 0.0;
-                const double h2 = smax > 0 ? 0.45 * cell * std::fabs(c.sigma_max) / smax : 0.0;
-                sx.push_back((ix + 0.5) * cell);
-                sy.push_back((iy + 0.5) * cell);
-                s1.push_back(-c.sigma_min); // compressive principal stresses, positive
-                s2.push_back(-c.sigma_max);
-                a1x.push_back(h1 * c.axis_min.x());
-                a1y.push_back(h1 * c.axis_min.y());
-                a2x.push_back(h2 * c.axis_max.x());
-                a2y.push_back(h2 * c.axis_max.y());
-                ncol.push_back(static_cast<double>(c.collisions));
-                press.push_back(c.pressure());
-            }
-        {
-            Table& tst = res.table("fig5_stress_" + lb, "principal stresses of Eq. (9) per cell, stress window (seed 0)");
-            tst.add("x_over_d", "1").values = sx;
-            tst.add("y_over_d", "1").values = sy;
-            tst.add("sigma_1", "N/m").values = s1;
-            tst.add("sigma_2", "N/m").values = s2;
-            tst.add("axis1_x_over_d", "1").values = a1x;
-            tst.add("axis1_y_over_d", "1").values = a1y;
-            tst.add("axis2_x_over_d", "1").values = a2x;
-            tst.add("axis2_y_over_d", "1").values = a2y;
-            tst.add("collisions", "1").values = ncol;
-            tst.add("pressure", "N/m").values = press;
-        }
-        res.scalar("sigma_max_" + lb, smax, "N/m", "largest principal stress magnitude over the cells (Eq. 9, stress window)");
-        res.scalar("v_rms_end_" + lb, v_rms[k], "m/s", "rms speed at t_end (seed 0)");
-        res.scalar("arrow_tau_" + lb, taus[k], "s", "arrow length / velocity in the snapshot panel");
-        res.scalar("K_end_over_K0_" + lb, 0.5 * m * v2 / pr.k0, "1",
-                   "translational kinetic energy at t_end over K(0) (seed 0)");
+        const double tau = pr.v_rms > 0 ? s.arrow_rms_length * s.d / pr.v_rms : 0.0;
+        fig5_snapshot(res, s, pr, lb, tau);
+        fig5_stress(res, s, pr, lb, l);
+        sig_max.push_back(pr.sigma_max);
+        v_rms.push_back(pr.v_rms);
+        taus.push_back(tau);
+        res.scalar("sigma_max_" + lb, pr.sigma_max, "N/m", "largest principal stress magnitude over the cells (Eq. 9, stress window)");
+        res.scalar("v_rms_end_" + lb, pr.v_rms, "m/s", "rms speed at t_end (seed 0)");
+        res.scalar("arrow_tau_" + lb, tau, "s", "arrow length / velocity in the snapshot panel");
+        res.scalar("K_end_over_K0_" + lb, pr.k_end / pr.k0, "1", "translational kinetic energy at t_end over K(0) (seed 0)");
         res.scalar("flow_fraction_end_" + lb, pr.flow_fraction, "1",
                    "K of the velocity field averaged over the stress cells, over K, at t_end (seed 0)");
-        // Over all seeds: how typical the figure run is.
         double ff = 0.0, sm = 0.0;
-        for (std::size_t s = 0; s < n_seeds; ++s) {
-            ff += points[s * per_seed + k].flow_fraction;
-            sm += points[s * per_seed + k].sigma_max;
+        for (std::size_t seed = 0; seed < s.n_seeds(); ++seed) {
+            ff += at(s, pts, seed, k).flow_fraction;
+            sm += at(s, pts, seed, k).sigma_max;
         }
-        res.scalar("flow_fraction_mean_" + lb, ff / static_cast<double>(n_seeds), "1", "flow_fraction_end averaged over seeds");
-        res.scalar("sigma_max_mean_" + lb, sm / static_cast<double>(n_seeds), "N/m", "sigma_max averaged over seeds");
+        res.scalar("flow_fraction_mean_" + lb, ff / static_cast<double>(s.n_seeds()), "1", "flow_fraction_end averaged over seeds");
+        res.scalar("sigma_max_mean_" + lb, sm / static_cast<double>(s.n_seeds()), "N/m", "sigma_max averaged over seeds");
     }
-    {
-        Table& tm = res.table("fig5_meta", "per panel: r, box side, arrow scale, sigma_max, rms speed at t_end");
-        tm.add("r", "1").values = rs;
-        tm.add("box_over_d", "1").values = std::vector<double>(rs.size(), l / d);
-        tm.add("sigma_max", "N/m").values = sig_max;
-        tm.add("v_rms", "m/s").values = v_rms;
-        tm.add("arrow_tau", "s").values = taus;
-    }
-    // Ordering of the panels' sigma_max; the paper's values are in arbitrary units, only ratios
-    // are comparable: 0.894 / 0.568 = 1.57 (r = 0.8 over 0.9), 1.56 / 0.568 = 2.75 (0.95 over 0.9).
-    auto find_r = [&](double r) -> long {
-        for (std::size_t k = 0; k < rs.size(); ++k)
-            if (std::fabs(rs[k] - r) < 1e-9) return static_cast<long>(k);
-        return -1;
-    };
-    const long k8 = find_r(0.8), k9 = find_r(0.9), k95 = find_r(0.95);
-    if (k8 >= 0 && k9 >= 0 && k95 >= 0) {
-        res.scalar("sigma_max_ratio_080_over_090", sig_max[k8] / sig_max[k9], "1", "sigma_max(r=0.8)/sigma_max(r=0.9)");
-        res.scalar("sigma_max_ratio_095_over_090", sig_max[k95] / sig_max[k9], "1", "sigma_max(r=0.95)/sigma_max(r=0.9)");
-        res.scalar("v_rms_ratio_080_over_095", v_rms[k8] / v_rms[k95], "1", "rms speed at t_end, r=0.8 over r=0.95");
-        // Seeds whose panels are ordered as the paper's (0.95 largest, then 0.8, then 0.9).
-        double n_090_lowest = 0, n_095_highest = 0;
-        for (std::size_t s = 0; s < n_seeds; ++s) {
-            const double a = points[s * per_seed + static_cast<std::size_t>(k8)].sigma_max;
-            const double b = points[s * per_seed + static_cast<std::size_t>(k9)].sigma_max;
-            const double c = points[s * per_seed + static_cast<std::size_t>(k95)].sigma_max;
-            n_090_lowest += (b < a && b < c);
-            n_095_highest += (c > a && c > b);
-        }
-        res.scalar("seeds_sigma_max_090_lowest", n_090_lowest / static_cast<double>(n_seeds), "1",
-                   "fraction of seeds where sigma_max(0.9) is the smallest of the three (as in the paper)");
-        res.scalar("seeds_sigma_max_095_highest", n_095_highest / static_cast<double>(n_seeds), "1",
-                   "fraction of seeds where sigma_max(0.95) is the largest of the three (as in the paper)");
-    }
+    Table& tm = res.table("fig5_meta", "per panel: r, box side, arrow scale, sigma_max, rms speed at t_end");
+    tm.add("r", "1").values = s.restitutions;
+    tm.add("box_over_d", "1").values = std::vector<double>(s.n_r(), l / s.d);
+    tm.add("sigma_max", "N/m").values = sig_max;
+    tm.add("v_rms", "m/s").values = v_rms;
+    tm.add("arrow_tau", "s").values = taus;
+}
 
-    // Fig. 5's arrows: the paper scales them by 1, 3, 7 (left to right), which, read as
-    // arrow = velocity x factor drawn at a similar length, means v(0.8) > v(0.9) > v(0.95).
-    if (k8 >= 0 && k9 >= 0 && k95 >= 0) {
-        double ordered = 0, reversed = 0, stress_order = 0, r89 = 0, r895 = 0;
-        for (std::size_t s = 0; s < n_seeds; ++s) {
-            const double a = points[s * per_seed + static_cast<std::size_t>(k8)].v_rms;
-            const double b = points[s * per_seed + static_cast<std::size_t>(k9)].v_rms;
-            const double c = points[s * per_seed + static_cast<std::size_t>(k95)].v_rms;
-            ordered += (a > b && b > c);
-            reversed += (a < b && b < c);
-            stress_order += (c > a && a > b);
-            r89 += std::log(a / b) / static_cast<double>(n_seeds);
-            r895 += std::log(a / c) / static_cast<double>(n_seeds);
-        }
-        res.scalar("seeds_v_rms_order_080_090_095", ordered / static_cast<double>(n_seeds), "1",
-                   "fraction of seeds with v_rms(0.8) > v_rms(0.9) > v_rms(0.95) at t_end (the paper's arrow factors 1, 3, 7)");
-        res.scalar("seeds_v_rms_order_reversed", reversed / static_cast<double>(n_seeds), "1",
-                   "fraction of seeds with v_rms(0.8) < v_rms(0.9) < v_rms(0.95) (homogeneous cooling: v ~ 1/((1 - r^2) t))");
-        res.scalar("seeds_v_rms_order_095_080_090", stress_order / static_cast<double>(n_seeds), "1",
-                   "fraction of seeds with v_rms(0.95) > v_rms(0.8) > v_rms(0.9), the order of the paper's sigma_max values 1.56 > 0.894 > 0.568");
-        res.scalar("v_rms_ratio_080_over_090_geomean", std::exp(r89), "1", "v_rms(0.8)/v_rms(0.9) at t_end, geometric mean over seeds (paper's factors: 3)");
-        res.scalar("v_rms_ratio_080_over_095_geomean", std::exp(r895), "1", "v_rms(0.8)/v_rms(0.95) at t_end, geometric mean over seeds (paper's factors: 7)");
+long find_r(const std::vector<double>& rs, double r) {
+    for (std::size_t k = 0; k < rs.size(); ++k)
+        if (std::fabs(rs[k] - r) < 1e-9) return static_cast<long>(k);
+    return -1;
+}
+
+// The ordering of Fig. 5's panels over seeds, when r = 0.8, 0.9 and 0.95 are all swept.
+// sigma_max: the paper's values are in arbitrary units, only ratios are comparable: 0.894 / 0.568 =
+// 1.57 (r = 0.8 over 0.9), 1.56 / 0.568 = 2.75 (0.95 over 0.9). Arrows: the paper scales them by
+// 1, 3, 7 (left to right), which, read as arrow = velocity x factor drawn at a similar length,
+// means v(0.8) > v(0.9) > v(0.95).
+void fig5_orderings(Result& res, const ImpactSpec& s, const std::vector<PointResult>& pts) {
+    const long k8 = find_r(s.restitutions, 0.8), k9 = find_r(s.restitutions, 0.9), k95 = find_r(s.restitutions, 0.95);
+    if (k8 < 0 || k9 < 0 || k95 < 0) return;
+    const PointResult &f8 = pts[std::size_t(k8)], &f9 = pts[std::size_t(k9)], &f95 = pts[std::size_t(k95)]; // seed 0
+    res.scalar("sigma_max_ratio_080_over_090", f8.sigma_max / f9.sigma_max, "1", "sigma_max(r=0.8)/sigma_max(r=0.9)");
+    res.scalar("sigma_max_ratio_095_over_090", f95.sigma_max / f9.sigma_max, "1", "sigma_max(r=0.95)/sigma_max(r=0.9)");
+    res.scalar("v_rms_ratio_080_over_095", f8.v_rms / f95.v_rms, "1", "rms speed at t_end, r=0.8 over r=0.95");
+    const double ns = static_cast<double>(s.n_seeds());
+    double n_090_lowest = 0, n_095_highest = 0, ordered = 0, reversed = 0, stress_order = 0, r89 = 0, r895 = 0;
+    for (std::size_t seed = 0; seed < s.n_seeds(); ++seed) {
+        const PointResult &p8 = at(s, pts, seed, std::size_t(k8)), &p9 = at(s, pts, seed, std::size_t(k9)),
+                          &p95 = at(s, pts, seed, std::size_t(k95));
+        // Seeds whose panels are ordered as the paper's (0.95 largest, then 0.8, then 0.9).
+        n_090_lowest += (p9.sigma_max < p8.sigma_max && p9.sigma_max < p95.sigma_max);
+        n_095_highest += (p95.sigma_max > p8.sigma_max && p95.sigma_max > p9.sigma_max);
+        const double a = p8.v_rms, b = p9.v_rms, c = p95.v_rms;
+        ordered += (a > b && b > c);
+        reversed += (a < b && b < c);
+        stress_order += (c > a && a > b);
+        r89 += std::log(a / b) / ns;
+        r895 += std::log(a / c) / ns;
     }
-    // Fig. 5 left: two co-rotating eddies with small stresses inside.
-    for (std::size_t k = 0; k < rs.size(); ++k) {
-        const std::string lb = label("r", rs[k], "%.2f");
-        const double need = p.real("eddy_significance");
-        double found = 0, e_sum = 0;
-        std::vector<double> ratios;
-        for (std::size_t s = 0; s < n_seeds; ++s) {
-            const PointResult& pr = points[s * per_seed + k];
-            e_sum += pr.eddy_strength / static_cast<double>(n_seeds);
-            if (pr.eddy_beats >= need) {
+    res.scalar("seeds_sigma_max_090_lowest", n_090_lowest / ns, "1",
+               "fraction of seeds where sigma_max(0.9) is the smallest of the three (as in the paper)");
+    res.scalar("seeds_sigma_max_095_highest", n_095_highest / ns, "1",
+               "fraction of seeds where sigma_max(0.95) is the largest of the three (as in the paper)");
+    res.scalar("seeds_v_rms_order_080_090_095", ordered / ns, "1",
+               "fraction of seeds with v_rms(0.8) > v_rms(0.9) > v_rms(0.95) at t_end (the paper's arrow factors 1, 3, 7)");
+    res.scalar("seeds_v_rms_order_reversed", reversed / ns, "1",
+               "fraction of seeds with v_rms(0.8) < v_rms(0.9) < v_rms(0.95) (homogeneous cooling: v ~ 1/((1 - r^2) t))");
+    res.scalar("seeds_v_rms_order_095_080_090", stress_order / ns, "1",
+               "fraction of seeds with v_rms(0.95) > v_rms(0.8) > v_rms(0.9), the order of the paper's sigma_max values 1.56 > 0.894 > 0.568");
+    res.scalar("v_rms_ratio_080_over_090_geomean", std::exp(r89), "1", "v_rms(0.8)/v_rms(0.9) at t_end, geometric mean over seeds (paper's factors: 3)");
+    res.scalar("v_rms_ratio_080_over_095_geomean", std::exp(r895), "1", "v_rms(0.8)/v_rms(0.95) at t_end, geometric mean over seeds (paper's factors: 7)");
+}
+
+double median(std::vector<double> x) {
+    std::sort(x.begin(), x.end());
+    return x.empty() ? NAN : x.size() % 2 ? x[x.size() / 2] : 0.5 * (x[x.size() / 2 - 1] + x[x.size() / 2]);
+}
+
+// Fig. 5 left: two co-rotating eddies with small stresses inside.
+void fig5_eddies(Result& res, const ImpactSpec& s, const std::vector<PointResult>& pts) {
+    const double ns = static_cast<double>(s.n_seeds());
+    for (std::size_t k = 0; k < s.n_r(); ++k) {
+        const std::string lb = label("r", s.restitutions[k], "%.2f");
+        double found = 0, e_sum = 0, mean = 0, m2 = 0, cnt = 0;
+        std::vector<double> ratios, all; // significant pairs; every seed's strongest pair
+        for (std::size_t seed = 0; seed < s.n_seeds(); ++seed) {
+            const PointResult& pr = at(s, pts, seed, k);
+            e_sum += pr.eddy_strength / ns;
+            if (pr.eddy_beats >= s.eddy_significance) {
                 found += 1;
                 if (std::isfinite(pr.eddy_core_pressure_ratio)) ratios.push_back(pr.eddy_core_pressure_ratio);
             }
+            const double x = pr.eddy_core_pressure_ratio;
+            if (std::isfinite(x)) { mean += x; m2 += x * x; cnt += 1; all.push_back(x); }
         }
-        res.scalar("eddy_pair_fraction_" + lb, found / static_cast<double>(n_seeds), "1",
+        res.scalar("eddy_pair_fraction_" + lb, found / ns, "1",
                    "fraction of seeds whose strongest co-rotating eddy pair at t_end beats at least eddy_significance of its velocity shuffles");
         res.scalar("eddy_strength_mean_" + lb, e_sum, "1", "eddy-pair strength E at t_end, mean over seeds");
-        std::sort(ratios.begin(), ratios.end());
-        const double med = ratios.empty() ? NAN
-                         : ratios.size() % 2 ? ratios[ratios.size() / 2]
-                                             : 0.5 * (ratios[ratios.size() / 2 - 1] + ratios[ratios.size() / 2]);
-        res.scalar("eddy_core_pressure_ratio_median_" + lb, med, "1",
+        res.scalar("eddy_core_pressure_ratio_median_" + lb, median(ratios), "1",
                    "mean Eq. (9) pressure (0.5-1 s) of the stress cells in the two eddy cores over that of the other cells, median over seeds with a significant pair");
         res.scalar("eddy_core_pressure_ratio_seeds_" + lb, static_cast<double>(ratios.size()), "1", "seeds entering that median");
-        // The same for the strongest pair of every seed, significant or not (always defined).
-        std::vector<double> all;
-        for (std::size_t s = 0; s < n_seeds; ++s) all.push_back(points[s * per_seed + k].eddy_core_pressure_ratio);
-        double mean = 0, m2 = 0, cnt = 0;
-        for (double x : all)
-            if (std::isfinite(x)) { mean += x; m2 += x * x; cnt += 1; }
-        std::erase_if(all, [](double x) { return !std::isfinite(x); });
-        std::sort(all.begin(), all.end());
-        const double med_all = all.empty() ? NAN : all.size() % 2 ? all[all.size() / 2] : 0.5 * (all[all.size() / 2 - 1] + all[all.size() / 2]);
-        res.scalar("eddy_core_pressure_ratio_median_all_" + lb, med_all, "1",
+        res.scalar("eddy_core_pressure_ratio_median_all_" + lb, median(all), "1",
                    "the same ratio for every seed's strongest co-rotating pair, significant or not, median over seeds");
         if (cnt >= 2) {
             mean /= cnt;
@@ -678,29 +726,43 @@ Result run(const RunContext& ctx) {
                        "standard error of that mean (seed scatter)");
         }
     }
+}
 
-    // Cooling curves of the figure runs, for reference (Eq. 18 with t0 of Eq. 19).
-    std::vector<std::vector<double>> kcols;
-    const double s_star = (1 - rho) * (1 - rho) / (1 - 7 * rho / 16);
-    for (std::size_t k = 0; k < rs.size(); ++k) {
-        const std::string lb = label("r", rs[k], "%.2f");
+// Cooling curves of the figure runs, for reference: Eq. (18) with t0 of Eq. (19) as printed.
+void cooling_curves(Result& res, const ImpactSpec& s, const std::vector<PointResult>& pts) {
+    Table& tk = res.table("cooling", "K(t)/K(0) of the figure runs (seed 0) and Eq. (18) with t0 from Eq. (19)");
+    tk.add("t", "s").values = pts[0].k_t;
+    for (std::size_t k = 0; k < s.n_r(); ++k) {
+        const std::string lb = label("r", s.restitutions[k], "%.2f");
+        const double t0h = theory::luding_eq19_t0_printed(s.restitutions[k], s.rho, s.d, s.vbar);
         std::vector<double> kk, haff;
-        const double t0h = std::sqrt(M_PI) * d * s_star / (2 * (1 - rs[k] * rs[k]) * rho * vbar);
-        for (std::size_t s = 0; s < points[k].k_t.size(); ++s) {
-            kk.push_back(points[k].k_val[s] / points[k].k0);
-            haff.push_back(std::pow(1.0 + points[k].k_t[s] / t0h, -2.0));
+        for (std::size_t i = 0; i < pts[k].k_t.size(); ++i) {
+            kk.push_back(pts[k].k_val[i] / pts[k].k0);
+            haff.push_back(std::pow(1.0 + pts[k].k_t[i] / t0h, -2.0));
         }
-        kcols.push_back(kk);
-        kcols.push_back(haff);
+        tk.add("K_over_K0_" + lb, "1").values = kk;
+        tk.add("haff_" + lb, "1").values = haff;
         res.scalar("haff_t0_" + lb, t0h, "s", "t0 of Eq. (19) at rho, r and vbar");
     }
-    Table& tk = res.table("cooling", "K(t)/K(0) of the figure runs (seed 0) and Eq. (18) with t0 from Eq. (19)");
-    tk.add("t", "s").values = points[0].k_t;
-    for (std::size_t k = 0; k < rs.size(); ++k) {
-        const std::string lb = label("r", rs[k], "%.2f");
-        tk.add("K_over_K0_" + lb, "1").values = kcols[2 * k];
-        tk.add("haff_" + lb, "1").values = kcols[2 * k + 1];
-    }
+}
+
+Result run(const RunContext& ctx) {
+    const auto s = read_spec<ImpactSpec>(ctx.params);
+    const std::vector<PointResult> pts = sweep(ctx, s);
+    Result res;
+    const double l = box_side(static_cast<std::size_t>(s.N), s.d, s.rho);
+    res.scalar("box_side", l, "m", "side of the periodic square box at rho (N pi d^2 / (4 L^2) = rho)");
+    res.scalar("box_side_over_d", l / s.d, "1", "box side in diameters");
+    std::vector<double> centres(static_cast<std::size_t>(s.n_bins));
+    for (int b = 0; b < s.n_bins; ++b) centres[static_cast<std::size_t>(b)] = (b + 0.5) / s.n_bins;
+    fig4_inelastic(res, s, pts, centres);
+    fig4_windows(res, s, pts, centres);
+    fig4_elastic(res, s, pts, centres);
+    fig4_elastic_3d(res, s, pts, centres);
+    fig5_panels(res, s, pts, l);
+    fig5_orderings(res, s, pts);
+    fig5_eddies(res, s, pts);
+    cooling_curves(res, s, pts);
     return res;
 }
 

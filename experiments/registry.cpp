@@ -29,7 +29,7 @@ const std::vector<Experiment>& experiment_registry() {
         experiments::brake_failure(),
         experiments::emergency_brake(),
         distributed(experiments::bistable_pipe()),
-        experiments::impact_parameter(),
+        distributed(experiments::impact_parameter()),
         experiments::cooling(),
         distributed(experiments::pipe_arching()),
         distributed(experiments::parameter_study()),
