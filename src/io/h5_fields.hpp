@@ -12,15 +12,17 @@
 //                                                  int64, bool as 0/1, double as float64)
 //   Vec2                                         -> attributes <name>_x, <name>_y
 //   std::vector of double / int32 / uint8 / uint32 / uint64 -> 1-D datasets
-//   std::vector<Vec2>                            -> an (n, 2) dataset
+//   std::vector<Vec2>                            -> datasets <name>_x, <name>_y
 //   a struct with fields()                       -> a group <name>
 //   std::vector of such structs                  -> a group <name> with attribute "count" and
 //                                                  groups "0", "1", ...
 // Every value is written at full precision and read back bit for bit.
 #pragma once
 #include <cstdint>
+#include <stdexcept>
 #include <string>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "core/vec2.hpp"
@@ -37,6 +39,16 @@ template <class T>
 constexpr bool is_array_element = std::is_same_v<T, double> || std::is_same_v<T, std::int32_t> ||
                                   std::is_same_v<T, std::uint8_t> || std::is_same_v<T, std::uint32_t> ||
                                   std::is_same_v<T, std::uint64_t>;
+
+// An integer attribute read into T: a value T cannot hold throws rather than wrapping (a stored
+// -1 would otherwise pass as 4294967295 into a uint32 field).
+template <class T>
+T read_integer(const H5Object& g, const std::string& name) {
+    const long v = g.read_long_attr(name);
+    if (!std::in_range<T>(v))
+        throw std::runtime_error("HDF5 attribute " + name + " = " + std::to_string(v) + " is out of range");
+    return T(v);
+}
 
 template <class T>
 void put(const H5Object& g, const std::string& name, const T& x);
@@ -80,8 +92,8 @@ void get(const H5Object& g, const std::string& name, T& x) {
     if constexpr (std::is_same_v<T, double>) x = g.read_double_attr(name);
     else if constexpr (std::is_same_v<T, std::uint64_t>) x = g.read_u64_attr(name);
     else if constexpr (std::is_same_v<T, bool>) x = g.read_long_attr(name) != 0;
-    else if constexpr (std::is_enum_v<T>) x = T(g.read_long_attr(name));
-    else if constexpr (std::is_integral_v<T>) x = T(g.read_long_attr(name));
+    else if constexpr (std::is_enum_v<T>) x = T(read_integer<std::underlying_type_t<T>>(g, name));
+    else if constexpr (std::is_integral_v<T>) x = read_integer<T>(g, name);
     else if constexpr (std::is_same_v<T, std::string>) x = g.read_string_attr(name);
     else if constexpr (std::is_same_v<T, Vec2>) x = {g.read_double_attr(name + "_x"), g.read_double_attr(name + "_y")};
     else if constexpr (HasFields<T>) get_fields(g.open_group(name), x);
@@ -89,7 +101,7 @@ void get(const H5Object& g, const std::string& name, T& x) {
     else if constexpr (is_array_element<typename T::value_type>) x = g.template read_array<typename T::value_type>(name);
     else {
         const H5Object h = g.open_group(name);
-        x.assign(std::size_t(h.read_long_attr("count")), typename T::value_type{});
+        x.assign(read_integer<std::size_t>(h, "count"), typename T::value_type{});
         for (std::size_t k = 0; k < x.size(); ++k) get_fields(h.open_group(std::to_string(k)), x[k]);
     }
 }

@@ -34,6 +34,12 @@ struct RoughDiskCollision {
     double beta0 = -1.0; // maximal tangential restitution [-], -1 <= beta0 <= 1
     double q = 0.4;      // I = q m a^2 [-]; 2/5 reproduces the paper's 2/7, 1/2 = solid disks
 
+    // The one list of parameters, walked by the state files (io/h5_fields.hpp).
+    template <class V>
+    void fields(V&& v) {
+        v("r", r), v("mu", mu), v("beta0", beta0), v("q", q);
+    }
+
     struct Result {
         Vec2 dP;              // momentum change of body 1 [kg m/s]; body 2 receives -dP
         double dw1 = 0.0;     // spin change of body 1 [1/s]

@@ -125,6 +125,28 @@ TEST(EdStateFile, RejectsOtherGroups) {
     EXPECT_THROW(read_dsmc_state(f.open_group("empty")), std::runtime_error);
 }
 
+TEST(DsmcStateFile, RejectsUnknownChoices) {
+    // The walk reads any integer the field can hold; the reader then refuses what is no choice.
+    TempDir dir;
+    const fs::path file = dir.path / "x.h5";
+    DsmcState mode, partner, block;
+    mode.config.free_volume = DsmcFreeVolume(3);
+    partner.config.partner = DsmcPartner(2);
+    block.config.free_volume_block = 0;
+    {
+        const H5File f = H5File::create(file.string());
+        write_dsmc_state(f.group("good"), DsmcState{});
+        write_dsmc_state(f.group("mode"), mode);
+        write_dsmc_state(f.group("partner"), partner);
+        write_dsmc_state(f.group("block"), block);
+    }
+    const H5File f = H5File::open(file.string());
+    EXPECT_NO_THROW(read_dsmc_state(f.open_group("good")));
+    EXPECT_THROW(read_dsmc_state(f.open_group("mode")), std::runtime_error);
+    EXPECT_THROW(read_dsmc_state(f.open_group("partner")), std::runtime_error);
+    EXPECT_THROW(read_dsmc_state(f.open_group("block")), std::runtime_error);
+}
+
 TEST(DsmcStateFile, ResumedFromFileIsBitIdentical) {
     const std::size_t n = 1500;
     const double l = kD * std::sqrt(n * M_PI / (4.0 * 0.25));

@@ -55,6 +55,15 @@ struct Everything {
     }
 };
 
+// Reads Everything's "n" into a narrower type.
+struct NarrowN {
+    std::uint32_t n = 0;
+    template <class V>
+    void fields(V&& v) {
+        v("n", n);
+    }
+};
+
 std::vector<std::uint64_t> bits(const std::vector<double>& v) {
     std::vector<std::uint64_t> b;
     for (double x : v) b.push_back(std::bit_cast<std::uint64_t>(x));
@@ -135,6 +144,26 @@ TEST(H5Fields, AMissingFieldThrows) {
     const H5File f = H5File::open(file.string());
     Everything r;
     EXPECT_ANY_THROW(read_fields(f.open_group("e"), r));
+}
+
+TEST(H5Fields, AnIntegerTheFieldCannotHoldThrows) {
+    // A stored -1 must not wrap into a valid uint32 (a state reader's ">= 1" check would pass).
+    TempDir dir;
+    const fs::path file = dir.path / "f.h5";
+    {
+        const H5File f = H5File::create(file.string());
+        Everything e;
+        write_fields(f.group("fits"), e);
+        e.n = -1;
+        write_fields(f.group("negative"), e);
+        e.n = long(1) << 32;
+        write_fields(f.group("too_big"), e);
+    }
+    const H5File f = H5File::open(file.string());
+    NarrowN r;
+    EXPECT_NO_THROW(read_fields(f.open_group("fits"), r));
+    EXPECT_ANY_THROW(read_fields(f.open_group("negative"), r));
+    EXPECT_ANY_THROW(read_fields(f.open_group("too_big"), r));
 }
 
 namespace {

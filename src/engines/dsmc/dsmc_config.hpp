@@ -85,6 +85,17 @@ struct DsmcConfig {
 
     std::uint64_t seed = 1;   // run seed
     std::uint64_t stream = 0; // stream index (independent sweep points)
+
+    // The one list of fields, walked by the state files (io/h5_fields.hpp).
+    template <class V>
+    void fields(V&& v) {
+        v("lx", lx), v("ly", ly), v("r", r), v("q", q), v("t_c", t_c), v("step_factor", step_factor);
+        v("resample_interval", resample_interval), v("min_cell_diameters", min_cell_diameters);
+        v("partner", partner), v("no_repeat_partner", no_repeat_partner), v("mft_fraction", mft_fraction);
+        v("free_volume", free_volume), v("rcp_fraction", rcp_fraction);
+        v("free_volume_floor", free_volume_floor), v("free_volume_block", free_volume_block);
+        v("displacement", displacement), v("seed", seed), v("stream", stream);
+    }
 };
 
 } // namespace granrepro

@@ -36,6 +36,19 @@ struct DsmcState {
     std::uint64_t resample_collisions = 0; // collisions at the last resampling
 
     std::vector<unsigned char> rng_state; // RngStream::state()
+
+    // The one list of fields, walked by the state files (io/h5_fields.hpp): a field left out
+    // here is neither saved nor restored.
+    template <class V>
+    void fields(V&& v) {
+        v("config", config), v("time", time), v("tau", tau), v("v_max", v_max), v("steps", steps);
+        v("position", position), v("velocity", velocity), v("radius", radius), v("mass", mass);
+        v("last_collision_time", last_collision_time), v("collision_count", collision_count);
+        v("last_partner", last_partner), v("collisions", collisions);
+        v("elastic_collisions", elastic_collisions), v("candidates", candidates);
+        v("vmax_raises", vmax_raises), v("exposure", exposure), v("resample_time", resample_time);
+        v("resample_collisions", resample_collisions), v("rng_state", rng_state);
+    }
 };
 
 } // namespace granrepro

@@ -33,6 +33,15 @@ struct EdConfig {
     // 1e-7 * (mean diameter / rms speed) when a run starts.
     std::uint32_t collapse_limit = 2000;
     double collapse_window = 0.0;
+
+    // The one list of fields, walked by the state files (io/h5_fields.hpp).
+    template <class V>
+    void fields(V&& v) {
+        v("lx", lx), v("ly", ly), v("periodic_x", periodic_x), v("periodic_y", periodic_y);
+        v("gravity", gravity), v("law", law), v("walls", walls), v("t_c", t_c), v("tc_both", tc_both);
+        v("tc_keep_friction", tc_keep_friction), v("cell_size_factor", cell_size_factor);
+        v("collapse_limit", collapse_limit), v("collapse_window", collapse_window);
+    }
 };
 
 } // namespace granrepro

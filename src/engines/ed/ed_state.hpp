@@ -40,6 +40,23 @@ struct EdState {
     std::uint64_t crossings = 0;
     std::uint64_t stale_events = 0;
     double max_overlap = 0.0;                 // [m]
+
+    // The one list of fields, walked by the state files (io/h5_fields.hpp): a field left out
+    // here is neither saved nor restored.
+    template <class V>
+    void fields(V&& v) {
+        v("config", config), v("time", time), v("x", x), v("y", y), v("vx", vx), v("vy", vy);
+        v("spin", spin), v("local_time", local_time), v("radius", radius), v("mass", mass);
+        v("last_collision_time", last_collision_time), v("burst_start", burst_start);
+        v("predicted_time", predicted_time), v("collision_time", collision_time);
+        v("collision_count", collision_count), v("partner_count", partner_count);
+        v("last_partner", last_partner), v("partner", partner), v("event_kind", event_kind);
+        v("event_arg", event_arg), v("burst_count", burst_count), v("cell", cell);
+        v("cell_next", cell_next), v("cell_prev", cell_prev), v("cell_head", cell_head);
+        v("pair_collisions", pair_collisions), v("wall_collisions", wall_collisions);
+        v("elastic_collisions", elastic_collisions), v("events", events), v("crossings", crossings);
+        v("stale_events", stale_events), v("max_overlap", max_overlap);
+    }
 };
 
 } // namespace granrepro

@@ -12,6 +12,13 @@ struct EdWall {
     double mu = 0.0;       // Coulomb friction mu_w [-]
     double beta0 = -1.0;   // maximal tangential restitution beta0_w [-]
     bool enabled = true;   // a disabled wall is ignored (e.g. the pipe's bottom removed at t = 0)
+
+    // The one list of fields, walked by the state files (io/h5_fields.hpp).
+    template <class V>
+    void fields(V&& v) {
+        v("axis", axis), v("position", position), v("side", side), v("r", r), v("mu", mu);
+        v("beta0", beta0), v("enabled", enabled);
+    }
 };
 
 } // namespace granrepro
