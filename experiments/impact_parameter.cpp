@@ -413,7 +413,7 @@ nlohmann::json run_point(const ImpactSpec& s, std::uint64_t seed, std::size_t i)
 // Every point goes through distributed_sweep(), so threads, MPI ranks and --points shards give the
 // same bits. Costliest first, as measured at quick scale: the 3D points (every event moves all
 // spheres), the cooling runs (mostly eddy shuffles), the elastic 2D runs; each group dilute first.
-std::vector<PointResult> sweep(const RunContext& ctx, const ImpactSpec& s) {
+std::vector<PointResult> sweep(const RunContext& ctx, const ImpactSpec& s, long& resumed) {
     std::vector<long> order(s.n_2d() + s.elastic3d_packing.size());
     std::iota(order.begin(), order.end(), 0L);
     auto cost_rank = [&](long i) {
@@ -427,6 +427,7 @@ std::vector<PointResult> sweep(const RunContext& ctx, const ImpactSpec& s) {
     });
     std::vector<PointResult> pts;
     for (const auto& j : swept.points) pts.push_back(point_from_json(j));
+    resumed = swept.resumed;
     return pts;
 }
 
@@ -748,8 +749,10 @@ void cooling_curves(Result& res, const ImpactSpec& s, const std::vector<PointRes
 
 Result run(const RunContext& ctx) {
     const auto s = read_spec<ImpactSpec>(ctx.params);
-    const std::vector<PointResult> pts = sweep(ctx, s);
+    long resumed = 0;
+    const std::vector<PointResult> pts = sweep(ctx, s, resumed);
     Result res;
+    res.scalar("resumed_points", double(resumed), "1", "sweep points loaded from a checkpoint");
     const double l = box_side(static_cast<std::size_t>(s.N), s.d, s.rho);
     res.scalar("box_side", l, "m", "side of the periodic square box at rho (N pi d^2 / (4 L^2) = rho)");
     res.scalar("box_side_over_d", l / s.d, "1", "box side in diameters");

@@ -24,6 +24,7 @@ namespace {
 // points) with short budgets, and parameter-study's (r, t_c) x seeds (6 points) on 64 disks.
 const std::string kBistable =
     "bistable-pipe --scale quick --set kN_list=200,2000 --set eN_list=0.8,0.95 --set budget_tcol=4000 --set window=0.1 --set t_average=0.1 ";
+const std::string kImpact = "impact-parameter --scale quick ";
 const std::string kParamStudy = "parameter-study --scale quick --set n_side=8 --set cn_end=20 --set seeds=2 "
                                 "--set fig8_r=0.5 --set fig9_t_c=1e-10,1e-5 ";
 
@@ -103,6 +104,7 @@ void mpi_equals_single(const std::string& args, const std::string& name, int ran
 TEST(SweepMpi, BistablePipeThreeRanksEqualsSingleRun) { mpi_equals_single(kBistable, "bistable-pipe", 3, 1); }
 TEST(SweepMpi, BistablePipeTwoRanksTwoThreadsEqualsSingleRun) { mpi_equals_single(kBistable, "bistable-pipe", 2, 2); }
 TEST(SweepMpi, ParameterStudyThreeRanksEqualsSingleRun) { mpi_equals_single(kParamStudy, "parameter-study", 3, 1); }
+TEST(SweepMpi, ImpactParameterThreeRanksEqualsSingleRun) { mpi_equals_single(kImpact, "impact-parameter", 3, 1); }
 
 // A job killed after 3 of its 8 points (every rank ends, as when a node is lost) leaves those 3 in
 // the checkpoint; the same command again computes only the other 5 and equals an uninterrupted run.
