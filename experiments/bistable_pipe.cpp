@@ -30,6 +30,7 @@
 #include "experiments/work_limits.hpp"
 #include "harness/experiment.hpp"
 #include "harness/distributed_sweep.hpp"
+#include "io/json_fields.hpp"
 #include "models/coulomb_shear.hpp"
 #include "models/linear_spring_dashpot.hpp"
 
@@ -139,24 +140,6 @@ struct RunResult {
         f("t_final", t_final); f("accel_final", accel_final); f("sigma_vx", sigma_vx); f("ndot", ndot); f("dvy", dvy);
         f("vx_in", vx_in); f("vy_in", vy_in); f("dt", dt); f("grains", grains); f("t", t); f("v", v); f("sx", sx);
         f("w_ndot", w_ndot); f("w_dvy", w_dvy); f("w_sx", w_sx); f("w_v", w_v);
-    }
-    nlohmann::json to_json() {
-        nlohmann::json j;
-        fields([&](const char* k, const auto& x) { j[k] = x; });
-        return j;
-    }
-    // NaN is written as null.
-    static RunResult from_json(const nlohmann::json& j) {
-        auto num = [](const nlohmann::json& x) { return x.is_null() ? NAN : x.get<double>(); };
-        RunResult r;
-        r.fields([&](const char* k, auto& x) {
-            using T = std::decay_t<decltype(x)>;
-            if constexpr (std::is_same_v<T, double>) x = num(j.at(k));
-            else if constexpr (std::is_same_v<T, std::vector<double>>)
-                for (const auto& e : j.at(k)) x.push_back(num(e));
-            else x = j.at(k).template get<T>();
-        });
-        return r;
     }
 };
 
@@ -391,10 +374,10 @@ std::pair<std::vector<RunResult>, long> run_sweep(const RunContext& ctx, const B
         s.geo.length = std::round(t.length / s.geo.wall_spacing) * s.geo.wall_spacing;
         s.v0 = t.fast ? b.fast_v0 : b.slow_v0;
         s.stream = std::uint64_t(i);
-        return run_pipe(s, time_budget(b, t.k, t.e), b.eq9_window).to_json();
+        return to_json_fields(run_pipe(s, time_budget(b, t.k, t.e), b.eq9_window));
     });
     std::vector<RunResult> results;
-    for (const auto& j : swept.points) results.push_back(RunResult::from_json(j));
+    for (const auto& j : swept.points) results.push_back(from_json_fields<RunResult>(j));
     return {results, swept.resumed};
 }
 

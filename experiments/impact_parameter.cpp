@@ -27,11 +27,29 @@
 #include "experiments/work_limits.hpp"
 #include "harness/distributed_sweep.hpp"
 #include "harness/experiment.hpp"
+#include "io/json_fields.hpp"
 #include "observables/collisional_stress.hpp"
 #include "observables/impact_parameter_histogram.hpp"
 #include "theory/kinetic_theory.hpp"
 
-namespace granrepro::experiments {
+namespace granrepro {
+
+// A stress cell's JSON form (io/json_fields.hpp), what Fig. 5 and the eddy cores use: eigenvalues,
+// axes, collisions, the total stress (pressure).
+nlohmann::json to_json_value(const CollisionalStress::Cell& c) {
+    const auto v = [](double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr); };
+    return {v(c.sigma_min), v(c.sigma_max), v(c.axis_min.x()), v(c.axis_min.y()), v(c.axis_max.x()), v(c.axis_max.y()),
+            c.collisions, v(c.total(0, 0)), v(c.total(0, 1)), v(c.total(1, 0)), v(c.total(1, 1))};
+}
+void from_json_value(const nlohmann::json& j, CollisionalStress::Cell& c) {
+    double* x[] = {&c.sigma_min, &c.sigma_max, &c.axis_min.x(), &c.axis_min.y(), &c.axis_max.x(), &c.axis_max.y(),
+                   nullptr, &c.total(0, 0), &c.total(0, 1), &c.total(1, 0), &c.total(1, 1)};
+    for (std::size_t k = 0; k < 11; ++k)
+        if (x[k]) *x[k] = j.at(k).is_null() ? NAN : j.at(k).get<double>();
+    c.collisions = j.at(6);
+}
+
+namespace experiments {
 
 namespace {
 
@@ -119,42 +137,8 @@ struct PointResult {
 
 PointResult counts_only(const std::vector<std::uint64_t>& c) { PointResult r; r.counts = {c}; return r; }
 
-// JSON of the fields; doubles round-trip bit for bit, and null stands for NaN, which JSON lacks.
-nlohmann::json enc(double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr); }
-nlohmann::json enc(Vec2 v) { return {enc(v.x), enc(v.y)}; }
-// Of a stress cell, what Fig. 5 and the eddy cores use: eigenvalues, axes, collisions, total (pressure).
-nlohmann::json enc(const CollisionalStress::Cell& c) {
-    return {enc(c.sigma_min), enc(c.sigma_max), enc(c.axis_min.x()), enc(c.axis_min.y()), enc(c.axis_max.x()),
-            enc(c.axis_max.y()), c.collisions, enc(c.total(0, 0)), enc(c.total(0, 1)), enc(c.total(1, 0)), enc(c.total(1, 1))};
-}
-template <class T> nlohmann::json enc(const T& x) { return x; }
-template <class T> nlohmann::json enc(const std::vector<T>& v) {
-    nlohmann::json j = nlohmann::json::array();
-    for (const T& x : v) j.push_back(enc(x));
-    return j;
-}
-void dec(const nlohmann::json& j, double& x) { x = j.is_null() ? NAN : j.get<double>(); }
-void dec(const nlohmann::json& j, Vec2& v) { dec(j.at(0), v.x); dec(j.at(1), v.y); }
-void dec(const nlohmann::json& j, CollisionalStress::Cell& c) {
-    dec(j.at(0), c.sigma_min); dec(j.at(1), c.sigma_max); dec(j.at(2), c.axis_min.x()); dec(j.at(3), c.axis_min.y());
-    dec(j.at(4), c.axis_max.x()); dec(j.at(5), c.axis_max.y()); c.collisions = j.at(6);
-    dec(j.at(7), c.total(0, 0)); dec(j.at(8), c.total(0, 1)); dec(j.at(9), c.total(1, 0)); dec(j.at(10), c.total(1, 1));
-}
-template <class T> void dec(const nlohmann::json& j, T& x) { j.get_to(x); }
-template <class T> void dec(const nlohmann::json& j, std::vector<T>& v) {
-    v.resize(j.size());
-    for (std::size_t i = 0; i < v.size(); ++i) dec(j.at(i), v[i]);
-}
-nlohmann::json point_json(PointResult r) {
-    nlohmann::json j;
-    r.fields([&](const char* name, const auto& x) { j[name] = enc(x); });
-    return j;
-}
-PointResult point_from_json(const nlohmann::json& j) {
-    PointResult r;
-    r.fields([&](const char* name, auto& x) { dec(j.at(name), x); });
-    return r;
-}
+nlohmann::json point_json(const PointResult& r) { return to_json_fields(r); }
+PointResult point_from_json(const nlohmann::json& j) { return from_json_fields<PointResult>(j); }
 
 // P(b/d) from counts: density over [0, 1] with bin width 1/nb, Poisson error sqrt(n) per bin.
 struct Histogram {
@@ -773,4 +757,5 @@ Result run(const RunContext& ctx) {
 
 Experiment impact_parameter() { return {"impact-parameter", &validate, &run}; }
 
-} // namespace granrepro::experiments
+} // namespace experiments
+} // namespace granrepro

@@ -26,12 +26,10 @@
 #include <vector>
 
 #include "core/vec2.hpp"
+#include "data/fields.hpp"
 #include "io/h5_file.hpp"
 
 namespace granrepro {
-
-template <class T>
-concept HasFields = requires(T& t) { t.fields([](const char*, auto&) {}); };
 
 namespace h5_fields_detail {
 

@@ -1,0 +1,67 @@
+// The JSON form of a struct's fields() list (data/fields.hpp): what a sweep point returns through
+// distributed_sweep, so results are bit-identical whether a point was computed here, on another
+// rank or read from a checkpoint. Doubles print with 17 significant digits and read back bit for
+// bit; NaN and ±inf, which JSON lacks, are written as null and read back as NaN. Vec2 is [x, y],
+// a vector an array, a struct with fields() an object. A type of its own JSON form provides
+// `nlohmann::json to_json_value(const T&)` and `void from_json_value(const nlohmann::json&, T&)`,
+// found by argument-dependent lookup.
+#pragma once
+#include <cmath>
+#include <nlohmann/json.hpp>
+#include <type_traits>
+#include <vector>
+
+#include "core/vec2.hpp"
+#include "data/fields.hpp"
+
+namespace granrepro {
+
+namespace json_fields_detail {
+
+template <class T>
+nlohmann::json put(const T& x) {
+    if constexpr (std::is_same_v<T, double>) return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr);
+    else if constexpr (std::is_arithmetic_v<T> || std::is_same_v<T, std::string>) return x;
+    else if constexpr (std::is_same_v<T, Vec2>) return {put(x.x), put(x.y)};
+    else if constexpr (HasFields<T>) {
+        nlohmann::json j = nlohmann::json::object();
+        const_cast<T&>(x).fields([&](const char* name, const auto& f) { j[name] = put(f); });
+        return j;
+    } else if constexpr (requires { to_json_value(x); }) return to_json_value(x);
+    else {
+        nlohmann::json j = nlohmann::json::array();
+        for (const auto& e : x) j.push_back(put(e));
+        return j;
+    }
+}
+
+template <class T>
+void get(const nlohmann::json& j, T& x) {
+    if constexpr (std::is_same_v<T, double>) x = j.is_null() ? NAN : j.get<double>();
+    else if constexpr (std::is_arithmetic_v<T> || std::is_same_v<T, std::string>) j.get_to(x);
+    else if constexpr (std::is_same_v<T, Vec2>) {
+        get(j.at(0), x.x);
+        get(j.at(1), x.y);
+    } else if constexpr (HasFields<T>) x.fields([&](const char* name, auto& f) { get(j.at(name), f); });
+    else if constexpr (requires { from_json_value(j, x); }) from_json_value(j, x);
+    else {
+        x.resize(j.size());
+        for (std::size_t i = 0; i < x.size(); ++i) get(j.at(i), x[i]);
+    }
+}
+
+} // namespace json_fields_detail
+
+template <HasFields T>
+nlohmann::json to_json_fields(const T& s) {
+    return json_fields_detail::put(s);
+}
+
+template <HasFields T>
+T from_json_fields(const nlohmann::json& j) {
+    T s{};
+    json_fields_detail::get(j, s);
+    return s;
+}
+
+} // namespace granrepro
