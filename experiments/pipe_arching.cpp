@@ -25,7 +25,7 @@
 #include <array>
 #include <chrono>
 #include <cmath>
-#include <map>
+#include <functional>
 #include <numeric>
 #include <optional>
 #include <string>
@@ -121,8 +121,7 @@ struct Pipe : PipeArchingSpec {
 };
 
 Pipe::Pipe(const PipeArchingSpec& spec) : PipeArchingSpec(spec) {
-    L = width * d;
-    a = lattice * d;
+    L = width * d; a = lattice * d;
     // Rows alternate floor(L/a) and one fewer site; the column height sets where the floor goes.
     const double per_two_rows = 2.0 * std::floor((L - d) / a + 1e-9) + 1.0;
     const double rows = std::ceil(2.0 * double(n_particles) / per_two_rows);
@@ -193,15 +192,15 @@ struct SeedRun {
     static SeedRun from_json(const nlohmann::json& j) {
         SeedRun r;
         fields(r, [&](const char* k, double& x) { x = num(j.at(k)); });
-        r.per_time = j.at("per_time");
-        r.figure = j.at("figure");
+        r.per_time = j.at("per_time"); r.figure = j.at("figure");
         return r;
     }
 };
 
-std::vector<double> per_seed(const std::vector<SeedRun>& runs, double SeedRun::*f) {
+// f (a field or a function of a SeedRun) of every run.
+template <class F> std::vector<double> per_seed(const std::vector<SeedRun>& runs, F f) {
     std::vector<double> v;
-    for (const auto& r : runs) v.push_back(r.*f);
+    for (const auto& r : runs) v.push_back(std::invoke(f, r));
     return v;
 }
 
@@ -222,7 +221,7 @@ struct Dsu {
     void join(int a, int b) { up[find(a)] = find(b); }
 };
 
-struct WallHit {
+struct WallHit { // a side-wall collision
     double t, y;
     int wall;
 };
@@ -233,19 +232,11 @@ struct ArchFound {
     std::vector<int> members;
 };
 
-struct HotWallDisk {
-    int i;
-    double y0; // initial height [d]
-};
-
 // The lattice at t = 0 (Sec. 5: "still arranged on a triangular lattice, except for a few layers
 // at the top which are fluidized"). A disk keeps its place when it is still within 1.2 s of every
 // lattice neighbour it had at t = -t_r (s = lattice constant). Rows are counted from the top;
 // the fluidized layers are the top rows in which at least half of the disks lost a neighbour.
-struct LatticeState {
-    double fluid_layers = 0, broken_below = 0;
-};
-LatticeState lattice_state(const std::vector<Vec2>& lat, const std::vector<Vec2>& now, double s) {
+void lattice_state(SeedRun& out, const std::vector<Vec2>& lat, const std::vector<Vec2>& now, double s) {
     const std::size_t n = lat.size();
     std::vector<int> kept(n, 1);
     for (std::size_t i = 0; i < n; ++i)
@@ -260,7 +251,6 @@ LatticeState lattice_state(const std::vector<Vec2>& lat, const std::vector<Vec2>
         if (rows.empty() || std::abs(lat[i].y - rows.back().first) > 0.1 * s) rows.push_back({lat[i].y, {}});
         rows.back().second.push_back(i);
     }
-    LatticeState st;
     std::size_t r = rows.size();
     while (r > 0) {
         const auto& row = rows[r - 1].second;
@@ -268,21 +258,19 @@ LatticeState lattice_state(const std::vector<Vec2>& lat, const std::vector<Vec2>
         if (lost < 0.5 * double(row.size())) break;
         --r;
     }
-    st.fluid_layers = double(rows.size() - r);
+    out.fluid_layers = double(rows.size() - r);
     double broken = 0, total = 0;
     for (std::size_t k = 0; k < r; ++k)
         for (std::size_t i : rows[k].second) {
             total += 1;
             broken += kept[i] ? 0 : 1;
         }
-    st.broken_below = total > 0 ? broken / total : NAN;
-    return st;
+    out.lattice_broken_below = total > 0 ? broken / total : NAN;
 }
 
 // The column at t = -t_r: the lattice on the floor, velocities uniform in [-v0, v0] from
 // RngStream(seed, index), elastic and smooth (Sec. 5: r = r_w = 1, mu = mu_w = 0).
-EdEngine build_column(const Pipe& s, const std::vector<Vec2>& lat,
-                      std::uint64_t seed, long index) {
+EdEngine build_column(const Pipe& s, const std::vector<Vec2>& lat, std::uint64_t seed, long index) {
     const std::size_t n = std::size_t(s.n_particles);
     RngStream rng(seed, std::uint64_t(index));
     const std::vector<Vec2> vel = uniform_velocities(n, s.v0, rng);
@@ -325,7 +313,7 @@ struct Frame {
     std::vector<Vec2> pos;
     std::vector<double> rate;          // N_c over the last frame_dt [1/s]
     std::vector<int> hot;              // disks with N_c >= hot_rate, ascending
-    std::vector<HotWallDisk> hot_wall; // those at a side wall
+    std::vector<int> hot_wall;         // those at a side wall
     ArchFound arch;
     Crack crack;
     double vy = 0, wall_rate = 0; // mean v_y [m/s]; side-wall collisions per disk and unit time [1/s]
@@ -335,19 +323,12 @@ struct Frame {
 // One run from the release on: the column at t = 0, frames 1 .. n_frames (frame 0 stays empty),
 // the Lagrangian bands of 1 d of initial height, and N_c over dist_dt at the Fig. 14 times.
 struct Fall {
-    Fall(const Pipe& s, std::vector<Vec2> r0)
-        : pos0(std::move(r0)), y0([&] {
-              std::vector<double> y;
-              for (const Vec2& r : pos0) y.push_back((r.y - s.y_floor) / s.d);
-              return y;
-          }()),
-          frames(std::size_t(s.n_frames) + 1), bands(y0, 1.0, s.wall_reach * s.d, s.L) {}
     std::vector<Vec2> pos0; // [m]
     std::vector<double> y0; // initial heights above the removed floor [d]
     std::vector<Frame> frames;
     ColumnBands bands;
-    std::vector<std::vector<double>> dist_rates;
-    std::vector<double> dist_t;
+    std::vector<std::vector<double>> dist_rates = {};
+    std::vector<double> dist_t = {};
     double jy = 0; // side-wall impulse on the column since t = 0 [kg m/s]
     const Frame& at(long f) const { return frames[std::size_t(f)]; }
     std::vector<double> per_frame(double Frame::*x) const { // frames 1 .. n_frames
@@ -392,8 +373,7 @@ ArchFound find_arch(const Pipe& s, const std::vector<double>& y0, const std::vec
             if (r[i].x >= L - reach) { yr += r[i].y; ++nr; }
         }
         if (nl == 0 || nr == 0) continue;
-        yl /= nl;
-        yr /= nr;
+        yl /= nl; yr /= nr;
         const double pl = mean_p > 0 ? foot(kLeft, yl) : 0, pr = mean_p > 0 ? foot(kRight, yr) : 0;
         if (std::min(pl, pr) < s.arch_pressure_factor) continue;
         if (double(grp.size()) > arch.size) {
@@ -414,7 +394,7 @@ void detect(Fall& fl, const Pipe& s, long f, const std::vector<WallHit>& hits) {
     for (std::size_t i = 0; i < r.size(); ++i)
         if (fr.rate[i] >= s.hot_rate) {
             fr.hot.push_back(int(i));
-            if (r[i].x <= reach || r[i].x >= s.L - reach) fr.hot_wall.push_back({int(i), fl.y0[i]});
+            if (r[i].x <= reach || r[i].x >= s.L - reach) fr.hot_wall.push_back(int(i));
         }
     if (f >= s.detect_from && !fr.hot.empty()) fr.arch = find_arch(s, fl.y0, fr.hot, r, hits);
     if (f >= s.detect_from) fr.crack = find_crack(r, s.cs);
@@ -423,7 +403,11 @@ void detect(Fall& fl, const Pipe& s, long f, const std::vector<WallHit>& hits) {
 // The fall, t = 0 .. t_end, frame by frame: N_c of every disk over the last frame (walls included,
 // Sec. 5), the side walls' collisions and impulses, and N_c over dist_dt at the Fig. 14 times.
 Fall fall(EdEngine& eng, const Pipe& s) {
-    Fall fl(s, eng.positions());
+    const std::vector<Vec2> r0 = eng.positions();
+    std::vector<double> y0;
+    for (const Vec2& r : r0) y0.push_back((r.y - s.y_floor) / s.d);
+    Fall fl{.pos0 = r0, .y0 = y0, .frames = std::vector<Frame>(std::size_t(s.n_frames) + 1),
+            .bands = ColumnBands(y0, 1.0, s.wall_reach * s.d, s.L)};
     const std::size_t n = fl.y0.size();
     const double fdt = s.frame_dt, M = double(n) * s.mass;
     CollisionCounter counter(n, true);
@@ -466,28 +450,22 @@ long count_hot(const std::vector<int>& disks, const std::vector<int>& hot) {
     return long(std::count_if(disks.begin(), disks.end(), [&](int j) { return std::binary_search(hot.begin(), hot.end(), j); }));
 }
 
-long first_arch_frame(const Pipe& s, const Fall& fl) {
-    for (long f = s.detect_from; f <= s.n_frames; ++f)
-        if (fl.at(f).arch.found) return f;
-    return -1;
-}
-
 // The first arch (frame fa) and its initiating disk, which the function returns (-1 if none):
 // the earliest hot wall disk within precursor_window before the arch that started within
 // precursor_band of the arch's initial height (the black bar, Fig. 13).
 int first_arch(SeedRun& out, const Pipe& s, const Fall& fl, long fa) {
     const ArchFound& a = fl.at(fa).arch;
-    out.t_arch = s.t(fa), out.y_arch = a.y, out.y0_arch = a.y0;
-    out.arch_size = a.size, out.arch_pL = a.pL, out.arch_pR = a.pR;
+    out.t_arch = s.t(fa); out.y_arch = a.y; out.y0_arch = a.y0;
+    out.arch_size = a.size; out.arch_pL = a.pL; out.arch_pR = a.pR;
     int i_prec = -1;
     long f_prec = -1;
     for (long k = std::max(s.detect_from, fa - s.frames(s.precursor_window)); k <= fa && i_prec < 0; ++k)
-        for (const HotWallDisk& h : fl.at(k).hot_wall)
-            if (std::abs(h.y0 - a.y0) <= s.precursor_band) {
+        for (int i : fl.at(k).hot_wall)
+            if (std::abs(fl.y0[std::size_t(i)] - a.y0) <= s.precursor_band) {
                 f_prec = k;
-                i_prec = h.i;
+                i_prec = i;
                 out.t_precursor = s.t(k);
-                out.y_precursor = h.y0;
+                out.y_precursor = fl.y0[std::size_t(i)];
                 break;
             }
     if (i_prec < 0) return i_prec;
@@ -577,9 +555,8 @@ void cracks(SeedRun& out, const Pipe& s, const Fall& fl, long fa, int i_prec) {
             }
         }
     }
-    out.opening_max_before = std::isfinite(omax_before) ? omax_before : NAN;
-    out.opening_max_after = std::isfinite(omax_after) ? omax_after : NAN;
-    out.opening_max_all = std::isfinite(omax_all) ? omax_all : NAN;
+    auto finite = [](double x) { return std::isfinite(x) ? x : NAN; };
+    out.opening_max_before = finite(omax_before); out.opening_max_after = finite(omax_after); out.opening_max_all = finite(omax_all);
 }
 
 // Fits of Eqs. (21), (22) to P(N_c) pooled over the Fig. 14 times that lie, in this run, before
@@ -692,12 +669,12 @@ SeedRun run_seed(const Pipe& s, std::uint64_t seed, long index, bool figure) {
     const double py0 = eng.total_momentum().y;
     const std::uint64_t coll0 = eng.total_collisions(), el0 = eng.elastic_collisions();
     const Fall fl = fall(eng, s);
-    const LatticeState ls = lattice_state(lat, fl.pos0, s.a);
-    out.fluid_layers = ls.fluid_layers;
-    out.lattice_broken_below = ls.broken_below;
+    lattice_state(out, lat, fl.pos0, s.a);
     for (long f = s.detect_from; f <= s.n_frames && std::isnan(out.t_hot_wall); ++f)
         if (!fl.at(f).hot_wall.empty()) out.t_hot_wall = s.t(f);
-    const long fa = first_arch_frame(s, fl);
+    long fa = -1; // the first arch's frame
+    for (long f = s.detect_from; f <= s.n_frames && fa < 0; ++f)
+        if (fl.at(f).arch.found) fa = f;
     const int i_prec = fa >= 0 ? first_arch(out, s, fl, fa) : -1;
     if (fa >= 0) {
         arch_aftermath(out, s, fl, fa);
@@ -794,41 +771,34 @@ void report_relaxation(Result& res, const std::vector<SeedRun>& runs) {
 // Fig. 13 (run 0): the snapshots with their marks (the initiating disk, the frame's arch, the
 // crack) and the timeline per frame.
 void report_fig13(Result& res, const PipeArchingSpec& s, const nlohmann::json& F) {
-    std::vector<double> mt, px, py, ay, op, vis;
-    auto values = [](const nlohmann::json& a) {
+    // The numbers of a JSON array (null: NaN), or of one key of each of its objects.
+    auto values = [](const nlohmann::json& a, const char* key = nullptr) {
         std::vector<double> v;
-        for (const auto& x : a) v.push_back(num(x));
+        for (const auto& x : a) v.push_back(num(key ? x.at(key) : x));
         return v;
     };
-    for (const auto& sn : F.at("snaps")) {
+    const nlohmann::json& snaps = F.at("snaps");
+    for (const auto& sn : snaps) {
         const std::string lab = tlabel(sn.at("t").get<double>());
         Table& t = res.table("snapshot_" + lab,
                              "disk centres (x, y above the removed floor), N_c over the last frame_dt, member of the frame's arch, side of the crack (-1 below, +1 above, 0 loose), run 0");
         for (auto [col, unit, key] : {std::array{"x", "d", "x"}, {"y", "d", "y"}, {"Nc", "1/s", "Nc"}, {"arch", "1", "arch"}, {"crack_side", "1", "side"}})
-            t.add(col, unit).values = sn.at(key).get<std::vector<double>>();
+            t.add(col, unit).values = values(sn.at(key));
         Table& c = res.table("crack_" + lab, "course of the widest wall-to-wall crack (mid-height per slice of one diameter), run 0");
-        c.add("x", "d").values = sn.at("course_x").get<std::vector<double>>();
+        c.add("x", "d").values = values(sn.at("course_x"));
         c.add("y", "d").values = values(sn.at("course_y"));
-        mt.push_back(sn.at("t").get<double>());
-        px.push_back(num(sn.at("prec_x")));
-        py.push_back(num(sn.at("prec_y")));
-        ay.push_back(num(sn.at("arch_y")));
-        op.push_back(num(sn.at("opening")));
-        vis.push_back(op.back() >= s.crack_opening ? 1 : 0);
     }
     Table& mk = res.table("marks", "run 0 per Fig. 13 snapshot: initiating disk (x, y), arch height, crack opening");
-    mk.add("t", "s").values = mt;
-    mk.add("initiator_x", "d").values = px;
-    mk.add("initiator_y", "d").values = py;
-    mk.add("arch_y", "d").values = ay;
-    mk.add("crack_opening", "d").values = op;
+    mk.add("t", "s").values = values(snaps, "t");
+    for (auto [col, key] : {std::pair{"initiator_x", "prec_x"}, {"initiator_y", "prec_y"}, {"arch_y", "arch_y"}, {"crack_opening", "opening"}})
+        mk.add(col, "d").values = values(snaps, key);
+    std::vector<double> vis;
+    for (double o : values(snaps, "opening")) vis.push_back(o >= s.crack_opening ? 1 : 0);
     mk.add("crack_visible", "1").values = vis;
     Table& t = res.table("timeline", "run 0 per frame: hot disks, mean N_c, widest wall-to-wall crack, mean v_y, wall collisions, share of the weight carried by the walls, arch height");
-    const std::map<std::string, std::string> units = {{"t", "s"}, {"hot", "1"}, {"hot_wall", "1"}, {"mean", "1/s"},
-                                                      {"opening", "d"}, {"vy", "m/s"}, {"wall_rate", "1/s"},
-                                                      {"wall_load", "1"}, {"arch_y", "d"}};
-    for (const char* k : {"t", "hot", "hot_wall", "mean", "opening", "vy", "wall_rate", "wall_load", "arch_y"})
-        t.add(k, units.at(k)).values = values(F.at("tl").at(k));
+    for (auto [k, unit] : {std::pair{"t", "s"}, {"hot", "1"}, {"hot_wall", "1"}, {"mean", "1/s"}, {"opening", "d"},
+                           {"vy", "m/s"}, {"wall_rate", "1/s"}, {"wall_load", "1"}, {"arch_y", "d"}})
+        t.add(k, unit).values = values(F.at("tl").at(k));
 }
 
 // Fig. 14 per time: the fits at each time alone (run 0 with its error, median over seeds) and
@@ -841,14 +811,11 @@ void report_fig14_times(Result& res, const PipeArchingSpec& s, const std::vector
     std::vector<double> tt, v0, e0, med;
     for (std::size_t k = 0; k < hists.size(); ++k) {
         const double t = hists[k].at("t").get<double>();
-        std::vector<double> vals;
-        for (const auto& r : runs) vals.push_back(num(r.per_time.at(k).at("value")));
         tt.push_back(t);
         v0.push_back(num(f0.per_time.at(k).at("value")));
         e0.push_back(num(f0.per_time.at(k).at("error")));
-        med.push_back(median_finite(vals));
-        const std::string what = k < n_before ? "A_" : "B_";
-        const std::string eq = k < n_before ? "Eq. (21)" : "Eq. (22)";
+        med.push_back(median_finite(per_seed(runs, [&](const SeedRun& r) { return num(r.per_time.at(k).at("value")); })));
+        const std::string what = k < n_before ? "A_" : "B_", eq = k < n_before ? "Eq. (21)" : "Eq. (22)";
         res.scalar(what + tlabel(t), v0.back(), "1/s", eq + " fit at this time alone, run 0");
         res.scalar(what + "err_" + tlabel(t), e0.back(), "1/s", "its standard error");
         res.scalar(what + tlabel(t) + "_median_seeds", med.back(), "1/s", eq + " fit at this time alone, median over seeds");
@@ -879,13 +846,10 @@ void report_fig14_fits(Result& res, const PipeArchingSpec& s, const std::vector<
     res.scalar("A_fit_per_window", f0.A * ddt, "1", "A in collisions per dist_dt window");
     res.scalar("mean_Nc_before", f0.mean_rate_early, "1/s", "mean N_c at the Fig. 14(a) times, run 0");
     const std::vector<double> As = per_seed(runs, &SeedRun::A), Bs = per_seed(runs, &SeedRun::B);
-    std::vector<double> BA, ratio_early, ratio_late;
-    for (const auto& r : runs) {
-        BA.push_back(r.B / r.A);
-        // Deviance of the exponential over that of the power law: < 1 where Eq. (21) fits better.
-        ratio_early.push_back(r.dev_exp_early / r.dev_pow_early);
-        ratio_late.push_back(r.dev_exp_late / r.dev_pow_late);
-    }
+    const std::vector<double> BA = per_seed(runs, [](const SeedRun& r) { return r.B / r.A; });
+    // Deviance of the exponential over that of the power law: < 1 where Eq. (21) fits better.
+    const std::vector<double> ratio_early = per_seed(runs, [](const SeedRun& r) { return r.dev_exp_early / r.dev_pow_early; });
+    const std::vector<double> ratio_late = per_seed(runs, [](const SeedRun& r) { return r.dev_exp_late / r.dev_pow_late; });
     res.scalar("fig14_times_before_median", median_finite(per_seed(runs, &SeedRun::times_before)), "1", "Fig. 14(a) times before the run's first arch, pooled into A, median over seeds");
     res.scalar("fig14_times_after_median", median_finite(per_seed(runs, &SeedRun::times_after)), "1", "Fig. 14(b) times after the run's first arch, pooled into B, median over seeds");
     res.scalar("A_fit_median_seeds", median_finite(As), "1/s", "Eq. (21) A, median over seeds");
@@ -948,12 +912,9 @@ void report_seed_table(Result& res, const std::vector<SeedRun>& runs) {
 void report_arch_times(Result& res, const std::vector<SeedRun>& runs) {
     const std::vector<double> ta = per_seed(runs, &SeedRun::t_arch), tp = per_seed(runs, &SeedRun::t_precursor);
     const std::vector<double> tw = per_seed(runs, &SeedRun::t_hot_wall), tc = per_seed(runs, &SeedRun::t_crack);
-    std::vector<double> crack_after_arch, crack_near_arch, precursor_lead;
-    for (const auto& r : runs) {
-        crack_after_arch.push_back(r.t_crack - r.t_arch);
-        crack_near_arch.push_back(std::abs(r.y0_crack - r.y0_arch));
-        precursor_lead.push_back(r.t_arch - r.t_precursor);
-    }
+    const std::vector<double> crack_after_arch = per_seed(runs, [](const SeedRun& r) { return r.t_crack - r.t_arch; });
+    const std::vector<double> crack_near_arch = per_seed(runs, [](const SeedRun& r) { return std::abs(r.y0_crack - r.y0_arch); });
+    const std::vector<double> precursor_lead = per_seed(runs, [](const SeedRun& r) { return r.t_arch - r.t_precursor; });
     // Empirical distribution of the first-arch time (censored runs at the end).
     std::vector<double> sorted = ta, tt, fr;
     for (double& x : sorted) if (std::isnan(x)) x = INFINITY;
@@ -1019,11 +980,7 @@ void report_section(Result& res, const std::vector<SeedRun>& runs) {
     res.scalar("arch_above_and_below_fraction", n_ok > 0 ? both / n_ok : NAN, "1", "seeds with later arches both above and below");
     res.scalar("plug_wall_load_median", median(&SeedRun::plug_wall_load), "1",
                "wall impulse on the arch's plug within 4 ms of the arch over the plug's weight times that time, median (1: the walls hold the plug)");
-    std::vector<double> rel, diff;
-    for (const auto& r : runs) {
-        rel.push_back(r.plug_wall_load / r.friction_share);
-        diff.push_back(r.wall_slowdown_arch - r.wall_slowdown_before);
-    }
+    const std::vector<double> rel = per_seed(runs, [](const SeedRun& r) { return r.plug_wall_load / r.friction_share; });
     res.scalar("plug_wall_load_over_mean_median", median_finite(rel), "1",
                "plug_wall_load over the column's wall share over the whole fall, per seed, median (> 1: the walls hold the plug harder than the column)");
     res.scalar("arch_brake_median", median(&SeedRun::arch_brake), "m/s",
@@ -1042,7 +999,8 @@ void report_section(Result& res, const std::vector<SeedRun>& runs) {
                "crack course at the initiating disk's wall minus the disk's height, at the crack's first frame, median");
     // Disks at the walls slow down (Sec. 5): v_y(wall) - v_y(inside) in the plug at the arch,
     // against the same at the window's start; the mean difference over seeds and its z-score.
-    const MeanSem ws = mean_sem(per_seed(runs, &SeedRun::wall_slowdown_arch)), dd = mean_sem(diff);
+    const MeanSem ws = mean_sem(per_seed(runs, &SeedRun::wall_slowdown_arch));
+    const MeanSem dd = mean_sem(per_seed(runs, [](const SeedRun& r) { return r.wall_slowdown_arch - r.wall_slowdown_before; }));
     res.scalar("wall_slowdown_arch_mean", ws.mean, "m/s", "v_y(wall disks) - v_y(inner disks) of the plug at the arch, mean over seeds (> 0: wall disks slower)");
     res.scalar("wall_slowdown_gain_mean", dd.mean, "m/s", "the same minus its value arch_window before the arch, mean over seeds");
     res.scalar("wall_slowdown_gain_z", dd.sem > 0 ? dd.mean / dd.sem : NAN, "1", "that mean over its standard error (seed scatter)");
@@ -1052,8 +1010,7 @@ void report_section(Result& res, const std::vector<SeedRun>& runs) {
 
 // Momentum balance and costs.
 void report_costs(Result& res, const std::vector<SeedRun>& runs) {
-    std::vector<double> resid;
-    for (const auto& r : runs) resid.push_back(std::abs(r.momentum_residual));
+    const std::vector<double> resid = per_seed(runs, [](const SeedRun& r) { return std::abs(r.momentum_residual); });
     res.scalar("momentum_balance_residual_max", *std::max_element(resid.begin(), resid.end()), "1",
                "max over seeds of |dP_y - (-M g t + J_wall)| / (M g t) over the fall");
     res.scalar("wall_friction_share", median_finite(per_seed(runs, &SeedRun::friction_share)), "1", "side-wall impulse over M g t_end, median (0: free fall)");
