@@ -846,10 +846,10 @@ void report_fig14_fits(Result& res, const PipeArchingSpec& s, const std::vector<
     res.scalar("A_fit_per_window", f0.A * ddt, "1", "A in collisions per dist_dt window");
     res.scalar("mean_Nc_before", f0.mean_rate_early, "1/s", "mean N_c at the Fig. 14(a) times, run 0");
     const std::vector<double> As = per_seed(runs, &SeedRun::A), Bs = per_seed(runs, &SeedRun::B);
-    const std::vector<double> BA = per_seed(runs, [](const SeedRun& r) { return r.B / r.A; });
+    const auto BA = per_seed(runs, [](const SeedRun& r) { return r.B / r.A; });
     // Deviance of the exponential over that of the power law: < 1 where Eq. (21) fits better.
-    const std::vector<double> ratio_early = per_seed(runs, [](const SeedRun& r) { return r.dev_exp_early / r.dev_pow_early; });
-    const std::vector<double> ratio_late = per_seed(runs, [](const SeedRun& r) { return r.dev_exp_late / r.dev_pow_late; });
+    const auto ratio_early = per_seed(runs, [](const SeedRun& r) { return r.dev_exp_early / r.dev_pow_early; });
+    const auto ratio_late = per_seed(runs, [](const SeedRun& r) { return r.dev_exp_late / r.dev_pow_late; });
     res.scalar("fig14_times_before_median", median_finite(per_seed(runs, &SeedRun::times_before)), "1", "Fig. 14(a) times before the run's first arch, pooled into A, median over seeds");
     res.scalar("fig14_times_after_median", median_finite(per_seed(runs, &SeedRun::times_after)), "1", "Fig. 14(b) times after the run's first arch, pooled into B, median over seeds");
     res.scalar("A_fit_median_seeds", median_finite(As), "1/s", "Eq. (21) A, median over seeds");
@@ -912,9 +912,9 @@ void report_seed_table(Result& res, const std::vector<SeedRun>& runs) {
 void report_arch_times(Result& res, const std::vector<SeedRun>& runs) {
     const std::vector<double> ta = per_seed(runs, &SeedRun::t_arch), tp = per_seed(runs, &SeedRun::t_precursor);
     const std::vector<double> tw = per_seed(runs, &SeedRun::t_hot_wall), tc = per_seed(runs, &SeedRun::t_crack);
-    const std::vector<double> crack_after_arch = per_seed(runs, [](const SeedRun& r) { return r.t_crack - r.t_arch; });
-    const std::vector<double> crack_near_arch = per_seed(runs, [](const SeedRun& r) { return std::abs(r.y0_crack - r.y0_arch); });
-    const std::vector<double> precursor_lead = per_seed(runs, [](const SeedRun& r) { return r.t_arch - r.t_precursor; });
+    const auto crack_after_arch = per_seed(runs, [](const SeedRun& r) { return r.t_crack - r.t_arch; });
+    const auto crack_near_arch = per_seed(runs, [](const SeedRun& r) { return std::abs(r.y0_crack - r.y0_arch); });
+    const auto precursor_lead = per_seed(runs, [](const SeedRun& r) { return r.t_arch - r.t_precursor; });
     // Empirical distribution of the first-arch time (censored runs at the end).
     std::vector<double> sorted = ta, tt, fr;
     for (double& x : sorted) if (std::isnan(x)) x = INFINITY;
@@ -980,7 +980,7 @@ void report_section(Result& res, const std::vector<SeedRun>& runs) {
     res.scalar("arch_above_and_below_fraction", n_ok > 0 ? both / n_ok : NAN, "1", "seeds with later arches both above and below");
     res.scalar("plug_wall_load_median", median(&SeedRun::plug_wall_load), "1",
                "wall impulse on the arch's plug within 4 ms of the arch over the plug's weight times that time, median (1: the walls hold the plug)");
-    const std::vector<double> rel = per_seed(runs, [](const SeedRun& r) { return r.plug_wall_load / r.friction_share; });
+    const auto rel = per_seed(runs, [](const SeedRun& r) { return r.plug_wall_load / r.friction_share; });
     res.scalar("plug_wall_load_over_mean_median", median_finite(rel), "1",
                "plug_wall_load over the column's wall share over the whole fall, per seed, median (> 1: the walls hold the plug harder than the column)");
     res.scalar("arch_brake_median", median(&SeedRun::arch_brake), "m/s",
@@ -1010,7 +1010,7 @@ void report_section(Result& res, const std::vector<SeedRun>& runs) {
 
 // Momentum balance and costs.
 void report_costs(Result& res, const std::vector<SeedRun>& runs) {
-    const std::vector<double> resid = per_seed(runs, [](const SeedRun& r) { return std::abs(r.momentum_residual); });
+    const auto resid = per_seed(runs, [](const SeedRun& r) { return std::abs(r.momentum_residual); });
     res.scalar("momentum_balance_residual_max", *std::max_element(resid.begin(), resid.end()), "1",
                "max over seeds of |dP_y - (-M g t + J_wall)| / (M g t) over the fall");
     res.scalar("wall_friction_share", median_finite(per_seed(runs, &SeedRun::friction_share)), "1", "side-wall impulse over M g t_end, median (0: free fall)");
