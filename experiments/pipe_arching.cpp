@@ -163,35 +163,34 @@ struct SeedRun {
     nlohmann::json per_time;  // every run: Eq. (21)/(22) fits at each Fig. 14 time
     nlohmann::json figure;    // run 0 only: snapshots, histograms, timeline, relaxation
 
-    template <class R, class V> static void fields(R& r, V&& v) {
-        v("vbar0", r.vbar0); v("vbar_relax_late", r.vbar_relax_late); v("fluid_layers", r.fluid_layers);
-        v("lattice_broken_below", r.lattice_broken_below); v("t_hot_wall", r.t_hot_wall); v("t_arch", r.t_arch);
-        v("y_arch", r.y_arch); v("y0_arch", r.y0_arch); v("arch_size", r.arch_size); v("arch_pL", r.arch_pL);
-        v("arch_pR", r.arch_pR); v("t_precursor", r.t_precursor); v("y_precursor", r.y_precursor);
-        v("react_lag", r.react_lag); v("arch_left_4ms", r.arch_left_4ms); v("arch_above_later", r.arch_above_later);
-        v("arch_below_later", r.arch_below_later); v("plug_wall_load", r.plug_wall_load);
-        v("arch_brake", r.arch_brake); v("opening_below", r.opening_below);
-        v("wall_slowdown_arch", r.wall_slowdown_arch); v("wall_slowdown_before", r.wall_slowdown_before);
-        v("t_crack", r.t_crack); v("y_crack", r.y_crack); v("y0_crack", r.y0_crack);
-        v("crack_opening", r.crack_opening); v("crack_below_arch", r.crack_below_arch);
-        v("crack_at_initiator", r.crack_at_initiator); v("opening_max_before", r.opening_max_before);
-        v("opening_max_after", r.opening_max_after); v("opening_max_all", r.opening_max_all);
-        v("A", r.A); v("A_err", r.A_err); v("A_chi2", r.A_chi2); v("B", r.B); v("B_err", r.B_err);
-        v("B_chi2", r.B_chi2); v("times_before", r.times_before); v("times_after", r.times_after);
-        v("dev_exp_early", r.dev_exp_early); v("dev_pow_early", r.dev_pow_early);
-        v("dev_exp_late", r.dev_exp_late); v("dev_pow_late", r.dev_pow_late);
-        v("mean_rate_early", r.mean_rate_early); v("momentum_residual", r.momentum_residual);
-        v("friction_share", r.friction_share); v("wall_load_peak", r.wall_load_peak);
-        v("wall_seconds", r.wall_seconds); v("collisions", r.collisions); v("elastic_share", r.elastic_share);
+    // One field list for both directions (to_json only reads through it).
+    template <class V> void fields(V&& v) {
+        v("vbar0", vbar0); v("vbar_relax_late", vbar_relax_late); v("fluid_layers", fluid_layers);
+        v("lattice_broken_below", lattice_broken_below); v("t_hot_wall", t_hot_wall); v("t_arch", t_arch);
+        v("y_arch", y_arch); v("y0_arch", y0_arch); v("arch_size", arch_size); v("arch_pL", arch_pL);
+        v("arch_pR", arch_pR); v("t_precursor", t_precursor); v("y_precursor", y_precursor);
+        v("react_lag", react_lag); v("arch_left_4ms", arch_left_4ms); v("arch_above_later", arch_above_later);
+        v("arch_below_later", arch_below_later); v("plug_wall_load", plug_wall_load); v("arch_brake", arch_brake);
+        v("opening_below", opening_below); v("wall_slowdown_arch", wall_slowdown_arch);
+        v("wall_slowdown_before", wall_slowdown_before); v("t_crack", t_crack); v("y_crack", y_crack);
+        v("y0_crack", y0_crack); v("crack_opening", crack_opening); v("crack_below_arch", crack_below_arch);
+        v("crack_at_initiator", crack_at_initiator); v("opening_max_before", opening_max_before);
+        v("opening_max_after", opening_max_after); v("opening_max_all", opening_max_all); v("A", A);
+        v("A_err", A_err); v("A_chi2", A_chi2); v("B", B); v("B_err", B_err); v("B_chi2", B_chi2);
+        v("times_before", times_before); v("times_after", times_after); v("dev_exp_early", dev_exp_early);
+        v("dev_pow_early", dev_pow_early); v("dev_exp_late", dev_exp_late); v("dev_pow_late", dev_pow_late);
+        v("mean_rate_early", mean_rate_early); v("momentum_residual", momentum_residual);
+        v("friction_share", friction_share); v("wall_load_peak", wall_load_peak); v("wall_seconds", wall_seconds);
+        v("collisions", collisions); v("elastic_share", elastic_share);
     }
-    nlohmann::json to_json() const {
+    nlohmann::json to_json() {
         nlohmann::json j = {{"per_time", per_time}, {"figure", figure}};
-        fields(*this, [&](const char* k, double x) { j[k] = jnum(x); });
+        fields([&](const char* k, double x) { j[k] = jnum(x); });
         return j;
     }
     static SeedRun from_json(const nlohmann::json& j) {
         SeedRun r;
-        fields(r, [&](const char* k, double& x) { x = num(j.at(k)); });
+        r.fields([&](const char* k, double& x) { x = num(j.at(k)); });
         r.per_time = j.at("per_time"); r.figure = j.at("figure");
         return r;
     }
