@@ -38,6 +38,7 @@
 #include "harness/experiment.hpp"
 #include "harness/progress.hpp"
 #include "harness/distributed_sweep.hpp"
+#include "io/json_fields.hpp"
 #include "observables/collision_counter.hpp"
 #include "observables/collision_rate_fit.hpp"
 #include "observables/column_bands.hpp"
@@ -163,7 +164,7 @@ struct SeedRun {
     nlohmann::json per_time;  // every run: Eq. (21)/(22) fits at each Fig. 14 time
     nlohmann::json figure;    // run 0 only: snapshots, histograms, timeline, relaxation
 
-    // One field list for both directions (to_json only reads through it).
+    // One field list for both directions (io/json_fields.hpp).
     template <class V> void fields(V&& v) {
         v("vbar0", vbar0); v("vbar_relax_late", vbar_relax_late); v("fluid_layers", fluid_layers);
         v("lattice_broken_below", lattice_broken_below); v("t_hot_wall", t_hot_wall); v("t_arch", t_arch);
@@ -181,18 +182,7 @@ struct SeedRun {
         v("dev_pow_early", dev_pow_early); v("dev_exp_late", dev_exp_late); v("dev_pow_late", dev_pow_late);
         v("mean_rate_early", mean_rate_early); v("momentum_residual", momentum_residual);
         v("friction_share", friction_share); v("wall_load_peak", wall_load_peak); v("wall_seconds", wall_seconds);
-        v("collisions", collisions); v("elastic_share", elastic_share);
-    }
-    nlohmann::json to_json() {
-        nlohmann::json j = {{"per_time", per_time}, {"figure", figure}};
-        fields([&](const char* k, double x) { j[k] = jnum(x); });
-        return j;
-    }
-    static SeedRun from_json(const nlohmann::json& j) {
-        SeedRun r;
-        r.fields([&](const char* k, double& x) { x = num(j.at(k)); });
-        r.per_time = j.at("per_time"); r.figure = j.at("figure");
-        return r;
+        v("collisions", collisions); v("elastic_share", elastic_share); v("per_time", per_time); v("figure", figure);
     }
 };
 
@@ -1025,10 +1015,10 @@ Result run(const RunContext& ctx) {
     std::vector<long> order(static_cast<std::size_t>(s.n_seeds));
     std::iota(order.begin(), order.end(), 0L);
     const SweepResult swept = distributed_sweep(ctx, "pipe-arching", order, [&](long k) {
-        return run_seed(s, ctx.seed, k, k == 0).to_json();
+        return to_json_fields(run_seed(s, ctx.seed, k, k == 0));
     });
     std::vector<SeedRun> runs;
-    for (long k = 0; k < s.n_seeds; ++k) runs.push_back(SeedRun::from_json(swept.points[std::size_t(k)]));
+    for (long k = 0; k < s.n_seeds; ++k) runs.push_back(from_json_fields<SeedRun>(swept.points[std::size_t(k)]));
 
     Result res;
     res.scalar("resumed_points", double(swept.resumed), "1", "seeds loaded from a checkpoint");

@@ -2,7 +2,7 @@
 // distributed_sweep, so results are bit-identical whether a point was computed here, on another
 // rank or read from a checkpoint. Doubles print with 17 significant digits and read back bit for
 // bit; NaN and ±inf, which JSON lacks, are written as null and read back as NaN. Vec2 is [x, y],
-// a vector an array, a struct with fields() an object. A type of its own JSON form provides
+// a vector an array, a struct with fields() an object, a nlohmann::json field itself. A type of its own JSON form provides
 // `nlohmann::json to_json_value(const T&)` and `void from_json_value(const nlohmann::json&, T&)`,
 // found by argument-dependent lookup.
 #pragma once
@@ -21,7 +21,8 @@ namespace json_fields_detail {
 template <class T>
 nlohmann::json put(const T& x) {
     if constexpr (std::is_same_v<T, double>) return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr);
-    else if constexpr (std::is_arithmetic_v<T> || std::is_same_v<T, std::string>) return x;
+    else if constexpr (std::is_arithmetic_v<T> || std::is_same_v<T, std::string> || std::is_same_v<T, nlohmann::json>)
+        return x;
     else if constexpr (std::is_same_v<T, Vec2>) return {put(x.x), put(x.y)};
     else if constexpr (HasFields<T>) {
         nlohmann::json j = nlohmann::json::object();
@@ -38,6 +39,7 @@ nlohmann::json put(const T& x) {
 template <class T>
 void get(const nlohmann::json& j, T& x) {
     if constexpr (std::is_same_v<T, double>) x = j.is_null() ? NAN : j.get<double>();
+    else if constexpr (std::is_same_v<T, nlohmann::json>) x = j;
     else if constexpr (std::is_arithmetic_v<T> || std::is_same_v<T, std::string>) j.get_to(x);
     else if constexpr (std::is_same_v<T, Vec2>) {
         get(j.at(0), x.x);
