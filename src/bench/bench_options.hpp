@@ -1,6 +1,7 @@
 // What `granrepro bench <target>` was asked for: repeats, duration and per-target options.
 #pragma once
 #include <string>
+#include <vector>
 
 namespace granrepro {
 
@@ -13,7 +14,7 @@ struct BenchOptions {
     std::string experiment = "bistable-pipe"; // sweep: a sweeping experiment
     std::string scale = "quick";              // sweep: quick or paper
     int ranks = 2;                            // sweep: MPI ranks compared with one
-    std::string from_log;                     // sweep: project from this run.log instead of running
+    std::vector<std::string> from_log;        // sweep: project from these run.log files instead of running
 };
 
 } // namespace granrepro

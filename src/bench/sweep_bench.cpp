@@ -54,19 +54,19 @@ double median(std::vector<double> v) {
 
 SweepCosts read_sweep_costs(const fs::path& run_log) {
     std::ifstream in(run_log);
-    if (!in) throw InputError("--from-log " + run_log.string() + ": cannot read it (a run.log of a sweeping experiment)");
+    if (!in) throw InputError("--from-log " + run_log.string() + ": cannot read it (a run.log of an experiment)");
     static const std::regex point(R"(sweep \S+: point (\d+) cost ([0-9.eE+-]+) CPU s)");
     static const std::regex wall(R"(run finished: wall time ([0-9.eE+-]+) s)");
     SweepCosts c;
+    c.name = run_log.parent_path().filename().string();
     std::string line;
     std::smatch m;
+    bool finished = false;
     while (std::getline(in, line)) {
         if (std::regex_search(line, m, point)) c.cost.push_back(std::stod(m[2]));
-        else if (std::regex_search(line, m, wall)) c.wall = std::stod(m[1]);
+        else if (std::regex_search(line, m, wall)) c.wall = std::stod(m[1]), finished = true;
     }
-    if (c.cost.empty())
-        throw InputError("--from-log " + run_log.string() + ": no 'sweep ...: point ... cost' lines (a run of an older "
-                         "binary, a resumed run, or an experiment without a distributed sweep)");
+    if (!finished) throw InputError("--from-log " + run_log.string() + ": no 'run finished' line (an unfinished run)");
     return c;
 }
 
@@ -78,28 +78,46 @@ double projected_makespan(const std::vector<double>& cost, int ranks) {
     return *std::max_element(free_at.begin(), free_at.end());
 }
 
-void print_projection(const SweepCosts& c, const std::vector<int>& ranks) {
-    const double sum = std::accumulate(c.cost.begin(), c.cost.end(), 0.0);
-    const double longest = *std::max_element(c.cost.begin(), c.cost.end());
-    // Amdahl's serial part: what a 1-rank run spends outside the points (set-up, analysis, writing).
-    const double serial = c.wall > sum ? c.wall - sum : 0.0;
-    std::printf("  %zu points: sum %.4g CPU s, longest %.4g s, median %.4g s; serial part %.3g s\n", c.cost.size(), sum,
-                longest, median(c.cost), serial);
-    std::printf("  projected (points handed out longest first as ranks free up; wall = serial + makespan):\n");
-    std::printf("  %7s %12s %10s %11s\n", "ranks", "wall [s]", "speed-up", "efficiency");
-    const double t1 = serial + sum;
-    for (int r : ranks) {
-        const double t = serial + projected_makespan(c.cost, r);
-        std::printf("  %7d %12.4g %10.3g %10.0f%%\n", r, t, t1 / t, 100.0 * t1 / t / r);
+double SweepCosts::serial() const {
+    // Amdahl's serial part: what the run spent outside its points (set-up, analysis); all of it for
+    // an experiment without a distributed sweep. (A log of a multi-rank run has wall < sum: 0.)
+    const double sum = std::accumulate(cost.begin(), cost.end(), 0.0);
+    return std::max(0.0, wall - sum);
+}
+
+double SweepCosts::projected(int ranks) const { return serial() + (cost.empty() ? 0.0 : projected_makespan(cost, ranks)); }
+
+void print_projection(const std::vector<SweepCosts>& runs, const std::vector<int>& ranks) {
+    double longest = 0, serial = 0;
+    for (const SweepCosts& c : runs) {
+        const double sum = std::accumulate(c.cost.begin(), c.cost.end(), 0.0);
+        const double top = c.cost.empty() ? 0.0 : *std::max_element(c.cost.begin(), c.cost.end());
+        std::printf("  %-18s %4zu points: sum %9.4g CPU s, longest %8.4g s, median %8.4g s; serial part %8.3g s\n",
+                    c.name.c_str(), c.cost.size(), sum, top, c.cost.empty() ? 0.0 : median(c.cost), c.serial());
+        longest += c.serial() + top;
+        serial += c.serial();
     }
-    std::printf("  bound: the longest point, %.4g s (speed-up at most %.3g)\n", longest, t1 / (serial + longest));
+    std::printf("  projected (points handed out longest first as ranks free up; wall = serial + makespan%s):\n",
+                runs.size() > 1 ? ", experiments one after another" : "");
+    std::printf("  %7s %12s %10s %11s\n", "ranks", "wall [s]", "speed-up", "efficiency");
+    auto total = [&](int r) {
+        double t = 0;
+        for (const SweepCosts& c : runs) t += c.projected(r);
+        return t;
+    };
+    for (int r : ranks)
+        std::printf("  %7d %12.4g %10.3g %10.0f%%\n", r, total(r), total(1) / total(r), 100.0 * total(1) / total(r) / r);
+    std::printf("  bound: serial parts plus each sweep's longest point, %.4g s (speed-up at most %.3g); serial alone %.4g s\n",
+                longest, total(1) / longest, serial);
 }
 
 void bench_sweep_report(const BenchOptions& opt) {
     const std::vector<int> projected = {1, 2, 16, 64, 256};
     if (!opt.from_log.empty()) {
-        std::printf("bench sweep: projection from %s\n", opt.from_log.c_str());
-        print_projection(read_sweep_costs(opt.from_log), projected);
+        std::printf("bench sweep: projection from %zu run.log file%s\n", opt.from_log.size(), opt.from_log.size() > 1 ? "s" : "");
+        std::vector<SweepCosts> runs;
+        for (const std::string& f : opt.from_log) runs.push_back(read_sweep_costs(f));
+        print_projection(runs, projected);
         return;
     }
     bool known = false;
@@ -137,7 +155,7 @@ void bench_sweep_report(const BenchOptions& opt) {
     costs.wall = median(one);
     std::printf("  measured wall: 1 rank %.4g s, %d ranks %.4g s: speed-up %.3g\n", median(one), opt.ranks, median(many),
                 median(one) / median(many));
-    print_projection(costs, projected);
+    print_projection({costs}, projected);
 }
 
 } // namespace granrepro

@@ -402,7 +402,7 @@ static int run_main(int argc, char** argv) {
     bench->add_option("--scale", bench_opt.scale, "sweep: quick (default) or paper");
     std::string bench_ranks = std::to_string(bench_opt.ranks);
     bench->add_option("--ranks", bench_ranks, "sweep: MPI ranks compared with one (2 to 256, default 2)");
-    bench->add_option("--from-log", bench_opt.from_log, "sweep: project rank counts from this run.log instead of running");
+    bench->add_option("--from-log", bench_opt.from_log, "sweep: project rank counts from these run.log files (one experiment, or every one of `all`) instead of running");
     bench->callback([&] {
         bench_opt.threads = parse_positive_int("--threads", bench_threads, 256);
         bench_opt.ranks = parse_positive_int("--ranks", bench_ranks, 256);

@@ -33,5 +33,7 @@ TEST(SweepBench, ReadsPointCostsAndWallTimeFromRunLog) {
     EXPECT_EQ(c.cost[0], 1.25);
     EXPECT_EQ(c.cost[1], 0.25);
     EXPECT_EQ(c.wall, 8.5);
+    EXPECT_EQ(c.serial(), 7.0);                   // 8.5 s wall, 1.5 s in points
+    EXPECT_DOUBLE_EQ(c.projected(2), 7.0 + 1.25); // the longer point on one rank, the other beside it
     EXPECT_ANY_THROW(read_sweep_costs(file)); // gone: an input error naming it
 }
