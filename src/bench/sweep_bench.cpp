@@ -56,7 +56,7 @@ SweepCosts read_sweep_costs(const fs::path& run_log) {
     std::ifstream in(run_log);
     if (!in) throw InputError("--from-log " + run_log.string() + ": cannot read it (a run.log of an experiment)");
     static const std::regex point(R"(sweep \S+: point (\d+) cost ([0-9.eE+-]+) CPU s)");
-    static const std::regex wall(R"(run finished: wall time ([0-9.eE+-]+) s)");
+    static const std::regex wall(R"(run finished: wall time ([0-9.eE+-]+) s(, CPU ([0-9.eE+-]+) s)?)");
     SweepCosts c;
     c.name = run_log.parent_path().filename().string();
     std::string line;
@@ -64,7 +64,11 @@ SweepCosts read_sweep_costs(const fs::path& run_log) {
     bool finished = false;
     while (std::getline(in, line)) {
         if (std::regex_search(line, m, point)) c.cost.push_back(std::stod(m[2]));
-        else if (std::regex_search(line, m, wall)) c.wall = std::stod(m[1]), finished = true;
+        else if (std::regex_search(line, m, wall)) {
+            c.wall = std::stod(m[1]);
+            c.cpu = m[3].matched ? std::stod(m[3]) : -1.0;
+            finished = true;
+        }
     }
     if (!finished) throw InputError("--from-log " + run_log.string() + ": no 'run finished' line (an unfinished run)");
     return c;
@@ -80,9 +84,10 @@ double projected_makespan(const std::vector<double>& cost, int ranks) {
 
 double SweepCosts::serial() const {
     // Amdahl's serial part: what the run spent outside its points (set-up, analysis); all of it for
-    // an experiment without a distributed sweep. (A log of a multi-rank run has wall < sum: 0.)
+    // an experiment without a distributed sweep. From the CPU time where the log has it (a 1-thread
+    // run on a busy machine has wall > CPU); a multi-rank run's log has wall < sum: 0.
     const double sum = std::accumulate(cost.begin(), cost.end(), 0.0);
-    return std::max(0.0, wall - sum);
+    return std::max(0.0, (cpu >= 0 ? cpu : wall) - sum);
 }
 
 double SweepCosts::projected(int ranks) const { return serial() + (cost.empty() ? 0.0 : projected_makespan(cost, ranks)); }

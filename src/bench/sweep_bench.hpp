@@ -17,11 +17,12 @@ struct SweepCosts {
     std::string name;         // the experiment (the run.log's folder)
     std::vector<double> cost; // per computed point [CPU s]; none for an experiment without a sweep
     double wall = 0;          // the run's wall time [s]
+    double cpu = -1;          // its CPU time, all threads [s]; -1 where the log does not say
     double serial() const;    // wall time outside the points [s]
     double projected(int ranks) const; // serial + makespan on `ranks` ranks [s]
 };
 
-// The "sweep <label>: point <i> cost <s> CPU s" and "run finished: wall time <s> s" lines of a
+// The "sweep <label>: point <i> cost <s> CPU s" and "run finished: wall time <s> s, CPU <s> s" lines of a
 // run.log (a finished run; an experiment without a distributed sweep has no point lines).
 SweepCosts read_sweep_costs(const std::filesystem::path& run_log);
 // Wall time of the points on `ranks` workers that take them longest first as they become free [s].

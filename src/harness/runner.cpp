@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <ctime>
 #include <fstream>
 #include <optional>
 #include <sstream>
@@ -219,6 +220,7 @@ int run_experiment(const std::string& name, const RunOptions& opt, VerdictCounts
     ctx.sweep = plan;
 
     const auto t0 = std::chrono::steady_clock::now();
+    const std::clock_t cpu0 = std::clock(); // this process's CPU time, all threads
     std::optional<Result> ran;
     try {
         ran.emplace(exp.run(ctx));
@@ -249,7 +251,9 @@ int run_experiment(const std::string& name, const RunOptions& opt, VerdictCounts
     }
     Result& result = *ran;
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    run_log().line("run finished: wall time " + std::to_string(wall) + " s");
+    // The CPU time lets `bench sweep` tell a run's serial part from time lost to other processes.
+    run_log().line("run finished: wall time " + std::to_string(wall) + " s, CPU " +
+                   std::to_string(double(std::clock() - cpu0) / CLOCKS_PER_SEC) + " s");
 
     // Every write is checked; a failure names the file where it would have ended up, and the
     // old results stay as they were (nothing is renamed into place).

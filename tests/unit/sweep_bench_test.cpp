@@ -26,6 +26,7 @@ TEST(SweepBench, ReadsPointCostsAndWallTimeFromRunLog) {
             << "[      1.5 s] sweep bistable-pipe: point 3 cost 1.25 CPU s (rank 0)\n"
             << "[      2.5 s] sweep bistable-pipe: point 0 cost 2.5e-01 CPU s (rank 1)\n"
             << "[      9.0 s] run finished: wall time 8.5 s\n";
+        std::ofstream(file.string() + "2") << "[ 9.0 s] run finished: wall time 8.5 s, CPU 2.5 s\n";
     }
     const SweepCosts c = read_sweep_costs(file);
     std::filesystem::remove(file);
@@ -36,4 +37,10 @@ TEST(SweepBench, ReadsPointCostsAndWallTimeFromRunLog) {
     EXPECT_EQ(c.serial(), 7.0);                   // 8.5 s wall, 1.5 s in points
     EXPECT_DOUBLE_EQ(c.projected(2), 7.0 + 1.25); // the longer point on one rank, the other beside it
     EXPECT_ANY_THROW(read_sweep_costs(file)); // gone: an input error naming it
+    // No sweep: all of it serial, from the CPU time where the log has it (the rest was other processes).
+    const SweepCosts s = read_sweep_costs(file.string() + "2");
+    std::filesystem::remove(file.string() + "2");
+    EXPECT_TRUE(s.cost.empty());
+    EXPECT_EQ(s.serial(), 2.5);
+    EXPECT_EQ(s.projected(64), 2.5);
 }
