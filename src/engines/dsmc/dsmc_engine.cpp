@@ -7,8 +7,10 @@
 
 namespace granrepro {
 
-DsmcEngine::DsmcEngine(const DsmcConfig& config, std::vector<Vec2> position, std::vector<Vec2> velocity,
-                       std::vector<double> radius, std::vector<double> mass)
+template <DsmcCollisionOperator Collision>
+BasicDsmcEngine<Collision>::BasicDsmcEngine(const DsmcConfig& config, std::vector<Vec2> position,
+                                            std::vector<Vec2> velocity, std::vector<double> radius,
+                                            std::vector<double> mass)
     : cfg_(config), rng_(config.seed, config.stream), pos_(std::move(position)), vel_(std::move(velocity)),
       rad_(std::move(radius)), mass_(std::move(mass)) {
     const std::size_t n = pos_.size();
@@ -21,11 +23,14 @@ DsmcEngine::DsmcEngine(const DsmcConfig& config, std::vector<Vec2> position, std
     for (auto& p : pos_) p = {wrap(p.x, cfg_.lx), wrap(p.y, cfg_.ly)};
 }
 
-DsmcEngine::DsmcEngine(const DsmcState& s) : cfg_(s.config), rng_(s.config.seed, s.config.stream) {
+template <DsmcCollisionOperator Collision>
+BasicDsmcEngine<Collision>::BasicDsmcEngine(const DsmcState& s)
+    : cfg_(s.config), rng_(s.config.seed, s.config.stream) {
     restore_state(s);
 }
 
-void DsmcEngine::validate_and_setup() {
+template <DsmcCollisionOperator Collision>
+void BasicDsmcEngine<Collision>::validate_and_setup() {
     const std::size_t n = pos_.size();
     if (n < 2) throw InputError("DSMC: need at least two particles");
     if (n > std::numeric_limits<std::uint32_t>::max()) throw InputError("DSMC: too many particles");
@@ -69,8 +74,8 @@ void DsmcEngine::validate_and_setup() {
     inv_wx_ = static_cast<double>(nx_) / cfg_.lx;
     inv_wy_ = static_cast<double>(ny_) / cfg_.ly;
     cell_area_ = wx_ * wy_;
-    law_ = RoughDiskCollision{cfg_.r, 0.0, -1.0, cfg_.q};
-    elastic_law_ = RoughDiskCollision{1.0, 0.0, -1.0, cfg_.q};
+    law_ = smooth_law(cfg_.r);
+    elastic_law_ = smooth_law(1.0);
     if (cfg_.free_volume_block > std::min(nx_, ny_))
         throw InputError("DSMC: free_volume_block exceeds the number of cells per side");
     cell_of_.assign(n, 0);
@@ -80,22 +85,26 @@ void DsmcEngine::validate_and_setup() {
     block_area_.clear();
 }
 
-double DsmcEngine::mean_free_volume_factor() const {
+template <DsmcCollisionOperator Collision>
+double BasicDsmcEngine<Collision>::mean_free_volume_factor() const {
     return 1.0 / std::max(1.0 - area_fraction_ / cfg_.rcp_fraction, cfg_.free_volume_floor);
 }
 
-void DsmcEngine::set_restitution(double r) {
+template <DsmcCollisionOperator Collision>
+void BasicDsmcEngine<Collision>::set_restitution(double r) {
     if (!(r >= 0.0 && r <= 1.0)) throw InputError("DSMC: restitution r must be in [0, 1]");
     cfg_.r = r;
-    law_.r = r;
+    law_ = smooth_law(r);
 }
 
-void DsmcEngine::set_tc(double t_c) {
+template <DsmcCollisionOperator Collision>
+void BasicDsmcEngine<Collision>::set_tc(double t_c) {
     if (!(t_c >= 0.0)) throw InputError("DSMC: t_c must be >= 0");
     cfg_.t_c = t_c;
 }
 
-void DsmcEngine::resample() {
+template <DsmcCollisionOperator Collision>
+void BasicDsmcEngine<Collision>::resample() {
     double v2 = 0.0;
     for (const auto& v : vel_) v2 = std::max(v2, norm2(v));
     const double v_fast = std::sqrt(v2);
@@ -125,7 +134,8 @@ void DsmcEngine::resample() {
     resample_collisions_ = collisions_;
 }
 
-void DsmcEngine::move_and_sort(double dt) {
+template <DsmcCollisionOperator Collision>
+void BasicDsmcEngine<Collision>::move_and_sort(double dt) {
     const std::size_t n = pos_.size(), ncell = nx_ * ny_;
     std::fill(start_.begin(), start_.end(), 0u);
     for (std::size_t i = 0; i < n; ++i) {
@@ -145,7 +155,8 @@ void DsmcEngine::move_and_sort(double dt) {
     for (std::size_t i = 0; i < n; ++i) order_[fill[cell_of_[i]]++] = static_cast<std::uint32_t>(i);
 }
 
-void DsmcEngine::block_areas() {
+template <DsmcCollisionOperator Collision>
+void BasicDsmcEngine<Collision>::block_areas() {
     const std::size_t ncell = nx_ * ny_;
     cell_r2_.assign(ncell, 0.0);
     for (std::size_t c = 0; c < ncell; ++c)
@@ -170,7 +181,8 @@ void DsmcEngine::block_areas() {
         }
 }
 
-double DsmcEngine::free_volume(std::size_t cell, std::size_t begin, std::size_t cnt) const {
+template <DsmcCollisionOperator Collision>
+double BasicDsmcEngine<Collision>::free_volume(std::size_t cell, std::size_t begin, std::size_t cnt) const {
     switch (cfg_.free_volume) {
     case DsmcFreeVolume::off:
         return cell_area_;
@@ -192,19 +204,22 @@ double DsmcEngine::free_volume(std::size_t cell, std::size_t begin, std::size_t 
     return cell_area_;
 }
 
-double DsmcEngine::kinetic_energy() const {
+template <DsmcCollisionOperator Collision>
+double BasicDsmcEngine<Collision>::kinetic_energy() const {
     double k = 0.0;
     for (std::size_t i = 0; i < vel_.size(); ++i) k += mass_[i] * norm2(vel_[i]);
     return 0.5 * k;
 }
 
-Vec2 DsmcEngine::total_momentum() const {
+template <DsmcCollisionOperator Collision>
+Vec2 BasicDsmcEngine<Collision>::total_momentum() const {
     Vec2 p;
     for (std::size_t i = 0; i < vel_.size(); ++i) p += mass_[i] * vel_[i];
     return p;
 }
 
-std::size_t DsmcEngine::memory_bytes() const {
+template <DsmcCollisionOperator Collision>
+std::size_t BasicDsmcEngine<Collision>::memory_bytes() const {
     return pos_.capacity() * sizeof(Vec2) + vel_.capacity() * sizeof(Vec2) +
            (rad_.capacity() + mass_.capacity() + last_.capacity()) * sizeof(double) +
            count_.capacity() * sizeof(std::uint64_t) + (cell_r2_.capacity() + block_area_.capacity() + scratch_r2_.capacity()) * sizeof(double) +
@@ -213,7 +228,8 @@ std::size_t DsmcEngine::memory_bytes() const {
            sizeof(*this);
 }
 
-DsmcState DsmcEngine::save_state() const {
+template <DsmcCollisionOperator Collision>
+DsmcState BasicDsmcEngine<Collision>::save_state() const {
     DsmcState s;
     s.config = cfg_;
     s.time = time_;
@@ -238,7 +254,8 @@ DsmcState DsmcEngine::save_state() const {
     return s;
 }
 
-void DsmcEngine::restore_state(const DsmcState& s) {
+template <DsmcCollisionOperator Collision>
+void BasicDsmcEngine<Collision>::restore_state(const DsmcState& s) {
     const std::size_t n = s.position.size();
     if (s.velocity.size() != n || s.radius.size() != n || s.mass.size() != n ||
         s.last_collision_time.size() != n || s.collision_count.size() != n || s.last_partner.size() != n)
@@ -267,5 +284,7 @@ void DsmcEngine::restore_state(const DsmcState& s) {
     resample_time_ = s.resample_time;
     resample_collisions_ = s.resample_collisions;
 }
+
+template class BasicDsmcEngine<RoughDiskCollision>; // DsmcEngine
 
 } // namespace granrepro

@@ -20,9 +20,9 @@
 //      e_perp = perp(e), the normal from j to i at the virtual contact is
 //          n = -sqrt(1 - u^2) e - u e_perp,
 //      so that g.n = -|g| sqrt(1-u^2) < 0 (approaching) and (r_i - r_j) x e = d_ij n x e = b, Eq. (17).
-//      Velocities change by the Walton-Braun impulse (RoughDiskCollision, beta0 = -1: normal part
-//      times -r, tangential part unchanged); under the TC model (Eq. 7, t_c > 0) r -> 1 when either
-//      partner's previous collision is at most t_c old.
+//      Velocities change by the Collision operator, in DsmcEngine the Walton-Braun impulse
+//      (RoughDiskCollision, beta0 = -1: normal part times -r, tangential part unchanged); under the
+//      TC model (Eq. 7, t_c > 0) r -> 1 when either partner's previous collision is at most t_c old.
 //   6. optional displacement (Sec. 2.4, second correction, after Alexander, Garcia & Alder's
 //      consistent Boltzmann algorithm, the paper's Ref. [67]): "an offset of d to the particle
 //      distance along the direction of the momentum transfer". Read literally: the separation
@@ -45,6 +45,7 @@
 #include "models/rough_disk_collision.hpp"
 #include <algorithm>
 #include <cmath>
+#include <concepts>
 #include <cstddef>
 #include <cstdint>
 #include <limits>
@@ -53,14 +54,26 @@
 
 namespace granrepro {
 
-class DsmcEngine {
+// A collision operator the DSMC engine can use: a value type built from the smooth Walton-Braun
+// parameters of the config (r, or r = 1 for the TC model's elastic collisions; mu = 0,
+// beta0 = -1; q), with collide<false>(v1, 0, m1, a1, v2, 0, m2, a2, n).dP the momentum change of
+// disk 1 as documented in RoughDiskCollision. DSMC disks carry no spin, so only the smooth form
+// is called; a frictional operator's tangential part is never applied.
+template <class C>
+concept DsmcCollisionOperator = std::copyable<C> && std::default_initializable<C> &&
+    std::constructible_from<C, RoughDiskCollision> && requires(const C& c, Vec2 v, double x) {
+        { c.template collide<false>(v, x, x, x, v, x, x, x, v).dP } -> std::convertible_to<Vec2>;
+    };
+
+template <DsmcCollisionOperator Collision>
+class BasicDsmcEngine {
 public:
     // Starts from the given arrays (e.g. the state an ED equilibration produced): positions [m]
     // (wrapped into the box), velocities [m/s], radii [m], masses [kg], all of one length N >= 2.
     // Throws InputError on inconsistent input.
-    DsmcEngine(const DsmcConfig& config, std::vector<Vec2> position, std::vector<Vec2> velocity,
-               std::vector<double> radius, std::vector<double> mass);
-    explicit DsmcEngine(const DsmcState& state);
+    BasicDsmcEngine(const DsmcConfig& config, std::vector<Vec2> position, std::vector<Vec2> velocity,
+                    std::vector<double> radius, std::vector<double> mass);
+    explicit BasicDsmcEngine(const DsmcState& state);
 
     // One step, of length min(tau, max_dt). Obs is any callable taking const CollisionRecord&.
     template <class Obs>
@@ -124,6 +137,8 @@ private:
     };
 
     void validate_and_setup();
+    // The config's law: smooth disks (mu = 0, beta0 = -1) with restitution r.
+    Collision smooth_law(double r) const { return Collision(RoughDiskCollision{r, 0.0, -1.0, cfg_.q}); }
     void resample();
     void move_and_sort(double dt);
     double free_volume(std::size_t cell, std::size_t begin, std::size_t count) const;
@@ -162,14 +177,15 @@ private:
     std::size_t nx_ = 1, ny_ = 1;
     double wx_ = 0.0, wy_ = 0.0, inv_wx_ = 0.0, inv_wy_ = 0.0, cell_area_ = 0.0;
     double sigma_max_ = 0.0, lambda_ = 0.0, area_fraction_ = 0.0;
-    RoughDiskCollision law_, elastic_law_;
+    Collision law_, elastic_law_;
     // Scratch (not state): cell of each particle, particles in cell order, cell start offsets.
     std::vector<std::uint32_t> cell_of_, order_, start_, scratch_fill_;
     std::vector<double> cell_r2_, block_area_, scratch_r2_; // per cell: sum of r^2, the block's disk area [m^2]
 };
 
+template <DsmcCollisionOperator Collision>
 template <class Obs>
-void DsmcEngine::step(Obs& obs, double max_dt) {
+void BasicDsmcEngine<Collision>::step(Obs& obs, double max_dt) {
     if (steps_ % cfg_.resample_interval == 0) resample();
     const double dt = tau_ < max_dt ? tau_ : max_dt;
     if (!std::isfinite(dt)) throw std::logic_error("DSMC: all particles at rest and no end time: no time scale");
@@ -184,7 +200,8 @@ void DsmcEngine::step(Obs& obs, double max_dt) {
     ++steps_;
 }
 
-inline std::uint32_t DsmcEngine::choose_partner(std::size_t begin, std::size_t cnt, std::size_t k1) {
+template <DsmcCollisionOperator Collision>
+inline std::uint32_t BasicDsmcEngine<Collision>::choose_partner(std::size_t begin, std::size_t cnt, std::size_t k1) {
     const std::uint32_t i = order_[begin + k1];
     if (cfg_.partner == DsmcPartner::nearest) {
         // Lowest index wins a tie (order_ is stable), so the choice depends on the state only.
@@ -218,8 +235,9 @@ inline std::uint32_t DsmcEngine::choose_partner(std::size_t begin, std::size_t c
     return j;
 }
 
+template <DsmcCollisionOperator Collision>
 template <class Obs>
-void DsmcEngine::collide_cell(std::size_t cell, std::size_t begin, std::size_t cnt, double dt, Obs& obs) {
+void BasicDsmcEngine<Collision>::collide_cell(std::size_t cell, std::size_t begin, std::size_t cnt, double dt, Obs& obs) {
     const double pairs_half = 0.5 * static_cast<double>(cnt) * static_cast<double>(cnt - 1);
     const double inv_v = 1.0 / free_volume(cell, begin, cnt);
     exposure_ += pairs_half * dt * inv_v;
@@ -250,8 +268,8 @@ void DsmcEngine::collide_cell(std::size_t cell, std::size_t begin, std::size_t c
         const Vec2 n = -std::sqrt(1.0 - u * u) * e - u * perp(e);
         const double ti = time_ - last_[i], tj = time_ - last_[j];
         const bool elastic = cfg_.t_c > 0.0 && (ti <= cfg_.t_c || tj <= cfg_.t_c);
-        const RoughDiskCollision& law = elastic ? elastic_law_ : law_;
-        const auto res = law.collide<false>(vel_[i], 0.0, mass_[i], rad_[i], vel_[j], 0.0, mass_[j], rad_[j], n);
+        const Collision& law = elastic ? elastic_law_ : law_;
+        const auto res = law.template collide<false>(vel_[i], 0.0, mass_[i], rad_[i], vel_[j], 0.0, mass_[j], rad_[j], n);
         vel_[i] += res.dP / mass_[i];
         vel_[j] -= res.dP / mass_[j];
 
@@ -282,5 +300,8 @@ void DsmcEngine::collide_cell(std::size_t cell, std::size_t begin, std::size_t c
         obs(rec);
     }
 }
+
+// dsmc_engine.cpp defines the members for the operators it instantiates (add new ones there).
+using DsmcEngine = BasicDsmcEngine<RoughDiskCollision>;
 
 } // namespace granrepro
