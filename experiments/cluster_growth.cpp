@@ -27,6 +27,7 @@
 #include <gsl/gsl_fit.h>
 #include <gsl/gsl_sort.h>
 #include <gsl/gsl_statistics_double.h>
+#include <mutex>
 #include <optional>
 #include <string>
 
@@ -37,11 +38,12 @@
 #include "engines/ed/ed_initial_states.hpp"
 #include "experiments/work_limits.hpp"
 #include "harness/experiment.hpp"
-#include "harness/parallel_sweep.hpp"
+#include "harness/distributed_sweep.hpp"
 #include "harness/progress.hpp"
 #include "harness/run_checkpoint.hpp"
 #include "harness/run_log.hpp"
 #include "harness/sampled_run.hpp"
+#include "io/json_fields.hpp"
 #include "observables/collision_rate_fit.hpp"
 #include "observables/rate_histogram.hpp"
 #include "theory/kinetic_theory.hpp"
@@ -109,7 +111,7 @@ struct InstantRecord {
     double fast_fraction = 0; // particles with a collision within t_c of their previous one in (t/2, t]
     std::vector<double> rate;          // N_c per particle over (t/2, t] [1/s]
     std::vector<std::uint64_t> counts; // collisions per particle over (0, t]
-    std::vector<Vec2> pos;             // positions at t [m]
+    std::vector<Vec2> pos;             // positions at t [m]; in a point's JSON only at snapshot_times
     template <class V>
     void fields(V&& v) {
         v("t", t), v("cn", cn), v("elastic_cn", elastic_cn), v("fast_fraction", fast_fraction);
@@ -189,12 +191,22 @@ Instant make_instant(InstantRecord rec, const ClusterSpec& s) {
     return in;
 }
 
-// Everything the sampling loop carries from one sample to the next, besides the engine.
-struct LoopState {
+// What a run measured, sample by sample and at the instants: all the analysis reads of it.
+struct Samples {
     std::vector<double> ts, ks, kxs, kys, cns, ecns; // per sample: t [s], K, K_x, K_y [J], C/N, TC-elastic C/N
     std::vector<double> fast_share; // per sample: cumulative share of particle-collisions within t_c of the particle's previous one
     std::vector<double> hot;        // per sample: fraction of particles whose latest interval was <= t_c
     std::vector<InstantRecord> instants;
+    template <class V>
+    void fields(V&& v) {
+        v("t", ts), v("K", ks), v("Kx", kxs), v("Ky", kys), v("C_over_N", cns), v("elastic_C_over_N", ecns);
+        v("fast_share", fast_share), v("hot", hot), v("instants", instants);
+    }
+};
+
+// Everything the sampling loop carries from one sample to the next, besides the engine: the
+// samples and the observer's bookkeeping (same fields, same order as schema version 3).
+struct LoopState : Samples {
     std::vector<std::uint64_t> prev_counts; // at the previous instant t/2
     // Per-particle Eq. (7) bookkeeping from the collision records (observer state).
     std::vector<double> last_t, last_interval;  // [s]; -inf / +inf before the first
@@ -202,9 +214,8 @@ struct LoopState {
     std::uint64_t fast_total = 0;               // their sum over particles
     template <class V>
     void fields(V&& v) {
-        v("t", ts), v("K", ks), v("Kx", kxs), v("Ky", kys), v("C_over_N", cns), v("elastic_C_over_N", ecns);
-        v("fast_share", fast_share), v("hot", hot), v("instants", instants), v("prev_counts", prev_counts);
-        v("last_t", last_t), v("last_interval", last_interval), v("fast", fast), v("prev_fast", prev_fast);
+        Samples::fields(v);
+        v("prev_counts", prev_counts), v("last_t", last_t), v("last_interval", last_interval), v("fast", fast), v("prev_fast", prev_fast);
         v("fast_total", fast_total);
     }
 };
@@ -312,11 +323,21 @@ void record_instant(LoopState& st, const EdEngine& eng, double t) {
     st.prev_fast = st.fast;
 }
 
+// A run's sweep point: what the analysis reads of it, through its JSON (io/json_fields.hpp), so
+// that threads, ranks, shards and gather give the same bits. No ±inf in it (JSON would return NaN;
+// omega_eq is NaN without equilibration, and stays NaN): the carry's per-particle bookkeeping,
+// -inf / +inf before a particle's first collision, stays in the mid-run checkpoint.
 struct RunOutcome {
-    LoopState st;
+    Samples st;
     std::string error; // the collapse guard's message, if it stopped the run
     double wall = 0;   // [s]
     double events = 0, collisions = 0;
+    double omega_eq = 0; // collision rate per particle of the elastic equilibration [1/s]
+    template <class V>
+    void fields(V&& v) {
+        v("samples", st), v("error", error), v("wall_seconds", wall), v("events", events), v("collisions", collisions);
+        v("omega_equilibration", omega_eq);
+    }
 };
 
 // One TCED run from the equilibrated state: samples at t_base 2^(j/m), j from -3m, until
@@ -327,8 +348,8 @@ RunOutcome run_tced(const RunContext& ctx, const ClusterSpec& s, const Equilibra
     const int m = s.samples_per_octave;
     RunCheckpoint checkpoint(ctx, name);
     SampledRun<LoopState> run(checkpoint, kRunSchema, kRunSchemaVersion);
+    LoopState st;
     RunOutcome out;
-    LoopState& st = out.st;
     EdState saved;
     const bool resumed = run.resume(saved, st);
     EdEngine eng = resumed ? EdEngine(saved) : tced_engine(s, gas, tc_both);
@@ -357,6 +378,8 @@ RunOutcome run_tced(const RunContext& ctx, const ClusterSpec& s, const Equilibra
         out.error = e.what();  // the collapse guard; keep what was measured
         warn("cluster-growth: " + out.error);
     }
+    out.st = std::move(st); // the samples; the bookkeeping stays in the checkpoint
+    out.omega_eq = gas.collision_rate;
     out.wall = run.wall_seconds();
     out.events = double(eng.events_processed());
     out.collisions = double(eng.total_collisions());
@@ -423,12 +446,12 @@ KineticTheory kinetic_theory(const ClusterSpec& s) {
     return {rho, omega, theory::haff_t0(s.r, omega)};
 }
 
-void report_run(Result& res, const ClusterSpec& s, const KineticTheory& kin, double omega_eq, const RunOutcome& main_run,
+void report_run(Result& res, const ClusterSpec& s, const KineticTheory& kin, const RunOutcome& main_run,
                 const RunOutcome* other_run) {
     res.scalar("N", double(s.n()), "1", "number of disks");
     res.scalar("rho", kin.rho, "1", "area fraction (pi/4) N / L^2");
     res.scalar("t0_kinetic", kin.t0, "s", "t0 of Eq. (18) from kinetic theory (sqrt(2 pi) in Eq. 19; see cooling.cpp)");
-    res.scalar("omega_equilibration_over_enskog", omega_eq / kin.omega_enskog, "1", "elastic collision rate per particle during equilibration over Enskog's");
+    res.scalar("omega_equilibration_over_enskog", main_run.omega_eq / kin.omega_enskog, "1", "elastic collision rate per particle during equilibration over Enskog's");
     res.scalar("wall_seconds_run", main_run.wall, "s", "wall time of the cooling run (after equilibration)");
     res.scalar("events_per_second", main_run.events / main_run.wall, "1/s", "ED events (collisions, cell crossings, stale) per second");
     res.scalar("collisions_per_second", main_run.collisions / main_run.wall, "1/s", "pair collisions per second");
@@ -441,7 +464,7 @@ void report_run(Result& res, const ClusterSpec& s, const KineticTheory& kin, dou
 }
 
 // Fig. 10: K/K0, C/N and the TC-elastic collisions per particle against t; returns K/K0.
-std::vector<double> fig10_table(Result& res, const LoopState& st, double t0, double late_from) {
+std::vector<double> fig10_table(Result& res, const Samples& st, double t0, double late_from) {
     const auto& ts = st.ts;
     Table& t = res.table("energy", "K/K0, C/N and TC-elastic collisions per particle against t");
     std::vector<double> kk, an, e18, s2, s1, efrac;
@@ -504,7 +527,7 @@ void fig10_slopes(Result& res, const std::vector<double>& ts, const std::vector<
 
 // The TC-elastic share three ways (see the top of this file), for t <= elastic_until and over
 // the whole run, of one run with pair rule `rule`.
-void report_elastic_shares(Result& res, const LoopState& ls, const std::string& tag, const char* rule, double until) {
+void report_elastic_shares(Result& res, const Samples& ls, const std::string& tag, const char* rule, double until) {
     double coll = 0, coll_all = 0, own = 0, hot_max = 0, hot_sum = 0;
     int hot_n = 0;
     for (std::size_t i = 1; i < ls.ts.size(); ++i) {
@@ -539,7 +562,7 @@ void report_elastic_shares(Result& res, const LoopState& ls, const std::string& 
     }
 }
 
-void fig10(Result& res, const ClusterSpec& s, double t0, const LoopState& st, const LoopState* other) {
+void fig10(Result& res, const ClusterSpec& s, double t0, const Samples& st, const Samples* other) {
     const std::vector<double> kk = fig10_table(res, st, t0, s.late_slope_from);
     fig10_slopes(res, st.ts, kk, t0, s.samples_per_octave, s.late_slope_from);
     // The main pair rule and, with tc_compare_until, the other one.
@@ -779,6 +802,9 @@ void report_powerlaw_onset(Result& res, const std::vector<Instant>& instants) {
                "share of the instants with C/N > 70 where Eq. (22) fits better than Eq. (21)");
 }
 
+// Is the instant at t the Fig. 11 snapshot time tq?
+bool snapshot_at(double t, double tq) { return std::abs(t / tq - 1) < 1e-9; }
+
 // Fig. 11: positions coloured by N_c at the paper's times, one colour range for all panels.
 // Sec. 4.2: "in the bright regions in the centers of the clusters the collision frequency is
 // largest". Particles ranked by the number of disks around them (cells of cluster_cell
@@ -788,7 +814,7 @@ void fig11(Result& res, const std::vector<Instant>& instants, const ClusterSpec&
     std::vector<const Instant*> shown;
     for (double tq : s.snapshot_times)
         for (const auto& in : instants)
-            if (std::abs(in.t / tq - 1) < 1e-9) shown.push_back(&in);
+            if (snapshot_at(in.t, tq)) shown.push_back(&in);
     double lo = INFINITY, hi = 0; // from the smallest positive N_c to the largest
     for (const Instant* in : shown)
         for (double v : in->rate)
@@ -824,27 +850,50 @@ void fig11(Result& res, const std::vector<Instant>& instants, const ClusterSpec&
     report_cluster_centres(res, mt, mc, top, ratio);
 }
 
+// A run's point JSON holds only what the analysis reads: of the other rule's run the samples
+// (Fig. 10), of the main run's instants the positions only at the Fig. 11 snapshot times.
+nlohmann::json point_json(RunOutcome r, const ClusterSpec& s, bool main_run) {
+    if (!main_run) r.st.instants.clear();
+    for (InstantRecord& in : r.st.instants)
+        if (std::none_of(s.snapshot_times.begin(), s.snapshot_times.end(), [&](double tq) { return snapshot_at(in.t, tq); }))
+            in.pos.clear();
+    return to_json_fields(r);
+}
+
+// The main run (pair rule tc_both) to cn_end and, with tc_compare_until > 0, the other pair rule
+// beside it up to that time, both from one equilibrated state: the sweep's points 0 and 1, the
+// main run first (the longer one: 1.8 against 0.44 CPU s at quick scale). The state is made
+// once, by the first point that needs it (not at all where every point is resumed or gathered).
+std::vector<RunOutcome> tced_runs(const RunContext& ctx, const ClusterSpec& s, long& resumed) {
+    std::once_flag made;
+    EquilibratedGas gas;
+    Progress progress("cluster-growth", long(std::ceil(std::log2(s.t_max / s.t_base))) + 4, ctx.quiet);
+    const std::vector<long> order = s.tc_compare_until > 0 ? std::vector<long>{0, 1} : std::vector<long>{0};
+    const SweepResult swept = distributed_sweep(ctx, "cluster-growth", order, [&](long k) {
+        std::call_once(made, [&] { gas = initial_gas(s, ctx.seed); });
+        if (k == 0) return point_json(run_tced(ctx, s, gas, s.tc_both, s.cn_end, s.t_max, "ed", &progress), s, true);
+        return point_json(run_tced(ctx, s, gas, !s.tc_both, INFINITY, s.tc_compare_until, "ed_other_rule", nullptr), s, false);
+    });
+    resumed = swept.resumed;
+    std::vector<RunOutcome> runs;
+    for (const auto& j : swept.points) runs.push_back(from_json_fields<RunOutcome>(j));
+    return runs;
+}
+
 Result run(const RunContext& ctx) {
     const auto s = read_spec<ClusterSpec>(ctx.params);
-    // The main run (pair rule tc_both) to cn_end and, beside it, the other pair rule up to
-    // tc_compare_until, both from one equilibrated state (rebuilt deterministically on resume).
-    const EquilibratedGas gas = initial_gas(s, ctx.seed);
-    const bool compare = s.tc_compare_until > 0;
-    RunOutcome main_run, other_run;
-    Progress progress("cluster-growth", long(std::ceil(std::log2(s.t_max / s.t_base))) + 4, ctx.quiet);
-    parallel_sweep(compare ? 2 : 1, ctx.threads, nullptr, [&](long k) {
-        if (k == 0)
-            main_run = run_tced(ctx, s, gas, s.tc_both, s.cn_end, s.t_max, "ed", &progress);
-        else
-            other_run = run_tced(ctx, s, gas, !s.tc_both, INFINITY, s.tc_compare_until, "ed_other_rule", nullptr);
-    });
+    long resumed = 0;
+    std::vector<RunOutcome> runs = tced_runs(ctx, s, resumed);
+    const RunOutcome& main_run = runs.front();
+    const RunOutcome* other_run = runs.size() > 1 ? &runs[1] : nullptr;
     std::vector<Instant> instants;
-    for (InstantRecord& rec : main_run.st.instants) instants.push_back(make_instant(std::move(rec), s));
+    for (InstantRecord& rec : runs.front().st.instants) instants.push_back(make_instant(std::move(rec), s));
 
     Result res;
+    res.scalar("resumed_points", double(resumed), "1", "sweep points loaded from a checkpoint");
     const KineticTheory kin = kinetic_theory(s);
-    report_run(res, s, kin, gas.collision_rate, main_run, compare ? &other_run : nullptr);
-    fig10(res, s, kin.t0, main_run.st, compare ? &other_run.st : nullptr);
+    report_run(res, s, kin, main_run, other_run);
+    fig10(res, s, kin.t0, main_run.st, other_run ? &other_run->st : nullptr);
     fig12_instants_table(res, instants);
     report_poisson_falling(res, instants, s.poisson_until_cn);
     fig12_panels(res, instants, s.paper_cn);

@@ -33,7 +33,7 @@ const std::vector<Experiment>& experiment_registry() {
         experiments::cooling(),
         distributed(experiments::pipe_arching()),
         distributed(experiments::parameter_study()),
-        experiments::cluster_growth(),
+        distributed(experiments::cluster_growth()),
     };
     return table;
 }
