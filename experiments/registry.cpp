@@ -30,7 +30,7 @@ const std::vector<Experiment>& experiment_registry() {
         experiments::emergency_brake(),
         distributed(experiments::bistable_pipe()),
         distributed(experiments::impact_parameter()),
-        experiments::cooling(),
+        distributed(experiments::cooling()),
         distributed(experiments::pipe_arching()),
         distributed(experiments::parameter_study()),
         distributed(experiments::cluster_growth()),
