@@ -101,7 +101,7 @@ struct CommonFlags {
             app->add_option("--set", sets, "override a parameter: --set name=value (repeatable)")
                 ->type_name("NAME=VALUE");
     }
-    // --points: experiments with a distributed sweep (bistable-pipe, parameter-study, pipe-arching).
+    // --points: experiments with a distributed sweep (marked distributed(...) in experiments/registry.cpp).
     void add_points_to(CLI::App* app) {
         app->add_option("--points", points,
                         "compute only shard I of N of the sweep points into OUT/.<experiment>.checkpoint/, then "
