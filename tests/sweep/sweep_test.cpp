@@ -105,6 +105,11 @@ TEST(SweepMpi, BistablePipeThreeRanksEqualsSingleRun) { mpi_equals_single(kBista
 TEST(SweepMpi, BistablePipeTwoRanksTwoThreadsEqualsSingleRun) { mpi_equals_single(kBistable, "bistable-pipe", 2, 2); }
 TEST(SweepMpi, ParameterStudyThreeRanksEqualsSingleRun) { mpi_equals_single(kParamStudy, "parameter-study", 3, 1); }
 TEST(SweepMpi, ImpactParameterThreeRanksEqualsSingleRun) { mpi_equals_single(kImpact, "impact-parameter", 3, 1); }
+// The long single runs as sweep points: ED and DSMC (cooling), the two pair rules (cluster-growth).
+TEST(SweepMpi, CoolingTwoRanksEqualsSingleRun) { mpi_equals_single("cooling --scale quick ", "cooling", 2, 1); }
+TEST(SweepMpi, ClusterGrowthTwoRanksEqualsSingleRun) {
+    mpi_equals_single("cluster-growth --scale quick ", "cluster-growth", 2, 1);
+}
 
 // A job killed after 3 of its 8 points (every rank ends, as when a node is lost) leaves those 3 in
 // the checkpoint; the same command again computes only the other 5 and equals an uninterrupted run.
