@@ -57,6 +57,16 @@ void wait_for(MPI_Request& request) {
     }
 }
 
+// The end of one sweep on every rank. Without it a rank that rank 0 has released runs ahead into
+// the next experiment's sweep (`all`) and its first request would reach rank 0 while rank 0 still
+// waits for this sweep's last results: rank 0 would count it as this sweep's and stop early.
+// Non-blocking, so that waiting ranks do not poll a core away from those still computing.
+void end_of_sweep() {
+    MPI_Request request;
+    MPI_Ibarrier(MPI_COMM_WORLD, &request);
+    wait_for(request);
+}
+
 // Rank > 0: each thread asks rank 0 for a point, computes it, sends the result with the next
 // request ("<index> <CPU seconds> <json>"), until rank 0 answers -1.
 void serve_points(const RunContext& ctx, const std::function<nlohmann::json(long)>& compute) {
@@ -97,6 +107,7 @@ SweepResult distributed_sweep(const RunContext& ctx, const std::string& label, c
 #ifdef GRANREPRO_HAVE_MPI
     if (spread && mpi::rank() != 0) {
         serve_points(ctx, compute);
+        end_of_sweep();
         throw SweepServed{};
     }
 #endif
@@ -210,6 +221,7 @@ SweepResult distributed_sweep(const RunContext& ctx, const std::string& label, c
             wait_for(request);
             if (give < 0) ++stopped;
         }
+        end_of_sweep();
     } else
 #endif
     {
