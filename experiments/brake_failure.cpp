@@ -5,12 +5,14 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <numeric>
 #include <string>
 
 #include "analysis/curve_analysis.hpp"
 #include "scenarios/impact_shot.hpp"
 #include "harness/experiment.hpp"
-#include "harness/parallel_sweep.hpp"
+#include "harness/distributed_sweep.hpp"
+#include "io/json_fields.hpp"
 #include "data/spec.hpp"
 #include "models/hertz_kuwabara_kono.hpp"
 #include "models/linear_spring_dashpot.hpp"
@@ -80,6 +82,9 @@ struct Sweep {
 struct Curve {
     std::vector<double> dvy, dvx, dvy_shear;
     std::vector<int> complete;
+    template <class V> void fields(V&& v) {
+        v("dvy", dvy), v("dvx", dvx), v("dvy_shear", dvy_shear), v("complete", complete);
+    }
 };
 
 // Curves: Fig. 3, dt / fine_factor, HKK, elastic limit (gamma_N = 0) and paper parameters both on
@@ -110,17 +115,22 @@ ImpactOutcome shoot_point(const BrakeFailureSpec& s, const Sweep& w, std::size_t
 }
 
 std::vector<Curve> shoot_curves(const BrakeFailureSpec& s, const Sweep& w, const RunContext& ctx) {
-    const std::size_t n = w.vy.size(), n_curves = kFirstBeta + s.betas.size();
-    std::vector<Curve> curves(n_curves, Curve{std::vector<double>(n), std::vector<double>(n), std::vector<double>(n), std::vector<int>(n)});
-    Progress progress("brake-failure", long(n * n_curves), ctx.quiet);
-    parallel_sweep(long(n * n_curves), ctx.threads, &progress, [&](long task) {
-        const std::size_t c = std::size_t(task) / n, i = std::size_t(task) % n;
-        const ImpactOutcome o = shoot_point(s, w, c, i);
-        curves[c].dvy[i] = o.dvy;
-        curves[c].dvx[i] = o.dvx;
-        curves[c].dvy_shear[i] = o.dvy_shear;
-        curves[c].complete[i] = o.completed;
+    // One sweep point per curve (milliseconds each), in curve order.
+    std::vector<long> order(kFirstBeta + s.betas.size());
+    std::iota(order.begin(), order.end(), 0L);
+    const SweepResult swept = distributed_sweep(ctx, "brake-failure", order, [&](long c) {
+        Curve curve;
+        for (std::size_t i = 0; i < w.vy.size(); ++i) {
+            const ImpactOutcome o = shoot_point(s, w, std::size_t(c), i);
+            curve.dvy.push_back(o.dvy);
+            curve.dvx.push_back(o.dvx);
+            curve.dvy_shear.push_back(o.dvy_shear);
+            curve.complete.push_back(o.completed);
+        }
+        return to_json_fields(curve);
     });
+    std::vector<Curve> curves;
+    for (const auto& j : swept.points) curves.push_back(from_json_fields<Curve>(j));
     return curves;
 }
 

@@ -5,13 +5,15 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <numeric>
 #include <string>
 #include <utility>
 
 #include "analysis/curve_analysis.hpp"
 #include "scenarios/impact_shot.hpp"
 #include "harness/experiment.hpp"
-#include "harness/parallel_sweep.hpp"
+#include "harness/distributed_sweep.hpp"
+#include "io/json_fields.hpp"
 #include "data/spec.hpp"
 #include "models/linear_spring_dashpot.hpp"
 
@@ -73,6 +75,16 @@ struct Point {
     double dvy = 0, dvy_sem = 0, contacts = 0, multi_fraction = 0;
     double vx_return = 0; // mean v_x^f / v_x^i: how much of the speed towards the wall comes back
     int incomplete = 0;
+    template <class V> void fields(V&& v) {
+        v("dvy", dvy), v("dvy_sem", dvy_sem), v("contacts", contacts), v("multi_fraction", multi_fraction);
+        v("vx_return", vx_return), v("incomplete", incomplete);
+    }
+};
+
+// One series' points over the v_y^i grid: a sweep point.
+struct SeriesPoints {
+    std::vector<Point> points;
+    template <class V> void fields(V&& v) { v("points", points); }
 };
 
 // Series: one per v_x^i at the experiment's k_N (the figures), one per extra k_N at vx_list[0],
@@ -191,12 +203,16 @@ Result run(const RunContext& ctx) {
     const auto vy = log_space(s.vy_min, s.vy_max, s.n_vy);
     const std::size_t n = vy.size();
     const std::vector<Series> series = all_series(s, law);
-    std::vector<std::vector<Point>> pts(series.size(), std::vector<Point>(n));
-    Progress progress("emergency-brake", long(series.size() * n), ctx.quiet);
-    parallel_sweep(long(series.size() * n), ctx.threads, &progress, [&](long task) {
-        const std::size_t si = std::size_t(task) / n, i = std::size_t(task) % n;
-        pts[si][i] = mean_impact(s, series[si], vy[i]);
+    // One sweep point per series (milliseconds each), in series order.
+    std::vector<long> order(series.size());
+    std::iota(order.begin(), order.end(), 0L);
+    const SweepResult swept = distributed_sweep(ctx, "emergency-brake", order, [&](long si) {
+        SeriesPoints out;
+        for (std::size_t i = 0; i < n; ++i) out.points.push_back(mean_impact(s, series[std::size_t(si)], vy[i]));
+        return to_json_fields(out);
     });
+    std::vector<std::vector<Point>> pts;
+    for (const auto& j : swept.points) pts.push_back(from_json_fields<SeriesPoints>(j).points);
 
     Result r;
     int incomplete = 0;

@@ -16,7 +16,7 @@ min_unit=163
 min_integration=77
 min_validation=25
 min_repro=29
-min_sweep=11
+min_sweep=12
 
 count() { (cd "$1" && ctest -N -L "^$2\$" | sed -n 's/^Total Tests: //p'); }
 require_tests() {

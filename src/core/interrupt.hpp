@@ -2,7 +2,7 @@
 // thread exists: both signals are then blocked in every thread and a watcher thread waits for
 // them. The first signal only sets a flag; the run stops at its next pause point:
 //   - a long single run (RunCheckpoint) saves a final checkpoint there and throws Interrupted;
-//   - a sweep (parallel_sweep) starts no further points (finished points are already saved);
+//   - a sweep (distributed_sweep) hands out no further points (finished points are already saved);
 //   - a run whose computation is already over still writes and commits its results.
 // The staging folder is removed as the Interrupted exception unwinds, and main() prints one line
 // and exits 128 + signal (130 for SIGINT, 143 for SIGTERM). If no pause point comes within the

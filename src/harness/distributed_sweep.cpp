@@ -10,6 +10,7 @@
 #include <time.h>
 
 #include "core/input_error.hpp"
+#include "core/interrupt.hpp"
 #include "harness/mpi_world.hpp"
 #include "harness/progress.hpp"
 #include "harness/run_log.hpp"
@@ -123,6 +124,9 @@ SweepResult distributed_sweep(const RunContext& ctx, const std::string& label, c
             have[std::size_t(i)] = 1;
             ++out.resumed; // not computed again
         }
+    if (out.resumed > 0)
+        run_log().line("sweep " + label + ": " + std::to_string(out.resumed) + " of " + std::to_string(n) +
+                       " points read from the checkpoint");
 
     const SweepPlan& plan = ctx.sweep;
     std::vector<long> todo; // in cost order
@@ -154,9 +158,11 @@ SweepResult distributed_sweep(const RunContext& ctx, const std::string& label, c
     std::size_t next = 0;
     long computed = 0;
     std::exception_ptr error;
+    // After SIGINT/SIGTERM no further point is handed out; the points under way finish and are
+    // saved, so the rerun computes only the rest.
     auto dispense = [&]() -> long {
         std::lock_guard<std::mutex> lock(mutex);
-        return next < todo.size() ? todo[next++] : -1;
+        return next < todo.size() && !interrupt_requested() ? todo[next++] : -1;
     };
     auto store = [&](long i, nlohmann::json value, double cost, int rank) {
         std::lock_guard<std::mutex> lock(mutex); // also makes the interruption hook exact
@@ -166,7 +172,7 @@ SweepResult distributed_sweep(const RunContext& ctx, const std::string& label, c
         char text[160];
         std::snprintf(text, sizeof text, "sweep %s: point %ld cost %.6g CPU s (rank %d)", label.c_str(), i, cost, rank);
         run_log().line(text);
-        progress.tick();
+        progress.done(i);
         if (++computed == stop_after) {
             std::fprintf(stderr, "granrepro: %s: interrupted after point %ld (GRANREPRO_INTERRUPT_AFTER_POINTS)\n",
                          label.c_str(), computed);
@@ -177,6 +183,7 @@ SweepResult distributed_sweep(const RunContext& ctx, const std::string& label, c
         long i = -1;
         try {
             while ((i = dispense()) >= 0) {
+                const ProgressSlot slot(&progress, i); // the point's engine time shows in the progress line
                 auto [value, cost] = timed(compute, i);
                 store(i, std::move(value), cost, mpi::rank());
             }
@@ -229,6 +236,9 @@ SweepResult distributed_sweep(const RunContext& ctx, const std::string& label, c
     }
     for (auto& th : pool) th.join();
     if (error) std::rethrow_exception(error);
+    if (computed < long(todo.size()))
+        throw_if_interrupted("; " + std::to_string(long(todo.size()) - computed) + " of " + std::to_string(n) +
+                             " sweep points left for the rerun");
 
     if (plan.mode == SweepPlan::Mode::Shard) {
         long present = 0;

@@ -55,7 +55,7 @@ private:
 void report_engine_time(double t, double t_end);
 
 // Sets, for this thread, the Progress and sweep slot that report_engine_time() reports to, and
-// restores the previous ones when it goes out of scope (parallel_sweep uses it per point).
+// restores the previous ones when it goes out of scope (distributed_sweep uses it per point).
 class ProgressSlot {
 public:
     ProgressSlot(Progress* p, long slot);

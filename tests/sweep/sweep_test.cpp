@@ -148,6 +148,37 @@ TEST(SweepMpi, KilledJobResumesOnlyMissingPoints) {
 }
 #endif
 
+// SIGTERM once the first point is saved (one thread): no further point is handed out, the run
+// exits 143 naming the points left, and the same command again computes only those and equals an
+// uninterrupted run. (Before, the sweep went on computing until the watcher's grace ran out.)
+TEST(SweepShards, SigtermStopsHandingOutPointsAndTheRerunResumes) {
+    const fs::path a = fresh("term-single"), b = fresh("term-sweep");
+    const fs::path err = b.string() + "-err";
+    const fs::path ra = single(kBistable, a, "bistable-pipe");
+    const std::string args = kBistable + "--quiet --threads 1 --out " + b.string();
+    const std::string wait_then_term = std::string(GRANREPRO_BINARY) + " " + args + " 2> " + err.string() +
+                                       " & p=$!; for i in $(seq 1200); do ls " + b.string() +
+                                       "/.bistable-pipe.checkpoint/sweep-*/*.json > /dev/null 2>&1 && break; "
+                                       "sleep 0.05; done; kill -TERM $p; wait $p";
+    EXPECT_EQ(shell("sh -c '" + wait_then_term + "'"), 143);
+    std::ifstream in(err);
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    EXPECT_NE(text.find("interrupted by SIGTERM; "), std::string::npos) << text;
+    EXPECT_NE(text.find("sweep points left for the rerun"), std::string::npos) << text;
+    EXPECT_FALSE(fs::exists(b / "bistable-pipe"));
+    long saved = 0;
+    for (const auto& d : fs::directory_iterator(b / ".bistable-pipe.checkpoint"))
+        for (const auto& f : fs::directory_iterator(d.path())) saved += f.path().extension() == ".json";
+    EXPECT_GE(saved, 1);
+    EXPECT_LT(saved, 8);
+    EXPECT_LE(run(args).code, 1);
+    EXPECT_EQ(resumed(b / "bistable-pipe"), saved);
+    expect_identical(ra, b / "bistable-pipe");
+    fs::remove_all(a);
+    fs::remove_all(b);
+    fs::remove(err);
+}
+
 // --points 1/2 and 2/2 into one --out, then gather: the single run's result. Gather before the
 // second shard refuses (exit 2) naming the missing points.
 TEST(SweepShards, ShardsPlusGatherEqualSingleRun) {
