@@ -459,6 +459,7 @@ void report_branch_k(Result& r, const std::vector<double>& es, const std::string
                      bool fast_branch) {
     double contacts = 0, ratio = 0, ratio_in = 0, reach = 0;
     int nc = 0, nr = 0, nr_in = 0, nreach = 0;
+    std::vector<double> v_ln_e; // fast branch: v |ln e_N| per state
     for (const auto& col : c.col)
         for (std::size_t ei = 0; ei < es.size(); ++ei) {
             const double v = col[kV][ei];
@@ -467,21 +468,18 @@ void report_branch_k(Result& r, const std::vector<double>& es, const std::string
             if (std::isfinite(col[kVConstruction][ei])) { ratio += std::log(col[kVConstruction][ei] / v); ++nr; }
             if (std::isfinite(col[kVConstructionVxin][ei])) { ratio_in += std::log(col[kVConstructionVxin][ei] / v); ++nr_in; }
             if (std::isfinite(col[kReach][ei])) { reach += std::log(col[kReach][ei]); ++nreach; }
+            if (fast_branch) v_ln_e.push_back(v * std::abs(std::log(es[ei])));
         }
     const std::string name = fast_branch ? "fast" : "slow";
     if (fast_branch) {
         // The fast branch's speed against 1/|ln e_N| ∝ 1/gamma_N: how much of its braking is the
         // dashpot's speed-independent friction impulse (brake-failure's high_v_plateau).
-        std::vector<double> a;
-        for (const auto& col : c.col)
-            for (std::size_t ei = 0; ei < es.size(); ++ei)
-                if (col[kV][ei] > v_crit) a.push_back(col[kV][ei] * std::abs(std::log(es[ei])));
         double mean = 0, sd = 0;
-        for (double x : a) mean += x / double(a.size());
-        for (double x : a) sd += (x - mean) * (x - mean) / double(std::max<std::size_t>(1, a.size() - 1));
-        r.scalar("fast_branch_v_ln_eN_" + kt, a.empty() ? NAN : mean, "m/s",
+        for (double x : v_ln_e) mean += x / double(v_ln_e.size());
+        for (double x : v_ln_e) sd += (x - mean) * (x - mean) / double(std::max<std::size_t>(1, v_ln_e.size() - 1));
+        r.scalar("fast_branch_v_ln_eN_" + kt, v_ln_e.empty() ? NAN : mean, "m/s",
                  "mean of v |ln e_N| over the fast branch's states (constant if v ∝ 1/gamma_N)");
-        r.scalar("fast_branch_v_ln_eN_cv_" + kt, a.size() > 1 ? std::sqrt(sd) / mean : NAN, "1",
+        r.scalar("fast_branch_v_ln_eN_cv_" + kt, v_ln_e.size() > 1 ? std::sqrt(sd) / mean : NAN, "1",
                  "its coefficient of variation over the states");
     }
     r.scalar(name + "_branch_states_" + kt, nc, "1", "steady states on the " + name + " branch (either start)");

@@ -234,27 +234,16 @@ void lattice_state(SeedRun& out, const std::vector<Vec2>& lat, const std::vector
             if (norm(lat[j] - lat[i]) > 1.1 * s) continue;
             if (norm(now[j] - now[i]) > 1.2 * s) kept[i] = kept[j] = 0;
         }
-    // Rows: equal initial heights.
-    std::vector<std::pair<double, std::vector<std::size_t>>> rows;
-    for (std::size_t i = 0; i < n; ++i) {
-        if (rows.empty() || std::abs(lat[i].y - rows.back().first) > 0.1 * s) rows.push_back({lat[i].y, {}});
-        rows.back().second.push_back(i);
-    }
-    std::size_t r = rows.size();
-    while (r > 0) {
-        const auto& row = rows[r - 1].second;
-        const double lost = double(std::count_if(row.begin(), row.end(), [&](std::size_t i) { return !kept[i]; }));
-        if (lost < 0.5 * double(row.size())) break;
-        --r;
-    }
-    out.fluid_layers = double(rows.size() - r);
-    double broken = 0, total = 0;
-    for (std::size_t k = 0; k < r; ++k)
-        for (std::size_t i : rows[k].second) {
-            total += 1;
-            broken += kept[i] ? 0 : 1;
-        }
-    out.lattice_broken_below = total > 0 ? broken / total : NAN;
+    // Rows (equal initial heights) hold consecutive disks: row k is [start[k], start[k + 1]).
+    std::vector<std::size_t> start;
+    for (std::size_t i = 0; i < n; ++i)
+        if (start.empty() || std::abs(lat[i].y - lat[start.back()].y) > 0.1 * s) start.push_back(i);
+    start.push_back(n);
+    auto lost = [&](std::size_t a, std::size_t b) { return std::count(kept.begin() + long(a), kept.begin() + long(b), 0); };
+    std::size_t r = start.size() - 1; // rows below the fluidized ones
+    while (r > 0 && 2 * lost(start[r - 1], start[r]) >= long(start[r] - start[r - 1])) --r;
+    out.fluid_layers = double(start.size() - 1 - r);
+    out.lattice_broken_below = start[r] > 0 ? double(lost(0, start[r])) / double(start[r]) : NAN;
 }
 
 // The column at t = -t_r: the lattice on the floor, velocities uniform in [-v0, v0] from
