@@ -22,7 +22,6 @@
 // Momentum balance of the falling column (exact for hard disks: pair impulses cancel):
 //   P_y(t) - P_y(0) = -M g t + J_y,  J_y = sum of the side walls' impulses (friction) since t = 0.
 #include <algorithm>
-#include <array>
 #include <chrono>
 #include <cmath>
 #include <functional>
@@ -137,8 +136,33 @@ Pipe::Pipe(const PipeArchingSpec& spec) : PipeArchingSpec(spec) {
           .min_above = std::size_t(crack_min_above), .max_opening = 3 * d};
 }
 
-double num(const nlohmann::json& j) { return j.is_null() ? NAN : j.get<double>(); }
-nlohmann::json jnum(double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr); }
+std::string tlabel(double t) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "t%.3f", t);
+    return buf;
+}
+
+// Eq. (21) (a Fig. 14(a) time) or Eq. (22) (a (b) time) fitted at one time alone (NaN: no fit).
+struct TimeFit {
+    double t = NAN, value = NAN, error = NAN; // [s], [1/s], [1/s]
+    template <class V> void fields(V&& v) { v("t", t); v("value", value); v("error", error); }
+};
+
+// One of run 0's tables (relaxation, Figs. 13 and 14), built by the run and carried through the
+// sweep's JSON into the result as it is.
+struct FigureTable {
+    std::string name, description;
+    std::vector<std::string> columns = {}, units = {};
+    std::vector<std::vector<double>> values = {};
+    void add(const char* column, const char* unit, std::vector<double> v) {
+        columns.push_back(column);
+        units.push_back(unit);
+        values.push_back(std::move(v));
+    }
+    template <class V> void fields(V&& v) {
+        v("name", name); v("description", description); v("columns", columns); v("units", units); v("values", values);
+    }
+};
 
 // One run (one seed). Times in s, heights in d above the removed floor unless named otherwise.
 // Its JSON (the sweep's checkpoint format) names every field as below; NaN is null.
@@ -161,8 +185,8 @@ struct SeedRun {
     double mean_rate_early = NAN;
     double momentum_residual = NAN, friction_share = NAN, wall_load_peak = NAN;
     double wall_seconds = NAN, collisions = NAN, elastic_share = NAN;
-    nlohmann::json per_time;  // every run: Eq. (21)/(22) fits at each Fig. 14 time
-    nlohmann::json figure;    // run 0 only: snapshots, histograms, timeline, relaxation
+    std::vector<TimeFit> per_time;    // every run: at each Fig. 14 time
+    std::vector<FigureTable> figure;  // run 0 only
 
     // One field list for both directions (io/json_fields.hpp).
     template <class V> void fields(V&& v) {
@@ -294,7 +318,7 @@ struct Frame {
     std::vector<int> hot_wall;         // those at a side wall
     ArchFound arch;
     Crack crack;
-    double vy = 0, wall_rate = 0; // mean v_y [m/s]; side-wall collisions per disk and unit time [1/s]
+    double t = 0, vy = 0, wall_rate = 0; // [s]; mean v_y [m/s]; side-wall collisions per disk and unit time [1/s]
     double wall_load = 0;         // side-wall impulse over M g frame_dt
 };
 
@@ -309,9 +333,9 @@ struct Fall {
     std::vector<double> dist_t = {};
     double jy = 0; // side-wall impulse on the column since t = 0 [kg m/s]
     const Frame& at(long f) const { return frames[std::size_t(f)]; }
-    std::vector<double> per_frame(double Frame::*x) const { // frames 1 .. n_frames
+    template <class F> std::vector<double> per_frame(F x) const { // frames 1 .. n_frames
         std::vector<double> v;
-        for (std::size_t f = 1; f < frames.size(); ++f) v.push_back(frames[f].*x);
+        for (std::size_t f = 1; f < frames.size(); ++f) v.push_back(std::invoke(x, frames[f]));
         return v;
     }
 };
@@ -402,6 +426,7 @@ Fall fall(EdEngine& eng, const Pipe& s) {
     for (long f = 1; f <= s.n_frames; ++f) {
         const double t = s.t(f);
         Frame& fr = fl.frames[std::size_t(f)];
+        fr.t = t;
         std::fill(wall_jy.begin(), wall_jy.end(), 0.0);
         eng.run_until(t, obs);
         report_engine_time(t, s.t_end);
@@ -571,65 +596,85 @@ std::vector<RateHistogram> fit_fig14(SeedRun& out, const PipeArchingSpec& s, con
         if (fp) { out.B = fp->value; out.B_err = fp->error; out.B_chi2 = fp->chi2_reduced; out.dev_pow_late = fp->deviance; }
         if (fe) out.dev_exp_late = fe->deviance;
     }
-    out.per_time = nlohmann::json::array();
     std::vector<RateHistogram> hs;
     for (std::size_t k = 0; k < fl.dist_rates.size(); ++k) {
         const bool early = k < n_before;
         hs.push_back(early ? hist_lin(fl.dist_rates[k]) : hist_log(fl.dist_rates[k]));
         const auto f = try_fit(hs.back(), early ? Model::Exponential : Model::PowerLaw, 0.5 * rmin, early ? hi_lin : 1.0e6);
-        out.per_time.push_back({{"t", fl.dist_t[k]}, {"value", f ? jnum(f->value) : nullptr}, {"error", f ? jnum(f->error) : nullptr}});
+        out.per_time.push_back({fl.dist_t[k], f ? f->value : NAN, f ? f->error : NAN});
     }
     return hs;
 }
 
-// A Fig. 13 snapshot (run 0) with its marks: the initiating disk, the frame's arch, the crack.
-nlohmann::json snapshot_json(const Pipe& s, const Fall& fl, long f, int i_prec) {
-    const ArchFound& a = fl.at(f).arch;
-    const Crack& cr = fl.at(f).crack;
-    const std::vector<Vec2>& pos = fl.at(f).pos;
+// A Fig. 13 snapshot (run 0): the disks, the frame's arch and the crack.
+void add_snapshot(std::vector<FigureTable>& F, const Pipe& s, const Frame& fr) {
     const double d = s.d;
     std::vector<double> x, y, in_arch, side, cx, cy;
-    for (std::size_t i = 0; i < pos.size(); ++i) {
-        x.push_back(pos[i].x / d);
-        y.push_back((pos[i].y - s.y_floor) / d);
-        in_arch.push_back(std::find(a.members.begin(), a.members.end(), int(i)) != a.members.end() ? 1 : 0);
-        side.push_back(cr.side.empty() ? 0 : cr.side[i]);
+    for (std::size_t i = 0; i < fr.pos.size(); ++i) {
+        x.push_back(fr.pos[i].x / d);
+        y.push_back((fr.pos[i].y - s.y_floor) / d);
+        in_arch.push_back(std::find(fr.arch.members.begin(), fr.arch.members.end(), int(i)) != fr.arch.members.end() ? 1 : 0);
+        side.push_back(fr.crack.side.empty() ? 0 : fr.crack.side[i]);
     }
-    for (std::size_t j = 0; j < cr.course_x.size(); ++j) {
-        cx.push_back(cr.course_x[j] / d);
-        cy.push_back((cr.course_y[j] - s.y_floor) / d);
+    for (std::size_t j = 0; j < fr.crack.course_x.size(); ++j) {
+        cx.push_back(fr.crack.course_x[j] / d);
+        cy.push_back((fr.crack.course_y[j] - s.y_floor) / d);
     }
-    const Vec2 rp = i_prec >= 0 ? pos[std::size_t(i_prec)] : Vec2{};
-    return {{"t", s.t(f)}, {"x", x}, {"y", y}, {"Nc", fl.at(f).rate}, {"arch", in_arch}, {"side", side},
-            {"arch_y", a.found ? jnum(a.y) : nullptr}, {"course_x", cx}, {"course_y", cy},
-            {"opening", cr.course_x.empty() ? nullptr : jnum(cr.opening / d)},
-            {"prec_x", i_prec >= 0 ? jnum(rp.x / d) : nullptr},
-            {"prec_y", i_prec >= 0 ? jnum((rp.y - s.y_floor) / d) : nullptr}};
+    FigureTable& t = F.emplace_back(FigureTable{"snapshot_" + tlabel(fr.t),
+        "disk centres (x, y above the removed floor), N_c over the last frame_dt, member of the frame's arch, side of the crack (-1 below, +1 above, 0 loose), run 0"});
+    t.add("x", "d", x);
+    t.add("y", "d", y);
+    t.add("Nc", "1/s", fr.rate);
+    t.add("arch", "1", in_arch);
+    t.add("crack_side", "1", side);
+    FigureTable& c = F.emplace_back(FigureTable{"crack_" + tlabel(fr.t), "course of the widest wall-to-wall crack (mid-height per slice of one diameter), run 0"});
+    c.add("x", "d", cx);
+    c.add("y", "d", cy);
 }
 
-// Run 0's figure data: relaxation, Fig. 13 snapshots, timeline per frame, Fig. 14 histograms.
-nlohmann::json figure_json(const Pipe& s, const Fall& fl, const Relaxation& rel,
-                           const std::vector<RateHistogram>& hs, int i_prec) {
-    nlohmann::json F = {{"relax_t", rel.t}, {"relax_vbar", rel.vbar}, {"snaps", nlohmann::json::array()},
-                        {"hists", nlohmann::json::array()}};
-    std::vector<double> t, hot, hot_wall, mean;
-    std::vector<nlohmann::json> arch_y, opening;
-    for (long f = 1; f <= s.n_frames; ++f) {
-        const Frame& fr = fl.at(f);
-        if (s.at(s.snapshot_times, f)) F["snaps"].push_back(snapshot_json(s, fl, f, i_prec));
-        t.push_back(s.t(f));
-        hot.push_back(double(fr.hot.size()));
-        hot_wall.push_back(double(fr.hot_wall.size()));
-        mean.push_back(std::accumulate(fr.rate.begin(), fr.rate.end(), 0.0) / double(fr.rate.size()));
-        arch_y.push_back(fr.arch.found ? jnum(fr.arch.y) : nullptr);
-        opening.push_back(fr.crack.course_x.empty() ? nullptr : jnum(fr.crack.opening / s.d));
+// Run 0's tables: the relaxation, the Fig. 13 snapshots and their marks (the initiating disk, the
+// frame's arch, the crack), the timeline per frame, the Fig. 14 histograms.
+std::vector<FigureTable> figure_tables(const Pipe& s, const Fall& fl, const Relaxation& rel,
+                                       const std::vector<RateHistogram>& hs, int i_prec) {
+    std::vector<FigureTable> F{{"relaxation", "v̄ = sqrt(<v^2>) during the elastic relaxation, run 0"}};
+    F[0].add("t", "s", rel.t);
+    F[0].add("vbar", "m/s", rel.vbar);
+    std::vector<const Frame*> snaps;
+    for (long f = 1; f <= s.n_frames; ++f)
+        if (s.at(s.snapshot_times, f)) add_snapshot(F, s, *snaps.emplace_back(&fl.at(f)));
+    auto per_snap = [&](auto x) {
+        std::vector<double> v;
+        for (const Frame* fr : snaps) v.push_back(x(*fr));
+        return v;
+    };
+    auto arch_y = [](const Frame& fr) { return fr.arch.found ? fr.arch.y : NAN; };
+    auto opening = [&](const Frame& fr) { return fr.crack.course_x.empty() ? NAN : fr.crack.opening / s.d; };
+    auto initiator = [&](const Frame& fr) { return i_prec >= 0 ? fr.pos[std::size_t(i_prec)] : Vec2{NAN, NAN}; };
+    FigureTable& mk = F.emplace_back(FigureTable{"marks", "run 0 per Fig. 13 snapshot: initiating disk (x, y), arch height, crack opening"});
+    mk.add("t", "s", per_snap([](const Frame& fr) { return fr.t; }));
+    mk.add("initiator_x", "d", per_snap([&](const Frame& fr) { return initiator(fr).x / s.d; }));
+    mk.add("initiator_y", "d", per_snap([&](const Frame& fr) { return (initiator(fr).y - s.y_floor) / s.d; }));
+    mk.add("arch_y", "d", per_snap(arch_y));
+    mk.add("crack_opening", "d", per_snap(opening));
+    mk.add("crack_visible", "1", per_snap([&](const Frame& fr) { return opening(fr) >= s.crack_opening ? 1.0 : 0.0; }));
+    FigureTable& tl = F.emplace_back(FigureTable{"timeline", "run 0 per frame: hot disks, mean N_c, widest wall-to-wall crack, mean v_y, wall collisions, share of the weight carried by the walls, arch height"});
+    tl.add("t", "s", fl.per_frame(&Frame::t));
+    tl.add("hot", "1", fl.per_frame([](const Frame& fr) { return double(fr.hot.size()); }));
+    tl.add("hot_wall", "1", fl.per_frame([](const Frame& fr) { return double(fr.hot_wall.size()); }));
+    tl.add("mean", "1/s", fl.per_frame([](const Frame& fr) {
+        return std::accumulate(fr.rate.begin(), fr.rate.end(), 0.0) / double(fr.rate.size());
+    }));
+    tl.add("opening", "d", fl.per_frame(opening));
+    tl.add("vy", "m/s", fl.per_frame(&Frame::vy));
+    tl.add("wall_rate", "1/s", fl.per_frame(&Frame::wall_rate));
+    tl.add("wall_load", "1", fl.per_frame(&Frame::wall_load));
+    tl.add("arch_y", "d", fl.per_frame(arch_y));
+    for (std::size_t k = 0; k < hs.size(); ++k) {
+        FigureTable& h = F.emplace_back(FigureTable{"pnc_" + tlabel(fl.dist_t[k]), "P(N_c) over the last dist_dt, run 0"});
+        h.add("Nc", "1/s", hs[k].centres);
+        h.add("P", "s", hs[k].density);
+        h.add("err", "s", hs[k].error);
     }
-    F["tl"] = {{"t", t}, {"hot", hot}, {"hot_wall", hot_wall}, {"mean", mean}, {"opening", opening},
-               {"vy", fl.per_frame(&Frame::vy)}, {"wall_rate", fl.per_frame(&Frame::wall_rate)},
-               {"wall_load", fl.per_frame(&Frame::wall_load)}, {"arch_y", arch_y}};
-    for (std::size_t k = 0; k < hs.size(); ++k)
-        F["hists"].push_back({{"t", fl.dist_t[k]}, {"centres", hs[k].centres}, {"density", hs[k].density},
-                              {"error", hs[k].error}});
     return F;
 }
 
@@ -673,7 +718,7 @@ SeedRun run_seed(const Pipe& s, std::uint64_t seed, long index, bool figure) {
         out.wall_load_peak = std::max(out.wall_load_peak, std::accumulate(load.begin() + long(a), load.begin() + long(a + k), 0.0) / double(k));
     out.collisions = double(eng.total_collisions() - coll0);
     out.elastic_share = double(eng.elastic_collisions() - el0) / std::max(1.0, out.collisions);
-    if (figure) out.figure = figure_json(s, fl, rel, hs, i_prec);
+    if (figure) out.figure = figure_tables(s, fl, rel, hs, i_prec);
     out.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
     return out;
 }
@@ -727,18 +772,8 @@ template <class Pred> double share_finite(const std::vector<double>& v, Pred pre
     return n > 0 ? k / n : NAN;
 }
 
-std::string tlabel(double t) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "t%.3f", t);
-    return buf;
-}
-
-// The elastic relaxation before the fall (run 0's curve) and v̄ at t = 0 over seeds.
+// v̄ at t = 0 over seeds, after the elastic relaxation.
 void report_relaxation(Result& res, const std::vector<SeedRun>& runs) {
-    const nlohmann::json& F = runs.front().figure;
-    Table& t = res.table("relaxation", "v̄ = sqrt(<v^2>) during the elastic relaxation, run 0");
-    t.add("t", "s").values = F.at("relax_t").get<std::vector<double>>();
-    t.add("vbar", "m/s").values = F.at("relax_vbar").get<std::vector<double>>();
     const std::vector<double> v0s = per_seed(runs, &SeedRun::vbar0), vlate = per_seed(runs, &SeedRun::vbar_relax_late);
     res.scalar("vbar_t0", median_finite(v0s), "m/s", "v̄ = sqrt(<v^2>) at t = 0, median over seeds");
     res.scalar("vbar_t0_run0", runs.front().vbar0, "m/s", "v̄ at t = 0, run 0");
@@ -746,53 +781,18 @@ void report_relaxation(Result& res, const std::vector<SeedRun>& runs) {
                "v̄(0) over the mean v̄ of the last third of the relaxation, minus 1 (steadiness)");
 }
 
-// Fig. 13 (run 0): the snapshots with their marks (the initiating disk, the frame's arch, the
-// crack) and the timeline per frame.
-void report_fig13(Result& res, const PipeArchingSpec& s, const nlohmann::json& F) {
-    // The numbers of a JSON array (null: NaN), or of one key of each of its objects.
-    auto values = [](const nlohmann::json& a, const char* key = nullptr) {
-        std::vector<double> v;
-        for (const auto& x : a) v.push_back(num(key ? x.at(key) : x));
-        return v;
-    };
-    const nlohmann::json& snaps = F.at("snaps");
-    for (const auto& sn : snaps) {
-        const std::string lab = tlabel(sn.at("t").get<double>());
-        Table& t = res.table("snapshot_" + lab,
-                             "disk centres (x, y above the removed floor), N_c over the last frame_dt, member of the frame's arch, side of the crack (-1 below, +1 above, 0 loose), run 0");
-        for (auto [col, unit, key] : {std::array{"x", "d", "x"}, {"y", "d", "y"}, {"Nc", "1/s", "Nc"}, {"arch", "1", "arch"}, {"crack_side", "1", "side"}})
-            t.add(col, unit).values = values(sn.at(key));
-        Table& c = res.table("crack_" + lab, "course of the widest wall-to-wall crack (mid-height per slice of one diameter), run 0");
-        c.add("x", "d").values = values(sn.at("course_x"));
-        c.add("y", "d").values = values(sn.at("course_y"));
-    }
-    Table& mk = res.table("marks", "run 0 per Fig. 13 snapshot: initiating disk (x, y), arch height, crack opening");
-    mk.add("t", "s").values = values(snaps, "t");
-    for (auto [col, key] : {std::pair{"initiator_x", "prec_x"}, {"initiator_y", "prec_y"}, {"arch_y", "arch_y"}, {"crack_opening", "opening"}})
-        mk.add(col, "d").values = values(snaps, key);
-    std::vector<double> vis;
-    for (double o : values(snaps, "opening")) vis.push_back(o >= s.crack_opening ? 1 : 0);
-    mk.add("crack_visible", "1").values = vis;
-    Table& t = res.table("timeline", "run 0 per frame: hot disks, mean N_c, widest wall-to-wall crack, mean v_y, wall collisions, share of the weight carried by the walls, arch height");
-    for (auto [k, unit] : {std::pair{"t", "s"}, {"hot", "1"}, {"hot_wall", "1"}, {"mean", "1/s"}, {"opening", "d"},
-                           {"vy", "m/s"}, {"wall_rate", "1/s"}, {"wall_load", "1"}, {"arch_y", "d"}})
-        t.add(k, unit).values = values(F.at("tl").at(k));
-}
-
-// Fig. 14 per time: the fits at each time alone (run 0 with its error, median over seeds) and
-// run 0's histograms.
+// Fig. 14 per time: the fits at each time alone (run 0 with its error, median over seeds).
 void report_fig14_times(Result& res, const PipeArchingSpec& s, const std::vector<SeedRun>& runs) {
     const SeedRun& f0 = runs.front();
-    const nlohmann::json& hists = f0.figure.at("hists");
     const std::size_t n_before = s.dist_times_before.size();
     Table& pt = res.table("fits_per_time", "Eq. (21) A (Fig. 14(a) times) or Eq. (22) B (Fig. 14(b) times) fitted at each time alone: run 0 with its standard error, and the median over seeds");
     std::vector<double> tt, v0, e0, med;
-    for (std::size_t k = 0; k < hists.size(); ++k) {
-        const double t = hists[k].at("t").get<double>();
+    for (std::size_t k = 0; k < f0.per_time.size(); ++k) {
+        const double t = f0.per_time[k].t;
         tt.push_back(t);
-        v0.push_back(num(f0.per_time.at(k).at("value")));
-        e0.push_back(num(f0.per_time.at(k).at("error")));
-        med.push_back(median_finite(per_seed(runs, [&](const SeedRun& r) { return num(r.per_time.at(k).at("value")); })));
+        v0.push_back(f0.per_time[k].value);
+        e0.push_back(f0.per_time[k].error);
+        med.push_back(median_finite(per_seed(runs, [&](const SeedRun& r) { return r.per_time.at(k).value; })));
         const std::string what = k < n_before ? "A_" : "B_", eq = k < n_before ? "Eq. (21)" : "Eq. (22)";
         res.scalar(what + tlabel(t), v0.back(), "1/s", eq + " fit at this time alone, run 0");
         res.scalar(what + "err_" + tlabel(t), e0.back(), "1/s", "its standard error");
@@ -802,12 +802,6 @@ void report_fig14_times(Result& res, const PipeArchingSpec& s, const std::vector
     pt.add("run0", "1/s").values = v0;
     pt.add("run0_err", "1/s").values = e0;
     pt.add("median_seeds", "1/s").values = med;
-    for (const auto& h : hists) {
-        Table& tb = res.table("pnc_" + tlabel(h.at("t").get<double>()), "P(N_c) over the last dist_dt, run 0");
-        tb.add("Nc", "1/s").values = h.at("centres").get<std::vector<double>>();
-        tb.add("P", "s").values = h.at("density").get<std::vector<double>>();
-        tb.add("err", "s").values = h.at("error").get<std::vector<double>>();
-    }
 }
 
 // Fig. 14 pooled: Eqs. (21), (22) over each panel's four times, run 0 and over seeds (the
@@ -1014,8 +1008,11 @@ Result run(const RunContext& ctx) {
     res.scalar("n_seeds", double(s.n_seeds), "1", "independent runs");
     res.scalar("layers", std::ceil(double(s.n_particles) / (std::floor((s.L - s.d) / s.a + 1e-9) + 0.5)), "1",
                "rows of the initial lattice");
+    for (const FigureTable& f : runs.front().figure) {
+        Table& t = res.table(f.name, f.description);
+        for (std::size_t c = 0; c < f.columns.size(); ++c) t.add(f.columns[c], f.units[c]).values = f.values[c];
+    }
     report_relaxation(res, runs);
-    report_fig13(res, s, runs.front().figure);
     report_fig14_times(res, s, runs);
     report_fig14_fits(res, s, runs);
     report_seed_table(res, runs);
