@@ -30,6 +30,7 @@
 #include <string>
 
 #include "analysis/crack_detector.hpp"
+#include "analysis/disjoint_sets.hpp"
 #include "core/rng_stream.hpp"
 #include "data/spec.hpp"
 #include "engines/ed/ed_engine.hpp"
@@ -172,7 +173,7 @@ struct SeedRun {
     double t_hot_wall = NAN;                        // first hot disk at a wall (any)
     double t_arch = NAN, y_arch = NAN, y0_arch = NAN; // first arch: time, lab and initial height
     double arch_size = NAN, arch_pL = NAN, arch_pR = NAN;
-    double t_precursor = NAN, y_precursor = NAN, react_lag = NAN;
+    double t_precursor = NAN, react_lag = NAN;
     double arch_left_4ms = NAN, arch_above_later = NAN, arch_below_later = NAN;
     double plug_wall_load = NAN, arch_brake = NAN, opening_below = NAN;
     double wall_slowdown_arch = NAN, wall_slowdown_before = NAN;
@@ -193,7 +194,7 @@ struct SeedRun {
         v("vbar0", vbar0); v("vbar_relax_late", vbar_relax_late); v("fluid_layers", fluid_layers);
         v("lattice_broken_below", lattice_broken_below); v("t_hot_wall", t_hot_wall); v("t_arch", t_arch);
         v("y_arch", y_arch); v("y0_arch", y0_arch); v("arch_size", arch_size); v("arch_pL", arch_pL);
-        v("arch_pR", arch_pR); v("t_precursor", t_precursor); v("y_precursor", y_precursor);
+        v("arch_pR", arch_pR); v("t_precursor", t_precursor);
         v("react_lag", react_lag); v("arch_left_4ms", arch_left_4ms); v("arch_above_later", arch_above_later);
         v("arch_below_later", arch_below_later); v("plug_wall_load", plug_wall_load); v("arch_brake", arch_brake);
         v("opening_below", opening_below); v("wall_slowdown_arch", wall_slowdown_arch);
@@ -225,14 +226,6 @@ std::optional<CollisionRateFit> try_fit(const RateHistogram& h, CollisionRateFit
     }
     return std::nullopt;
 }
-
-// Disjoint-set forest for the hot bands.
-struct Dsu {
-    std::vector<int> up;
-    explicit Dsu(std::size_t n) : up(n) { std::iota(up.begin(), up.end(), 0); }
-    int find(int a) { while (up[a] != a) a = up[a] = up[up[a]]; return a; }
-    void join(int a, int b) { up[find(a)] = find(b); }
-};
 
 struct WallHit { // a side-wall collision
     double t, y;
@@ -351,7 +344,7 @@ ArchFound find_arch(const Pipe& s, const std::vector<double>& y0, const std::vec
     double ymin = INFINITY, ymax = -INFINITY;
     for (const Vec2& x : r) { ymin = std::min(ymin, x.y); ymax = std::max(ymax, x.y); }
     const double col_h = ymax - ymin + d;
-    Dsu dsu(hot.size());
+    DisjointSets dsu(hot.size());
     for (std::size_t a = 0; a < hot.size(); ++a)
         for (std::size_t b = a + 1; b < hot.size(); ++b)
             if (norm2(r[hot[a]] - r[hot[b]]) <= link2) dsu.join(int(a), int(b));
@@ -468,7 +461,6 @@ int first_arch(SeedRun& out, const Pipe& s, const Fall& fl, long fa) {
                 f_prec = k;
                 i_prec = i;
                 out.t_precursor = s.t(k);
-                out.y_precursor = fl.y0[std::size_t(i)];
                 break;
             }
     if (i_prec < 0) return i_prec;
@@ -856,27 +848,23 @@ void report_fig14_fits(Result& res, const PipeArchingSpec& s, const std::vector<
                "the same at the Fig. 14(b) times (> 1: power law fits better)");
 }
 
-// Per seed: first hot wall disk, first arch, its precursor, first crack and the rest.
 void report_seed_table(Result& res, const std::vector<SeedRun>& runs) {
     Table& st = res.table("seeds", "per seed: first hot wall disk, first arch (time, lab and initial height), its precursor, first crack (NaN: none before t_end)");
-    const std::vector<std::pair<const char*, const char*>> cols = {
-        {"seed_index", "1"}, {"t_hot_wall", "s"}, {"t_precursor", "s"}, {"t_arch", "s"}, {"y_arch", "d"},
-        {"y0_arch", "d"}, {"arch_size", "1"}, {"arch_foot_pressure_ratio", "1"}, {"react_lag", "s"},
-        {"arch_left_4ms", "1"}, {"plug_wall_load", "1"}, {"arch_brake", "m/s"}, {"opening_below", "d"},
-        {"wall_slowdown_arch", "m/s"}, {"opening_max_after", "d"}, {"t_crack", "s"}, {"y_crack", "d"},
-        {"y0_crack", "d"}, {"crack_opening", "d"}, {"friction_share", "1"}, {"A", "1/s"}, {"B", "1/s"},
-        {"wall_seconds", "s"}};
-    std::vector<std::vector<double>> col(cols.size());
-    for (std::size_t k = 0; k < runs.size(); ++k) {
-        const SeedRun& r = runs[k];
-        const std::vector<double> vals = {double(k), r.t_hot_wall, r.t_precursor, r.t_arch, r.y_arch, r.y0_arch,
-                                          r.arch_size, std::min(r.arch_pL, r.arch_pR), r.react_lag, r.arch_left_4ms,
-                                          r.plug_wall_load, r.arch_brake, r.opening_below, r.wall_slowdown_arch,
-                                          r.opening_max_after, r.t_crack, r.y_crack, r.y0_crack, r.crack_opening,
-                                          r.friction_share, r.A, r.B, r.wall_seconds};
-        for (std::size_t c = 0; c < cols.size(); ++c) col[c].push_back(vals[c]);
-    }
-    for (std::size_t c = 0; c < cols.size(); ++c) st.add(cols[c].first, cols[c].second).values = col[c];
+    std::vector<double> index(runs.size());
+    std::iota(index.begin(), index.end(), 0.0);
+    st.add("seed_index", "1").values = index;
+    using S = SeedRun;
+    const std::vector<std::tuple<const char*, const char*, std::function<double(const SeedRun&)>>> cols = {
+        {"t_hot_wall", "s", &S::t_hot_wall}, {"t_precursor", "s", &S::t_precursor}, {"t_arch", "s", &S::t_arch},
+        {"y_arch", "d", &S::y_arch}, {"y0_arch", "d", &S::y0_arch}, {"arch_size", "1", &S::arch_size},
+        {"arch_foot_pressure_ratio", "1", [](const SeedRun& r) { return std::min(r.arch_pL, r.arch_pR); }},
+        {"react_lag", "s", &S::react_lag}, {"arch_left_4ms", "1", &S::arch_left_4ms}, {"plug_wall_load", "1", &S::plug_wall_load},
+        {"arch_brake", "m/s", &S::arch_brake}, {"opening_below", "d", &S::opening_below},
+        {"wall_slowdown_arch", "m/s", &S::wall_slowdown_arch}, {"opening_max_after", "d", &S::opening_max_after},
+        {"t_crack", "s", &S::t_crack}, {"y_crack", "d", &S::y_crack}, {"y0_crack", "d", &S::y0_crack},
+        {"crack_opening", "d", &S::crack_opening}, {"friction_share", "1", &S::friction_share}, {"A", "1/s", &S::A},
+        {"B", "1/s", &S::B}, {"wall_seconds", "s", &S::wall_seconds}};
+    for (const auto& [name, unit, f] : cols) st.add(name, unit).values = per_seed(runs, f);
 }
 
 // First arch, its first hot wall disk and first crack over seeds: when (censored at t_end),
@@ -943,13 +931,13 @@ void report_section(Result& res, const std::vector<SeedRun>& runs) {
                "first frame with half of the initiating disk's neighbours hot, minus its first hot frame, median (paper: 0.004 s)");
     res.scalar("arch_left_4ms_median", median(&SeedRun::arch_left_4ms), "1",
                "share of the first arch's disks still hot 4 ms after it spanned the width, median");
+    // Later arches above and below are 0 or 1, and NaN together (no frame 4 ms after the first).
     const auto above = per_seed(runs, &SeedRun::arch_above_later), below = per_seed(runs, &SeedRun::arch_below_later);
-    double both = 0, n_ok = 0;
-    for (std::size_t k = 0; k < above.size(); ++k)
-        if (std::isfinite(above[k])) { n_ok += 1; both += above[k] * below[k]; }
-    res.scalar("arch_above_later_fraction", share_finite(above, [](double y) { return y == 1.0; }), "1", "seeds with a later arch (after the first + 4 ms) more than arch_separation above the first");
-    res.scalar("arch_below_later_fraction", share_finite(below, [](double y) { return y == 1.0; }), "1", "the same below");
-    res.scalar("arch_above_and_below_fraction", n_ok > 0 ? both / n_ok : NAN, "1", "seeds with later arches both above and below");
+    const auto both = per_seed(runs, [](const SeedRun& r) { return r.arch_above_later * r.arch_below_later; });
+    auto one = [](double y) { return y == 1.0; };
+    res.scalar("arch_above_later_fraction", share_finite(above, one), "1", "seeds with a later arch (after the first + 4 ms) more than arch_separation above the first");
+    res.scalar("arch_below_later_fraction", share_finite(below, one), "1", "the same below");
+    res.scalar("arch_above_and_below_fraction", share_finite(both, one), "1", "seeds with later arches both above and below");
     res.scalar("plug_wall_load_median", median(&SeedRun::plug_wall_load), "1",
                "wall impulse on the arch's plug within 4 ms of the arch over the plug's weight times that time, median (1: the walls hold the plug)");
     const auto rel = per_seed(runs, [](const SeedRun& r) { return r.plug_wall_load / r.friction_share; });
