@@ -25,6 +25,7 @@
 #include <chrono>
 #include <cmath>
 #include <functional>
+#include <iterator>
 #include <numeric>
 #include <optional>
 #include <string>
@@ -188,8 +189,6 @@ struct SeedRun {
     double wall_seconds = NAN, collisions = NAN, elastic_share = NAN;
     std::vector<TimeFit> per_time;    // every run: at each Fig. 14 time
     std::vector<FigureTable> figure;  // run 0 only
-
-    // One field list for both directions (io/json_fields.hpp).
     template <class V> void fields(V&& v) {
         v("vbar0", vbar0); v("vbar_relax_late", vbar_relax_late); v("fluid_layers", fluid_layers);
         v("lattice_broken_below", lattice_broken_below); v("t_hot_wall", t_hot_wall); v("t_arch", t_arch);
@@ -341,9 +340,8 @@ ArchFound find_arch(const Pipe& s, const std::vector<double>& y0, const std::vec
                     const std::vector<Vec2>& r, const std::vector<WallHit>& hits) {
     const double d = s.d, L = s.L, fdt = s.frame_dt, reach = s.wall_reach * d, band = s.pressure_band * d;
     const double link2 = std::pow(s.link * d, 2);
-    double ymin = INFINITY, ymax = -INFINITY;
-    for (const Vec2& x : r) { ymin = std::min(ymin, x.y); ymax = std::max(ymax, x.y); }
-    const double col_h = ymax - ymin + d;
+    const auto [lo, hi] = std::minmax_element(r.begin(), r.end(), [](const Vec2& a, const Vec2& b) { return a.y < b.y; });
+    const double col_h = hi->y - lo->y + d;
     DisjointSets dsu(hot.size());
     for (std::size_t a = 0; a < hot.size(); ++a)
         for (std::size_t b = a + 1; b < hot.size(); ++b)
@@ -503,7 +501,7 @@ void arch_aftermath(SeedRun& out, const Pipe& s, const Fall& fl, long fa) {
 // down (Sec. 5): in the plug, v_y at the walls minus v_y inside (> 0: the wall disks fall
 // slower), at the arch and at the window's start.
 void plug_motion(SeedRun& out, const Pipe& s, const Fall& fl, long fa) {
-        const double y0 = fl.at(fa).arch.y0, hp = s.plug_half_height, depth = s.below_depth;
+    const double y0 = fl.at(fa).arch.y0, hp = s.plug_half_height, depth = s.below_depth;
     const long w = s.frames(s.arch_window);
     const long f0 = std::max(1L, fa - w), f1 = std::min(s.n_frames, fa + w);
     auto plug = [&](long f) { return fl.bands.group(std::size_t(f - 1), y0 - hp, y0 + hp); };
@@ -875,12 +873,11 @@ void report_arch_times(Result& res, const std::vector<SeedRun>& runs) {
     const auto crack_after_arch = per_seed(runs, [](const SeedRun& r) { return r.t_crack - r.t_arch; });
     const auto crack_near_arch = per_seed(runs, [](const SeedRun& r) { return std::abs(r.y0_crack - r.y0_arch); });
     const auto precursor_lead = per_seed(runs, [](const SeedRun& r) { return r.t_arch - r.t_precursor; });
-    // Empirical distribution of the first-arch time (censored runs at the end).
-    std::vector<double> sorted = ta, tt, fr;
-    for (double& x : sorted) if (std::isnan(x)) x = INFINITY;
-    std::sort(sorted.begin(), sorted.end());
-    for (std::size_t k = 0; k < sorted.size(); ++k)
-        if (std::isfinite(sorted[k])) { tt.push_back(sorted[k]); fr.push_back(double(k + 1) / double(sorted.size())); }
+    // Empirical distribution of the first-arch time over all seeds (those without an arch never count).
+    std::vector<double> tt, fr;
+    std::copy_if(ta.begin(), ta.end(), std::back_inserter(tt), [](double x) { return std::isfinite(x); });
+    std::sort(tt.begin(), tt.end());
+    for (std::size_t k = 0; k < tt.size(); ++k) fr.push_back(double(k + 1) / double(ta.size()));
     Table& cd = res.table("arch_time_cdf", "fraction of seeds with an arch by time t");
     cd.add("t_arch", "s").values = tt;
     cd.add("fraction", "1").values = fr;
