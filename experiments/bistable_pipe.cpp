@@ -20,7 +20,6 @@
 #include <numeric>
 #include <string>
 #include <tuple>
-#include <type_traits>
 
 #include "analysis/curve_analysis.hpp"
 #include "data/spec.hpp"

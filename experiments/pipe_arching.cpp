@@ -29,6 +29,7 @@
 #include <numeric>
 #include <optional>
 #include <string>
+#include <tuple>
 
 #include "analysis/crack_detector.hpp"
 #include "analysis/disjoint_sets.hpp"
