@@ -20,7 +20,6 @@
 #include <numeric>
 #include <string>
 #include <tuple>
-#include <type_traits>
 
 #include "analysis/curve_analysis.hpp"
 #include "data/spec.hpp"
@@ -130,15 +129,15 @@ enum Outcome { kSteady = 0, kFreeFall = 1, kUnsettled = 2 };
 
 struct RunResult {
     int outcome = kUnsettled;
-    double t_steady = NAN, v_mean = NAN, v_std = NAN, v_final = NAN, t_final = NAN, accel_final = NAN;
-    double sigma_vx = NAN, ndot = NAN, dvy = NAN, vx_in = NAN, vy_in = NAN, dt = NAN;
+    double t_steady = NAN, v_mean = NAN, v_final = NAN, t_final = NAN, accel_final = NAN;
+    double sigma_vx = NAN, ndot = NAN, dvy = NAN, vx_in = NAN, vy_in = NAN;
     long grains = 0;
     std::vector<double> t, v, sx;        // samples: time [s], mean v_y [m/s], rms v_x [m/s]
     std::vector<double> w_ndot, w_dvy, w_sx, w_v; // windows (Eq. 9 estimates): ṅ, Δv_y, σ_vx, v
     template <class V> void fields(V&& f) {
-        f("outcome", outcome); f("t_steady", t_steady); f("v_mean", v_mean); f("v_std", v_std); f("v_final", v_final);
+        f("outcome", outcome); f("t_steady", t_steady); f("v_mean", v_mean); f("v_final", v_final);
         f("t_final", t_final); f("accel_final", accel_final); f("sigma_vx", sigma_vx); f("ndot", ndot); f("dvy", dvy);
-        f("vx_in", vx_in); f("vy_in", vy_in); f("dt", dt); f("grains", grains); f("t", t); f("v", v); f("sx", sx);
+        f("vx_in", vx_in); f("vy_in", vy_in); f("grains", grains); f("t", t); f("v", v); f("sx", sx);
         f("w_ndot", w_ndot); f("w_dvy", w_dvy); f("w_sx", w_sx); f("w_v", w_v);
     }
 };
@@ -151,48 +150,46 @@ double slope(const std::vector<double>& t, const std::vector<double>& v, std::si
 
 // Wall impacts per sample interval, so that any span of samples can be summed.
 struct WallSamples {
-    std::vector<long> impacts, completed;
-    std::vector<double> sum_dvy, sum_vx, sum_vy;
+    std::vector<WallImpactStats> per_sample;
     void take(Engine& eng) {
-        const WallImpactStats& w = eng.wall_stats();
-        impacts.push_back(w.impacts);
-        completed.push_back(w.completed);
-        sum_dvy.push_back(w.sum_dvy);
-        sum_vx.push_back(w.sum_vx_in);
-        sum_vy.push_back(w.sum_vy_in);
+        per_sample.push_back(eng.wall_stats());
         eng.reset_wall_stats();
     }
-    long impacts_in(std::size_t from, std::size_t to) const {
-        return std::accumulate(impacts.begin() + long(from), impacts.begin() + long(to), 0L);
+    WallImpactStats sum(std::size_t from, std::size_t to) const { // samples [from, to)
+        WallImpactStats w;
+        for (std::size_t i = from; i < to; ++i) {
+            w.impacts += per_sample[i].impacts;
+            w.completed += per_sample[i].completed;
+            w.sum_dvy += per_sample[i].sum_dvy;
+            w.sum_vx_in += per_sample[i].sum_vx_in;
+            w.sum_vy_in += per_sample[i].sum_vy_in;
+        }
+        return w;
     }
 };
+
+double span_mean(const std::vector<double>& x, std::size_t from, std::size_t to) {
+    return std::accumulate(x.begin() + long(from), x.begin() + long(to), 0.0) / double(to - from);
+}
+
+// The index of the first sample after time t (sample times increase).
+std::size_t sample_after(const std::vector<double>& times, double t) {
+    return std::size_t(std::upper_bound(times.begin(), times.end(), t) - times.begin());
+}
 
 // Means over the steady state (samples after steady_since) of n grains: speed, σ_vx, wall impact
 // rate ṅ per grain and the mean impact (Δv_y, incoming velocities) of Eq. (9).
 void steady_means(RunResult& r, const WallSamples& walls, double steady_since, double sample_dt, std::size_t n) {
     r.t_steady = steady_since;
-    double sum = 0, sum2 = 0, sxs = 0, ws = 0, vxs = 0, vys = 0;
-    long k = 0, impacts = 0, completed = 0;
-    for (std::size_t i = 0; i < r.t.size(); ++i)
-        if (r.t[i] > steady_since) {
-            sum += r.v[i];
-            sum2 += r.v[i] * r.v[i];
-            sxs += r.sx[i];
-            impacts += walls.impacts[i];
-            completed += walls.completed[i];
-            ws += walls.sum_dvy[i];
-            vxs += walls.sum_vx[i];
-            vys += walls.sum_vy[i];
-            ++k;
-        }
-    r.v_mean = sum / double(k);
-    r.v_std = std::sqrt(std::max(0.0, sum2 / double(k) - r.v_mean * r.v_mean));
-    r.sigma_vx = sxs / double(k);
-    r.ndot = double(impacts) / (double(k) * sample_dt * double(n));
-    if (completed > 0) {
-        r.dvy = ws / double(completed);
-        r.vx_in = vxs / double(completed);
-        r.vy_in = vys / double(completed);
+    const std::size_t from = sample_after(r.t, steady_since), to = r.t.size();
+    const WallImpactStats w = walls.sum(from, to);
+    r.v_mean = span_mean(r.v, from, to);
+    r.sigma_vx = span_mean(r.sx, from, to);
+    r.ndot = double(w.impacts) / (double(to - from) * sample_dt * double(n));
+    if (w.completed > 0) {
+        r.dvy = w.sum_dvy / double(w.completed);
+        r.vx_in = w.sum_vx_in / double(w.completed);
+        r.vy_in = w.sum_vy_in / double(w.completed);
     }
 }
 
@@ -200,20 +197,12 @@ void steady_means(RunResult& r, const WallSamples& walls, double steady_since, d
 void eq9_windows(RunResult& r, const WallSamples& walls, double eq9_window, double sample_dt, std::size_t n) {
     const std::size_t per = std::size_t(std::max(1.0, std::round(eq9_window / sample_dt)));
     for (std::size_t a = per; a + per <= r.t.size(); a += per) {
-        long imp = 0, comp = 0;
-        double dv = 0, sx = 0, v = 0;
-        for (std::size_t i = a; i < a + per; ++i) {
-            imp += walls.impacts[i];
-            comp += walls.completed[i];
-            dv += walls.sum_dvy[i];
-            sx += r.sx[i];
-            v += r.v[i];
-        }
-        if (comp < 20) continue; // too few impacts for a mean Δv_y
-        r.w_ndot.push_back(double(imp) / (double(per) * sample_dt * double(n)));
-        r.w_dvy.push_back(dv / double(comp));
-        r.w_sx.push_back(sx / double(per));
-        r.w_v.push_back(-v / double(per));
+        const WallImpactStats w = walls.sum(a, a + per);
+        if (w.completed < 20) continue; // too few impacts for a mean Δv_y
+        r.w_ndot.push_back(double(w.impacts) / (double(per) * sample_dt * double(n)));
+        r.w_dvy.push_back(w.sum_dvy / double(w.completed));
+        r.w_sx.push_back(span_mean(r.sx, a, a + per));
+        r.w_v.push_back(-span_mean(r.v, a, a + per));
     }
 }
 
@@ -223,7 +212,6 @@ void eq9_windows(RunResult& r, const WallSamples& walls, double eq9_window, doub
 RunResult run_pipe(const PipeSpec& s, double t_budget, double eq9_window) {
     Engine eng = build_pipe(s);
     RunResult r;
-    r.dt = eng.dt();
     r.grains = long(eng.size());
     const std::size_t n = eng.size();
     const std::size_t per_window = std::size_t(std::max(3.0, std::round(s.window / s.sample_dt)));
@@ -248,7 +236,7 @@ RunResult run_pipe(const PipeSpec& s, double t_budget, double eq9_window) {
         if (m <= per_window) continue;
         const double drift = slope(r.t, r.v, m - per_window);
         // A plug in free fall: accelerating at g and not one wall impact over the window.
-        if (std::abs(drift + s.geo.gravity) < s.drift_tol && walls.impacts_in(m - per_window, m) == 0) {
+        if (std::abs(drift + s.geo.gravity) < s.drift_tol && walls.sum(m - per_window, m).impacts == 0) {
             free_fall = true;
             break;
         }
@@ -257,8 +245,7 @@ RunResult run_pipe(const PipeSpec& s, double t_budget, double eq9_window) {
         } else if (eng.time() >= steady_since + s.t_average) {
             // Confirm over the averaging window itself: a plateau that happened to fill the
             // detection window but keeps drifting afterwards is not a steady state; search on.
-            std::size_t from = 0;
-            while (from < m && r.t[from] <= steady_since) ++from;
+            const std::size_t from = sample_after(r.t, steady_since);
             if (m - from >= 3 && std::abs(slope(r.t, r.v, from)) < s.drift_tol) break;
             steady_since = NAN;
         }
@@ -471,6 +458,7 @@ void report_branch_k(Result& r, const std::vector<double>& es, const std::string
                      bool fast_branch) {
     double contacts = 0, ratio = 0, ratio_in = 0, reach = 0;
     int nc = 0, nr = 0, nr_in = 0, nreach = 0;
+    std::vector<double> v_ln_e; // fast branch: v |ln e_N| per state
     for (const auto& col : c.col)
         for (std::size_t ei = 0; ei < es.size(); ++ei) {
             const double v = col[kV][ei];
@@ -479,21 +467,18 @@ void report_branch_k(Result& r, const std::vector<double>& es, const std::string
             if (std::isfinite(col[kVConstruction][ei])) { ratio += std::log(col[kVConstruction][ei] / v); ++nr; }
             if (std::isfinite(col[kVConstructionVxin][ei])) { ratio_in += std::log(col[kVConstructionVxin][ei] / v); ++nr_in; }
             if (std::isfinite(col[kReach][ei])) { reach += std::log(col[kReach][ei]); ++nreach; }
+            if (fast_branch) v_ln_e.push_back(v * std::abs(std::log(es[ei])));
         }
     const std::string name = fast_branch ? "fast" : "slow";
     if (fast_branch) {
         // The fast branch's speed against 1/|ln e_N| ∝ 1/gamma_N: how much of its braking is the
         // dashpot's speed-independent friction impulse (brake-failure's high_v_plateau).
-        std::vector<double> a;
-        for (const auto& col : c.col)
-            for (std::size_t ei = 0; ei < es.size(); ++ei)
-                if (col[kV][ei] > v_crit) a.push_back(col[kV][ei] * std::abs(std::log(es[ei])));
         double mean = 0, sd = 0;
-        for (double x : a) mean += x / double(a.size());
-        for (double x : a) sd += (x - mean) * (x - mean) / double(std::max<std::size_t>(1, a.size() - 1));
-        r.scalar("fast_branch_v_ln_eN_" + kt, a.empty() ? NAN : mean, "m/s",
+        for (double x : v_ln_e) mean += x / double(v_ln_e.size());
+        for (double x : v_ln_e) sd += (x - mean) * (x - mean) / double(std::max<std::size_t>(1, v_ln_e.size() - 1));
+        r.scalar("fast_branch_v_ln_eN_" + kt, v_ln_e.empty() ? NAN : mean, "m/s",
                  "mean of v |ln e_N| over the fast branch's states (constant if v ∝ 1/gamma_N)");
-        r.scalar("fast_branch_v_ln_eN_cv_" + kt, a.size() > 1 ? std::sqrt(sd) / mean : NAN, "1",
+        r.scalar("fast_branch_v_ln_eN_cv_" + kt, v_ln_e.size() > 1 ? std::sqrt(sd) / mean : NAN, "1",
                  "its coefficient of variation over the states");
     }
     r.scalar(name + "_branch_states_" + kt, nc, "1", "steady states on the " + name + " branch (either start)");

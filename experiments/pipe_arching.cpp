@@ -22,15 +22,17 @@
 // Momentum balance of the falling column (exact for hard disks: pair impulses cancel):
 //   P_y(t) - P_y(0) = -M g t + J_y,  J_y = sum of the side walls' impulses (friction) since t = 0.
 #include <algorithm>
-#include <array>
 #include <chrono>
 #include <cmath>
 #include <functional>
+#include <iterator>
 #include <numeric>
 #include <optional>
 #include <string>
+#include <tuple>
 
 #include "analysis/crack_detector.hpp"
+#include "analysis/disjoint_sets.hpp"
 #include "core/rng_stream.hpp"
 #include "data/spec.hpp"
 #include "engines/ed/ed_engine.hpp"
@@ -137,8 +139,33 @@ Pipe::Pipe(const PipeArchingSpec& spec) : PipeArchingSpec(spec) {
           .min_above = std::size_t(crack_min_above), .max_opening = 3 * d};
 }
 
-double num(const nlohmann::json& j) { return j.is_null() ? NAN : j.get<double>(); }
-nlohmann::json jnum(double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr); }
+std::string tlabel(double t) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "t%.3f", t);
+    return buf;
+}
+
+// Eq. (21) (a Fig. 14(a) time) or Eq. (22) (a (b) time) fitted at one time alone (NaN: no fit).
+struct TimeFit {
+    double t = NAN, value = NAN, error = NAN; // [s], [1/s], [1/s]
+    template <class V> void fields(V&& v) { v("t", t); v("value", value); v("error", error); }
+};
+
+// One of run 0's tables (relaxation, Figs. 13 and 14), built by the run and carried through the
+// sweep's JSON into the result as it is.
+struct FigureTable {
+    std::string name, description;
+    std::vector<std::string> columns = {}, units = {};
+    std::vector<std::vector<double>> values = {};
+    void add(const char* column, const char* unit, std::vector<double> v) {
+        columns.push_back(column);
+        units.push_back(unit);
+        values.push_back(std::move(v));
+    }
+    template <class V> void fields(V&& v) {
+        v("name", name); v("description", description); v("columns", columns); v("units", units); v("values", values);
+    }
+};
 
 // One run (one seed). Times in s, heights in d above the removed floor unless named otherwise.
 // Its JSON (the sweep's checkpoint format) names every field as below; NaN is null.
@@ -148,7 +175,7 @@ struct SeedRun {
     double t_hot_wall = NAN;                        // first hot disk at a wall (any)
     double t_arch = NAN, y_arch = NAN, y0_arch = NAN; // first arch: time, lab and initial height
     double arch_size = NAN, arch_pL = NAN, arch_pR = NAN;
-    double t_precursor = NAN, y_precursor = NAN, react_lag = NAN;
+    double t_precursor = NAN, react_lag = NAN;
     double arch_left_4ms = NAN, arch_above_later = NAN, arch_below_later = NAN;
     double plug_wall_load = NAN, arch_brake = NAN, opening_below = NAN;
     double wall_slowdown_arch = NAN, wall_slowdown_before = NAN;
@@ -161,15 +188,13 @@ struct SeedRun {
     double mean_rate_early = NAN;
     double momentum_residual = NAN, friction_share = NAN, wall_load_peak = NAN;
     double wall_seconds = NAN, collisions = NAN, elastic_share = NAN;
-    nlohmann::json per_time;  // every run: Eq. (21)/(22) fits at each Fig. 14 time
-    nlohmann::json figure;    // run 0 only: snapshots, histograms, timeline, relaxation
-
-    // One field list for both directions (io/json_fields.hpp).
+    std::vector<TimeFit> per_time;    // every run: at each Fig. 14 time
+    std::vector<FigureTable> figure;  // run 0 only
     template <class V> void fields(V&& v) {
         v("vbar0", vbar0); v("vbar_relax_late", vbar_relax_late); v("fluid_layers", fluid_layers);
         v("lattice_broken_below", lattice_broken_below); v("t_hot_wall", t_hot_wall); v("t_arch", t_arch);
         v("y_arch", y_arch); v("y0_arch", y0_arch); v("arch_size", arch_size); v("arch_pL", arch_pL);
-        v("arch_pR", arch_pR); v("t_precursor", t_precursor); v("y_precursor", y_precursor);
+        v("arch_pR", arch_pR); v("t_precursor", t_precursor);
         v("react_lag", react_lag); v("arch_left_4ms", arch_left_4ms); v("arch_above_later", arch_above_later);
         v("arch_below_later", arch_below_later); v("plug_wall_load", plug_wall_load); v("arch_brake", arch_brake);
         v("opening_below", opening_below); v("wall_slowdown_arch", wall_slowdown_arch);
@@ -202,14 +227,6 @@ std::optional<CollisionRateFit> try_fit(const RateHistogram& h, CollisionRateFit
     return std::nullopt;
 }
 
-// Disjoint-set forest for the hot bands.
-struct Dsu {
-    std::vector<int> up;
-    explicit Dsu(std::size_t n) : up(n) { std::iota(up.begin(), up.end(), 0); }
-    int find(int a) { while (up[a] != a) a = up[a] = up[up[a]]; return a; }
-    void join(int a, int b) { up[find(a)] = find(b); }
-};
-
 struct WallHit { // a side-wall collision
     double t, y;
     int wall;
@@ -234,27 +251,16 @@ void lattice_state(SeedRun& out, const std::vector<Vec2>& lat, const std::vector
             if (norm(lat[j] - lat[i]) > 1.1 * s) continue;
             if (norm(now[j] - now[i]) > 1.2 * s) kept[i] = kept[j] = 0;
         }
-    // Rows: equal initial heights.
-    std::vector<std::pair<double, std::vector<std::size_t>>> rows;
-    for (std::size_t i = 0; i < n; ++i) {
-        if (rows.empty() || std::abs(lat[i].y - rows.back().first) > 0.1 * s) rows.push_back({lat[i].y, {}});
-        rows.back().second.push_back(i);
-    }
-    std::size_t r = rows.size();
-    while (r > 0) {
-        const auto& row = rows[r - 1].second;
-        const double lost = double(std::count_if(row.begin(), row.end(), [&](std::size_t i) { return !kept[i]; }));
-        if (lost < 0.5 * double(row.size())) break;
-        --r;
-    }
-    out.fluid_layers = double(rows.size() - r);
-    double broken = 0, total = 0;
-    for (std::size_t k = 0; k < r; ++k)
-        for (std::size_t i : rows[k].second) {
-            total += 1;
-            broken += kept[i] ? 0 : 1;
-        }
-    out.lattice_broken_below = total > 0 ? broken / total : NAN;
+    // Rows (equal initial heights) hold consecutive disks: row k is [start[k], start[k + 1]).
+    std::vector<std::size_t> start;
+    for (std::size_t i = 0; i < n; ++i)
+        if (start.empty() || std::abs(lat[i].y - lat[start.back()].y) > 0.1 * s) start.push_back(i);
+    start.push_back(n);
+    auto lost = [&](std::size_t a, std::size_t b) { return std::count(kept.begin() + long(a), kept.begin() + long(b), 0); };
+    std::size_t r = start.size() - 1; // rows below the fluidized ones
+    while (r > 0 && 2 * lost(start[r - 1], start[r]) >= long(start[r] - start[r - 1])) --r;
+    out.fluid_layers = double(start.size() - 1 - r);
+    out.lattice_broken_below = start[r] > 0 ? double(lost(0, start[r])) / double(start[r]) : NAN;
 }
 
 // The column at t = -t_r: the lattice on the floor, velocities uniform in [-v0, v0] from
@@ -305,7 +311,7 @@ struct Frame {
     std::vector<int> hot_wall;         // those at a side wall
     ArchFound arch;
     Crack crack;
-    double vy = 0, wall_rate = 0; // mean v_y [m/s]; side-wall collisions per disk and unit time [1/s]
+    double t = 0, vy = 0, wall_rate = 0; // [s]; mean v_y [m/s]; side-wall collisions per disk and unit time [1/s]
     double wall_load = 0;         // side-wall impulse over M g frame_dt
 };
 
@@ -320,9 +326,9 @@ struct Fall {
     std::vector<double> dist_t = {};
     double jy = 0; // side-wall impulse on the column since t = 0 [kg m/s]
     const Frame& at(long f) const { return frames[std::size_t(f)]; }
-    std::vector<double> per_frame(double Frame::*x) const { // frames 1 .. n_frames
+    template <class F> std::vector<double> per_frame(F x) const { // frames 1 .. n_frames
         std::vector<double> v;
-        for (std::size_t f = 1; f < frames.size(); ++f) v.push_back(frames[f].*x);
+        for (std::size_t f = 1; f < frames.size(); ++f) v.push_back(std::invoke(x, frames[f]));
         return v;
     }
 };
@@ -335,10 +341,9 @@ ArchFound find_arch(const Pipe& s, const std::vector<double>& y0, const std::vec
                     const std::vector<Vec2>& r, const std::vector<WallHit>& hits) {
     const double d = s.d, L = s.L, fdt = s.frame_dt, reach = s.wall_reach * d, band = s.pressure_band * d;
     const double link2 = std::pow(s.link * d, 2);
-    double ymin = INFINITY, ymax = -INFINITY;
-    for (const Vec2& x : r) { ymin = std::min(ymin, x.y); ymax = std::max(ymax, x.y); }
-    const double col_h = ymax - ymin + d;
-    Dsu dsu(hot.size());
+    const auto [lo, hi] = std::minmax_element(r.begin(), r.end(), [](const Vec2& a, const Vec2& b) { return a.y < b.y; });
+    const double col_h = hi->y - lo->y + d;
+    DisjointSets dsu(hot.size());
     for (std::size_t a = 0; a < hot.size(); ++a)
         for (std::size_t b = a + 1; b < hot.size(); ++b)
             if (norm2(r[hot[a]] - r[hot[b]]) <= link2) dsu.join(int(a), int(b));
@@ -413,6 +418,7 @@ Fall fall(EdEngine& eng, const Pipe& s) {
     for (long f = 1; f <= s.n_frames; ++f) {
         const double t = s.t(f);
         Frame& fr = fl.frames[std::size_t(f)];
+        fr.t = t;
         std::fill(wall_jy.begin(), wall_jy.end(), 0.0);
         eng.run_until(t, obs);
         report_engine_time(t, s.t_end);
@@ -454,7 +460,6 @@ int first_arch(SeedRun& out, const Pipe& s, const Fall& fl, long fa) {
                 f_prec = k;
                 i_prec = i;
                 out.t_precursor = s.t(k);
-                out.y_precursor = fl.y0[std::size_t(i)];
                 break;
             }
     if (i_prec < 0) return i_prec;
@@ -497,7 +502,7 @@ void arch_aftermath(SeedRun& out, const Pipe& s, const Fall& fl, long fa) {
 // down (Sec. 5): in the plug, v_y at the walls minus v_y inside (> 0: the wall disks fall
 // slower), at the arch and at the window's start.
 void plug_motion(SeedRun& out, const Pipe& s, const Fall& fl, long fa) {
-        const double y0 = fl.at(fa).arch.y0, hp = s.plug_half_height, depth = s.below_depth;
+    const double y0 = fl.at(fa).arch.y0, hp = s.plug_half_height, depth = s.below_depth;
     const long w = s.frames(s.arch_window);
     const long f0 = std::max(1L, fa - w), f1 = std::min(s.n_frames, fa + w);
     auto plug = [&](long f) { return fl.bands.group(std::size_t(f - 1), y0 - hp, y0 + hp); };
@@ -582,65 +587,85 @@ std::vector<RateHistogram> fit_fig14(SeedRun& out, const PipeArchingSpec& s, con
         if (fp) { out.B = fp->value; out.B_err = fp->error; out.B_chi2 = fp->chi2_reduced; out.dev_pow_late = fp->deviance; }
         if (fe) out.dev_exp_late = fe->deviance;
     }
-    out.per_time = nlohmann::json::array();
     std::vector<RateHistogram> hs;
     for (std::size_t k = 0; k < fl.dist_rates.size(); ++k) {
         const bool early = k < n_before;
         hs.push_back(early ? hist_lin(fl.dist_rates[k]) : hist_log(fl.dist_rates[k]));
         const auto f = try_fit(hs.back(), early ? Model::Exponential : Model::PowerLaw, 0.5 * rmin, early ? hi_lin : 1.0e6);
-        out.per_time.push_back({{"t", fl.dist_t[k]}, {"value", f ? jnum(f->value) : nullptr}, {"error", f ? jnum(f->error) : nullptr}});
+        out.per_time.push_back({fl.dist_t[k], f ? f->value : NAN, f ? f->error : NAN});
     }
     return hs;
 }
 
-// A Fig. 13 snapshot (run 0) with its marks: the initiating disk, the frame's arch, the crack.
-nlohmann::json snapshot_json(const Pipe& s, const Fall& fl, long f, int i_prec) {
-    const ArchFound& a = fl.at(f).arch;
-    const Crack& cr = fl.at(f).crack;
-    const std::vector<Vec2>& pos = fl.at(f).pos;
+// A Fig. 13 snapshot (run 0): the disks, the frame's arch and the crack.
+void add_snapshot(std::vector<FigureTable>& F, const Pipe& s, const Frame& fr) {
     const double d = s.d;
     std::vector<double> x, y, in_arch, side, cx, cy;
-    for (std::size_t i = 0; i < pos.size(); ++i) {
-        x.push_back(pos[i].x / d);
-        y.push_back((pos[i].y - s.y_floor) / d);
-        in_arch.push_back(std::find(a.members.begin(), a.members.end(), int(i)) != a.members.end() ? 1 : 0);
-        side.push_back(cr.side.empty() ? 0 : cr.side[i]);
+    for (std::size_t i = 0; i < fr.pos.size(); ++i) {
+        x.push_back(fr.pos[i].x / d);
+        y.push_back((fr.pos[i].y - s.y_floor) / d);
+        in_arch.push_back(std::find(fr.arch.members.begin(), fr.arch.members.end(), int(i)) != fr.arch.members.end() ? 1 : 0);
+        side.push_back(fr.crack.side.empty() ? 0 : fr.crack.side[i]);
     }
-    for (std::size_t j = 0; j < cr.course_x.size(); ++j) {
-        cx.push_back(cr.course_x[j] / d);
-        cy.push_back((cr.course_y[j] - s.y_floor) / d);
+    for (std::size_t j = 0; j < fr.crack.course_x.size(); ++j) {
+        cx.push_back(fr.crack.course_x[j] / d);
+        cy.push_back((fr.crack.course_y[j] - s.y_floor) / d);
     }
-    const Vec2 rp = i_prec >= 0 ? pos[std::size_t(i_prec)] : Vec2{};
-    return {{"t", s.t(f)}, {"x", x}, {"y", y}, {"Nc", fl.at(f).rate}, {"arch", in_arch}, {"side", side},
-            {"arch_y", a.found ? jnum(a.y) : nullptr}, {"course_x", cx}, {"course_y", cy},
-            {"opening", cr.course_x.empty() ? nullptr : jnum(cr.opening / d)},
-            {"prec_x", i_prec >= 0 ? jnum(rp.x / d) : nullptr},
-            {"prec_y", i_prec >= 0 ? jnum((rp.y - s.y_floor) / d) : nullptr}};
+    FigureTable& t = F.emplace_back(FigureTable{"snapshot_" + tlabel(fr.t),
+        "disk centres (x, y above the removed floor), N_c over the last frame_dt, member of the frame's arch, side of the crack (-1 below, +1 above, 0 loose), run 0"});
+    t.add("x", "d", x);
+    t.add("y", "d", y);
+    t.add("Nc", "1/s", fr.rate);
+    t.add("arch", "1", in_arch);
+    t.add("crack_side", "1", side);
+    FigureTable& c = F.emplace_back(FigureTable{"crack_" + tlabel(fr.t), "course of the widest wall-to-wall crack (mid-height per slice of one diameter), run 0"});
+    c.add("x", "d", cx);
+    c.add("y", "d", cy);
 }
 
-// Run 0's figure data: relaxation, Fig. 13 snapshots, timeline per frame, Fig. 14 histograms.
-nlohmann::json figure_json(const Pipe& s, const Fall& fl, const Relaxation& rel,
-                           const std::vector<RateHistogram>& hs, int i_prec) {
-    nlohmann::json F = {{"relax_t", rel.t}, {"relax_vbar", rel.vbar}, {"snaps", nlohmann::json::array()},
-                        {"hists", nlohmann::json::array()}};
-    std::vector<double> t, hot, hot_wall, mean;
-    std::vector<nlohmann::json> arch_y, opening;
-    for (long f = 1; f <= s.n_frames; ++f) {
-        const Frame& fr = fl.at(f);
-        if (s.at(s.snapshot_times, f)) F["snaps"].push_back(snapshot_json(s, fl, f, i_prec));
-        t.push_back(s.t(f));
-        hot.push_back(double(fr.hot.size()));
-        hot_wall.push_back(double(fr.hot_wall.size()));
-        mean.push_back(std::accumulate(fr.rate.begin(), fr.rate.end(), 0.0) / double(fr.rate.size()));
-        arch_y.push_back(fr.arch.found ? jnum(fr.arch.y) : nullptr);
-        opening.push_back(fr.crack.course_x.empty() ? nullptr : jnum(fr.crack.opening / s.d));
+// Run 0's tables: the relaxation, the Fig. 13 snapshots and their marks (the initiating disk, the
+// frame's arch, the crack), the timeline per frame, the Fig. 14 histograms.
+std::vector<FigureTable> figure_tables(const Pipe& s, const Fall& fl, const Relaxation& rel,
+                                       const std::vector<RateHistogram>& hs, int i_prec) {
+    std::vector<FigureTable> F{{"relaxation", "v̄ = sqrt(<v^2>) during the elastic relaxation, run 0"}};
+    F[0].add("t", "s", rel.t);
+    F[0].add("vbar", "m/s", rel.vbar);
+    std::vector<const Frame*> snaps;
+    for (long f = 1; f <= s.n_frames; ++f)
+        if (s.at(s.snapshot_times, f)) add_snapshot(F, s, *snaps.emplace_back(&fl.at(f)));
+    auto per_snap = [&](auto x) {
+        std::vector<double> v;
+        for (const Frame* fr : snaps) v.push_back(x(*fr));
+        return v;
+    };
+    auto arch_y = [](const Frame& fr) { return fr.arch.found ? fr.arch.y : NAN; };
+    auto opening = [&](const Frame& fr) { return fr.crack.course_x.empty() ? NAN : fr.crack.opening / s.d; };
+    auto initiator = [&](const Frame& fr) { return i_prec >= 0 ? fr.pos[std::size_t(i_prec)] : Vec2{NAN, NAN}; };
+    FigureTable& mk = F.emplace_back(FigureTable{"marks", "run 0 per Fig. 13 snapshot: initiating disk (x, y), arch height, crack opening"});
+    mk.add("t", "s", per_snap([](const Frame& fr) { return fr.t; }));
+    mk.add("initiator_x", "d", per_snap([&](const Frame& fr) { return initiator(fr).x / s.d; }));
+    mk.add("initiator_y", "d", per_snap([&](const Frame& fr) { return (initiator(fr).y - s.y_floor) / s.d; }));
+    mk.add("arch_y", "d", per_snap(arch_y));
+    mk.add("crack_opening", "d", per_snap(opening));
+    mk.add("crack_visible", "1", per_snap([&](const Frame& fr) { return opening(fr) >= s.crack_opening ? 1.0 : 0.0; }));
+    FigureTable& tl = F.emplace_back(FigureTable{"timeline", "run 0 per frame: hot disks, mean N_c, widest wall-to-wall crack, mean v_y, wall collisions, share of the weight carried by the walls, arch height"});
+    tl.add("t", "s", fl.per_frame(&Frame::t));
+    tl.add("hot", "1", fl.per_frame([](const Frame& fr) { return double(fr.hot.size()); }));
+    tl.add("hot_wall", "1", fl.per_frame([](const Frame& fr) { return double(fr.hot_wall.size()); }));
+    tl.add("mean", "1/s", fl.per_frame([](const Frame& fr) {
+        return std::accumulate(fr.rate.begin(), fr.rate.end(), 0.0) / double(fr.rate.size());
+    }));
+    tl.add("opening", "d", fl.per_frame(opening));
+    tl.add("vy", "m/s", fl.per_frame(&Frame::vy));
+    tl.add("wall_rate", "1/s", fl.per_frame(&Frame::wall_rate));
+    tl.add("wall_load", "1", fl.per_frame(&Frame::wall_load));
+    tl.add("arch_y", "d", fl.per_frame(arch_y));
+    for (std::size_t k = 0; k < hs.size(); ++k) {
+        FigureTable& h = F.emplace_back(FigureTable{"pnc_" + tlabel(fl.dist_t[k]), "P(N_c) over the last dist_dt, run 0"});
+        h.add("Nc", "1/s", hs[k].centres);
+        h.add("P", "s", hs[k].density);
+        h.add("err", "s", hs[k].error);
     }
-    F["tl"] = {{"t", t}, {"hot", hot}, {"hot_wall", hot_wall}, {"mean", mean}, {"opening", opening},
-               {"vy", fl.per_frame(&Frame::vy)}, {"wall_rate", fl.per_frame(&Frame::wall_rate)},
-               {"wall_load", fl.per_frame(&Frame::wall_load)}, {"arch_y", arch_y}};
-    for (std::size_t k = 0; k < hs.size(); ++k)
-        F["hists"].push_back({{"t", fl.dist_t[k]}, {"centres", hs[k].centres}, {"density", hs[k].density},
-                              {"error", hs[k].error}});
     return F;
 }
 
@@ -684,7 +709,7 @@ SeedRun run_seed(const Pipe& s, std::uint64_t seed, long index, bool figure) {
         out.wall_load_peak = std::max(out.wall_load_peak, std::accumulate(load.begin() + long(a), load.begin() + long(a + k), 0.0) / double(k));
     out.collisions = double(eng.total_collisions() - coll0);
     out.elastic_share = double(eng.elastic_collisions() - el0) / std::max(1.0, out.collisions);
-    if (figure) out.figure = figure_json(s, fl, rel, hs, i_prec);
+    if (figure) out.figure = figure_tables(s, fl, rel, hs, i_prec);
     out.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
     return out;
 }
@@ -738,18 +763,8 @@ template <class Pred> double share_finite(const std::vector<double>& v, Pred pre
     return n > 0 ? k / n : NAN;
 }
 
-std::string tlabel(double t) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "t%.3f", t);
-    return buf;
-}
-
-// The elastic relaxation before the fall (run 0's curve) and v̄ at t = 0 over seeds.
+// v̄ at t = 0 over seeds, after the elastic relaxation.
 void report_relaxation(Result& res, const std::vector<SeedRun>& runs) {
-    const nlohmann::json& F = runs.front().figure;
-    Table& t = res.table("relaxation", "v̄ = sqrt(<v^2>) during the elastic relaxation, run 0");
-    t.add("t", "s").values = F.at("relax_t").get<std::vector<double>>();
-    t.add("vbar", "m/s").values = F.at("relax_vbar").get<std::vector<double>>();
     const std::vector<double> v0s = per_seed(runs, &SeedRun::vbar0), vlate = per_seed(runs, &SeedRun::vbar_relax_late);
     res.scalar("vbar_t0", median_finite(v0s), "m/s", "v̄ = sqrt(<v^2>) at t = 0, median over seeds");
     res.scalar("vbar_t0_run0", runs.front().vbar0, "m/s", "v̄ at t = 0, run 0");
@@ -757,53 +772,18 @@ void report_relaxation(Result& res, const std::vector<SeedRun>& runs) {
                "v̄(0) over the mean v̄ of the last third of the relaxation, minus 1 (steadiness)");
 }
 
-// Fig. 13 (run 0): the snapshots with their marks (the initiating disk, the frame's arch, the
-// crack) and the timeline per frame.
-void report_fig13(Result& res, const PipeArchingSpec& s, const nlohmann::json& F) {
-    // The numbers of a JSON array (null: NaN), or of one key of each of its objects.
-    auto values = [](const nlohmann::json& a, const char* key = nullptr) {
-        std::vector<double> v;
-        for (const auto& x : a) v.push_back(num(key ? x.at(key) : x));
-        return v;
-    };
-    const nlohmann::json& snaps = F.at("snaps");
-    for (const auto& sn : snaps) {
-        const std::string lab = tlabel(sn.at("t").get<double>());
-        Table& t = res.table("snapshot_" + lab,
-                             "disk centres (x, y above the removed floor), N_c over the last frame_dt, member of the frame's arch, side of the crack (-1 below, +1 above, 0 loose), run 0");
-        for (auto [col, unit, key] : {std::array{"x", "d", "x"}, {"y", "d", "y"}, {"Nc", "1/s", "Nc"}, {"arch", "1", "arch"}, {"crack_side", "1", "side"}})
-            t.add(col, unit).values = values(sn.at(key));
-        Table& c = res.table("crack_" + lab, "course of the widest wall-to-wall crack (mid-height per slice of one diameter), run 0");
-        c.add("x", "d").values = values(sn.at("course_x"));
-        c.add("y", "d").values = values(sn.at("course_y"));
-    }
-    Table& mk = res.table("marks", "run 0 per Fig. 13 snapshot: initiating disk (x, y), arch height, crack opening");
-    mk.add("t", "s").values = values(snaps, "t");
-    for (auto [col, key] : {std::pair{"initiator_x", "prec_x"}, {"initiator_y", "prec_y"}, {"arch_y", "arch_y"}, {"crack_opening", "opening"}})
-        mk.add(col, "d").values = values(snaps, key);
-    std::vector<double> vis;
-    for (double o : values(snaps, "opening")) vis.push_back(o >= s.crack_opening ? 1 : 0);
-    mk.add("crack_visible", "1").values = vis;
-    Table& t = res.table("timeline", "run 0 per frame: hot disks, mean N_c, widest wall-to-wall crack, mean v_y, wall collisions, share of the weight carried by the walls, arch height");
-    for (auto [k, unit] : {std::pair{"t", "s"}, {"hot", "1"}, {"hot_wall", "1"}, {"mean", "1/s"}, {"opening", "d"},
-                           {"vy", "m/s"}, {"wall_rate", "1/s"}, {"wall_load", "1"}, {"arch_y", "d"}})
-        t.add(k, unit).values = values(F.at("tl").at(k));
-}
-
-// Fig. 14 per time: the fits at each time alone (run 0 with its error, median over seeds) and
-// run 0's histograms.
+// Fig. 14 per time: the fits at each time alone (run 0 with its error, median over seeds).
 void report_fig14_times(Result& res, const PipeArchingSpec& s, const std::vector<SeedRun>& runs) {
     const SeedRun& f0 = runs.front();
-    const nlohmann::json& hists = f0.figure.at("hists");
     const std::size_t n_before = s.dist_times_before.size();
     Table& pt = res.table("fits_per_time", "Eq. (21) A (Fig. 14(a) times) or Eq. (22) B (Fig. 14(b) times) fitted at each time alone: run 0 with its standard error, and the median over seeds");
     std::vector<double> tt, v0, e0, med;
-    for (std::size_t k = 0; k < hists.size(); ++k) {
-        const double t = hists[k].at("t").get<double>();
+    for (std::size_t k = 0; k < f0.per_time.size(); ++k) {
+        const double t = f0.per_time[k].t;
         tt.push_back(t);
-        v0.push_back(num(f0.per_time.at(k).at("value")));
-        e0.push_back(num(f0.per_time.at(k).at("error")));
-        med.push_back(median_finite(per_seed(runs, [&](const SeedRun& r) { return num(r.per_time.at(k).at("value")); })));
+        v0.push_back(f0.per_time[k].value);
+        e0.push_back(f0.per_time[k].error);
+        med.push_back(median_finite(per_seed(runs, [&](const SeedRun& r) { return r.per_time.at(k).value; })));
         const std::string what = k < n_before ? "A_" : "B_", eq = k < n_before ? "Eq. (21)" : "Eq. (22)";
         res.scalar(what + tlabel(t), v0.back(), "1/s", eq + " fit at this time alone, run 0");
         res.scalar(what + "err_" + tlabel(t), e0.back(), "1/s", "its standard error");
@@ -813,12 +793,6 @@ void report_fig14_times(Result& res, const PipeArchingSpec& s, const std::vector
     pt.add("run0", "1/s").values = v0;
     pt.add("run0_err", "1/s").values = e0;
     pt.add("median_seeds", "1/s").values = med;
-    for (const auto& h : hists) {
-        Table& tb = res.table("pnc_" + tlabel(h.at("t").get<double>()), "P(N_c) over the last dist_dt, run 0");
-        tb.add("Nc", "1/s").values = h.at("centres").get<std::vector<double>>();
-        tb.add("P", "s").values = h.at("density").get<std::vector<double>>();
-        tb.add("err", "s").values = h.at("error").get<std::vector<double>>();
-    }
 }
 
 // Fig. 14 pooled: Eqs. (21), (22) over each panel's four times, run 0 and over seeds (the
@@ -873,27 +847,23 @@ void report_fig14_fits(Result& res, const PipeArchingSpec& s, const std::vector<
                "the same at the Fig. 14(b) times (> 1: power law fits better)");
 }
 
-// Per seed: first hot wall disk, first arch, its precursor, first crack and the rest.
 void report_seed_table(Result& res, const std::vector<SeedRun>& runs) {
     Table& st = res.table("seeds", "per seed: first hot wall disk, first arch (time, lab and initial height), its precursor, first crack (NaN: none before t_end)");
-    const std::vector<std::pair<const char*, const char*>> cols = {
-        {"seed_index", "1"}, {"t_hot_wall", "s"}, {"t_precursor", "s"}, {"t_arch", "s"}, {"y_arch", "d"},
-        {"y0_arch", "d"}, {"arch_size", "1"}, {"arch_foot_pressure_ratio", "1"}, {"react_lag", "s"},
-        {"arch_left_4ms", "1"}, {"plug_wall_load", "1"}, {"arch_brake", "m/s"}, {"opening_below", "d"},
-        {"wall_slowdown_arch", "m/s"}, {"opening_max_after", "d"}, {"t_crack", "s"}, {"y_crack", "d"},
-        {"y0_crack", "d"}, {"crack_opening", "d"}, {"friction_share", "1"}, {"A", "1/s"}, {"B", "1/s"},
-        {"wall_seconds", "s"}};
-    std::vector<std::vector<double>> col(cols.size());
-    for (std::size_t k = 0; k < runs.size(); ++k) {
-        const SeedRun& r = runs[k];
-        const std::vector<double> vals = {double(k), r.t_hot_wall, r.t_precursor, r.t_arch, r.y_arch, r.y0_arch,
-                                          r.arch_size, std::min(r.arch_pL, r.arch_pR), r.react_lag, r.arch_left_4ms,
-                                          r.plug_wall_load, r.arch_brake, r.opening_below, r.wall_slowdown_arch,
-                                          r.opening_max_after, r.t_crack, r.y_crack, r.y0_crack, r.crack_opening,
-                                          r.friction_share, r.A, r.B, r.wall_seconds};
-        for (std::size_t c = 0; c < cols.size(); ++c) col[c].push_back(vals[c]);
-    }
-    for (std::size_t c = 0; c < cols.size(); ++c) st.add(cols[c].first, cols[c].second).values = col[c];
+    std::vector<double> index(runs.size());
+    std::iota(index.begin(), index.end(), 0.0);
+    st.add("seed_index", "1").values = index;
+    using S = SeedRun;
+    const std::vector<std::tuple<const char*, const char*, std::function<double(const SeedRun&)>>> cols = {
+        {"t_hot_wall", "s", &S::t_hot_wall}, {"t_precursor", "s", &S::t_precursor}, {"t_arch", "s", &S::t_arch},
+        {"y_arch", "d", &S::y_arch}, {"y0_arch", "d", &S::y0_arch}, {"arch_size", "1", &S::arch_size},
+        {"arch_foot_pressure_ratio", "1", [](const SeedRun& r) { return std::min(r.arch_pL, r.arch_pR); }},
+        {"react_lag", "s", &S::react_lag}, {"arch_left_4ms", "1", &S::arch_left_4ms}, {"plug_wall_load", "1", &S::plug_wall_load},
+        {"arch_brake", "m/s", &S::arch_brake}, {"opening_below", "d", &S::opening_below},
+        {"wall_slowdown_arch", "m/s", &S::wall_slowdown_arch}, {"opening_max_after", "d", &S::opening_max_after},
+        {"t_crack", "s", &S::t_crack}, {"y_crack", "d", &S::y_crack}, {"y0_crack", "d", &S::y0_crack},
+        {"crack_opening", "d", &S::crack_opening}, {"friction_share", "1", &S::friction_share}, {"A", "1/s", &S::A},
+        {"B", "1/s", &S::B}, {"wall_seconds", "s", &S::wall_seconds}};
+    for (const auto& [name, unit, f] : cols) st.add(name, unit).values = per_seed(runs, f);
 }
 
 // First arch, its first hot wall disk and first crack over seeds: when (censored at t_end),
@@ -904,12 +874,11 @@ void report_arch_times(Result& res, const std::vector<SeedRun>& runs) {
     const auto crack_after_arch = per_seed(runs, [](const SeedRun& r) { return r.t_crack - r.t_arch; });
     const auto crack_near_arch = per_seed(runs, [](const SeedRun& r) { return std::abs(r.y0_crack - r.y0_arch); });
     const auto precursor_lead = per_seed(runs, [](const SeedRun& r) { return r.t_arch - r.t_precursor; });
-    // Empirical distribution of the first-arch time (censored runs at the end).
-    std::vector<double> sorted = ta, tt, fr;
-    for (double& x : sorted) if (std::isnan(x)) x = INFINITY;
-    std::sort(sorted.begin(), sorted.end());
-    for (std::size_t k = 0; k < sorted.size(); ++k)
-        if (std::isfinite(sorted[k])) { tt.push_back(sorted[k]); fr.push_back(double(k + 1) / double(sorted.size())); }
+    // Empirical distribution of the first-arch time over all seeds (those without an arch never count).
+    std::vector<double> tt, fr;
+    std::copy_if(ta.begin(), ta.end(), std::back_inserter(tt), [](double x) { return std::isfinite(x); });
+    std::sort(tt.begin(), tt.end());
+    for (std::size_t k = 0; k < tt.size(); ++k) fr.push_back(double(k + 1) / double(ta.size()));
     Table& cd = res.table("arch_time_cdf", "fraction of seeds with an arch by time t");
     cd.add("t_arch", "s").values = tt;
     cd.add("fraction", "1").values = fr;
@@ -960,13 +929,13 @@ void report_section(Result& res, const std::vector<SeedRun>& runs) {
                "first frame with half of the initiating disk's neighbours hot, minus its first hot frame, median (paper: 0.004 s)");
     res.scalar("arch_left_4ms_median", median(&SeedRun::arch_left_4ms), "1",
                "share of the first arch's disks still hot 4 ms after it spanned the width, median");
+    // Later arches above and below are 0 or 1, and NaN together (no frame 4 ms after the first).
     const auto above = per_seed(runs, &SeedRun::arch_above_later), below = per_seed(runs, &SeedRun::arch_below_later);
-    double both = 0, n_ok = 0;
-    for (std::size_t k = 0; k < above.size(); ++k)
-        if (std::isfinite(above[k])) { n_ok += 1; both += above[k] * below[k]; }
-    res.scalar("arch_above_later_fraction", share_finite(above, [](double y) { return y == 1.0; }), "1", "seeds with a later arch (after the first + 4 ms) more than arch_separation above the first");
-    res.scalar("arch_below_later_fraction", share_finite(below, [](double y) { return y == 1.0; }), "1", "the same below");
-    res.scalar("arch_above_and_below_fraction", n_ok > 0 ? both / n_ok : NAN, "1", "seeds with later arches both above and below");
+    const auto both = per_seed(runs, [](const SeedRun& r) { return r.arch_above_later * r.arch_below_later; });
+    auto one = [](double y) { return y == 1.0; };
+    res.scalar("arch_above_later_fraction", share_finite(above, one), "1", "seeds with a later arch (after the first + 4 ms) more than arch_separation above the first");
+    res.scalar("arch_below_later_fraction", share_finite(below, one), "1", "the same below");
+    res.scalar("arch_above_and_below_fraction", share_finite(both, one), "1", "seeds with later arches both above and below");
     res.scalar("plug_wall_load_median", median(&SeedRun::plug_wall_load), "1",
                "wall impulse on the arch's plug within 4 ms of the arch over the plug's weight times that time, median (1: the walls hold the plug)");
     const auto rel = per_seed(runs, [](const SeedRun& r) { return r.plug_wall_load / r.friction_share; });
@@ -1025,8 +994,11 @@ Result run(const RunContext& ctx) {
     res.scalar("n_seeds", double(s.n_seeds), "1", "independent runs");
     res.scalar("layers", std::ceil(double(s.n_particles) / (std::floor((s.L - s.d) / s.a + 1e-9) + 0.5)), "1",
                "rows of the initial lattice");
+    for (const FigureTable& f : runs.front().figure) {
+        Table& t = res.table(f.name, f.description);
+        for (std::size_t c = 0; c < f.columns.size(); ++c) t.add(f.columns[c], f.units[c]).values = f.values[c];
+    }
     report_relaxation(res, runs);
-    report_fig13(res, s, runs.front().figure);
     report_fig14_times(res, s, runs);
     report_fig14_fits(res, s, runs);
     report_seed_table(res, runs);

@@ -6,19 +6,11 @@
 #include <stdexcept>
 #include <tuple>
 
+#include "analysis/disjoint_sets.hpp"
+
 namespace granrepro {
 
 namespace {
-
-struct Dsu {
-    std::vector<int> up;
-    explicit Dsu(std::size_t n) : up(n) { std::iota(up.begin(), up.end(), 0); }
-    int find(int a) {
-        while (up[std::size_t(a)] != a) a = up[std::size_t(a)] = up[std::size_t(up[std::size_t(a)])];
-        return a;
-    }
-    void join(int a, int b) { up[std::size_t(find(a))] = find(b); }
-};
 
 struct Pair {
     double gap;
@@ -59,13 +51,13 @@ Crack find_crack(const std::vector<Vec2>& pos, const CrackSearch& s) {
     std::sort(pairs.begin(), pairs.end());
 
     auto seeded = [&] {
-        Dsu u(n + 2);
+        DisjointSets u(n + 2);
         for (std::size_t k = 0; k < s.min_below; ++k) u.join(order[k], bottom);
         for (std::size_t k = n - s.min_above; k < n; ++k) u.join(order[k], top);
         return u;
     };
     Crack c;
-    Dsu u = seeded();
+    DisjointSets u = seeded();
     std::size_t used = pairs.size();
     c.wider = true;
     c.opening = s.max_opening;
@@ -81,7 +73,7 @@ Crack find_crack(const std::vector<Vec2>& pos, const CrackSearch& s) {
         }
     }
     // The parts just below the opening: every pair narrower than the narrowest place joined.
-    Dsu parts = seeded();
+    DisjointSets parts = seeded();
     for (std::size_t k = 0; k < used; ++k) parts.join(pairs[k].i, pairs[k].j);
     c.side.assign(n, 0);
     for (std::size_t i = 0; i < n; ++i) {
