@@ -46,6 +46,7 @@
 #include "io/json_fields.hpp"
 #include "observables/collision_rate_fit.hpp"
 #include "observables/rate_histogram.hpp"
+#include "scenarios/ed_gas.hpp"
 #include "theory/kinetic_theory.hpp"
 
 namespace granrepro::experiments {
@@ -230,30 +231,14 @@ EquilibratedGas initial_gas(const ClusterSpec& s, std::uint64_t seed) {
     const std::vector<double> rad = s.radii(), mass = s.masses();
     RngStream rng(seed, 0);
     if (s.initial_positions == Start::lattice)
-        return equilibrated_lattice_gas(L, rad, mass, s.vbar, s.equilibration, rng);
+        return equilibrated_lattice_gas(L, maxwellian_velocities(mass, s.vbar, rng), rad, mass, s.vbar, s.equilibration);
     std::vector<Vec2> pos = random_positions(rad, L, L, true, true, rng);
-    std::vector<Vec2> vel = maxwellian_velocities(mass, s.vbar, rng);
-    EdConfig cfg;
-    cfg.lx = cfg.ly = L;
-    cfg.law.r = 1.0;
-    EdEngine eq(cfg, pos, vel, rad, mass);
-    equilibrate(eq, s.equilibration);
-    EquilibratedGas gas;
-    gas.collision_rate = eq.time() > 0 ? 2.0 * double(eq.total_collisions()) / double(mass.size()) / eq.time() : NAN;
-    gas.pos = eq.positions();
-    gas.vel = eq.velocities();
-    zero_momentum_and_scale(gas.vel, mass, s.vbar);
-    return gas;
+    return equilibrated_gas(L, pos, maxwellian_velocities(mass, s.vbar, rng), rad, mass, s.vbar, s.equilibration);
 }
 
 // The TCED gas at t = 0: Eq. (7) with pair rule tc_both.
 EdEngine tced_engine(const ClusterSpec& s, const EquilibratedGas& gas, bool tc_both) {
-    EdConfig cfg;
-    cfg.lx = cfg.ly = s.L();
-    cfg.law.r = s.r;
-    cfg.law.mu = s.mu;
-    cfg.law.beta0 = s.mu > 0 ? 0.0 : -1.0;
-    cfg.t_c = s.t_c;
+    EdConfig cfg = rough_disk_box(s.L(), s.r, s.mu, s.t_c);
     cfg.tc_both = tc_both;
     return EdEngine(cfg, gas.pos, gas.vel, s.radii(), s.masses());
 }

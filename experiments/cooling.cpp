@@ -35,6 +35,7 @@
 #include "observables/log_time_sampler.hpp"
 #include "observables/pair_correlation.hpp"
 #include "observables/structure_factor.hpp"
+#include "scenarios/ed_gas.hpp"
 #include "theory/kinetic_theory.hpp"
 
 namespace granrepro::experiments {
@@ -151,11 +152,10 @@ struct Trace {
     }
 };
 
-struct Setup {
-    std::vector<Vec2> pos, vel;
+// A seed's state at t = 0; its collision_rate is that of the second half of the equilibration.
+struct Setup : EquilibratedGas {
     std::vector<double> rad, mass;
-    double L = 0;              // box side [m]
-    double omega_measured = 0; // elastic collision rate per particle during equilibration [1/s]
+    double L = 0; // box side [m]
 };
 
 // Sample times: log-spaced K(t) samples, a2_samples evenly spaced in the a2 window, and the
@@ -301,38 +301,11 @@ Setup prepare(const CoolingSpec& c, std::uint64_t seed, long seed_index) {
     s.rad.assign(n, 0.5 * c.d);
     s.mass.assign(n, c.mass);
     RngStream rng(seed, setup_stream(seed_index));
-    std::vector<Vec2> pos = square_lattice_positions(n, s.L, s.L);
-    std::vector<Vec2> vel = initial_velocities(c, s.mass, rng);
-    zero_momentum_and_scale(vel, s.mass, c.vbar);
-    EdConfig cfg;
-    cfg.lx = cfg.ly = s.L;
-    cfg.law.r = 1.0;
-    EdEngine eng(cfg, pos, vel, s.rad, s.mass);
     // The first collisions after a lattice start are rarer than in equilibrium, so the
-    // equilibrium collision rate is measured over the second half of the equilibration only
-    // (the same total number of collisions, hence the same state at t = 0).
-    equilibrate(eng, 0.5 * c.equilibration);
-    const double t_half = eng.time();
-    const auto c_half = eng.total_collisions();
-    equilibrate(eng, 0.5 * c.equilibration);
-    const double dt = eng.time() - t_half;
-    s.omega_measured = dt > 0 ? 2.0 * double(eng.total_collisions() - c_half) / double(n) / dt : NAN;
-    s.pos = eng.positions();
-    s.vel = eng.velocities();
-    // Elastic equilibration conserves energy; rescale anyway so that v̄ at t = 0 is exactly the
-    // paper's (round-off only).
-    zero_momentum_and_scale(s.vel, s.mass, c.vbar);
+    // equilibrium collision rate is measured over the second half of the equilibration only.
+    static_cast<EquilibratedGas&>(s) =
+        equilibrated_lattice_gas(s.L, initial_velocities(c, s.mass, rng), s.rad, s.mass, c.vbar, c.equilibration, true);
     return s;
-}
-
-EdConfig ed_config(const CoolingSpec& c, double L) {
-    EdConfig cfg;
-    cfg.lx = cfg.ly = L;
-    cfg.law.r = c.r;
-    cfg.law.mu = c.mu;
-    cfg.law.beta0 = c.mu > 0 ? 0.0 : -1.0;
-    cfg.t_c = c.t_c;
-    return cfg;
 }
 
 DsmcConfig dsmc_config(const CoolingSpec& c, double L) {
@@ -359,7 +332,7 @@ Trace run_method(const RunContext& ctx, const CoolingSpec& c, const Setup& s, lo
     RunCheckpoint checkpoint(ctx, k == 0 ? method : method + "_" + std::to_string(k));
     SampledRun<Trace> run(checkpoint, kCoolingRunSchema, kCoolingRunSchemaVersion);
     if (is_ed) {
-        EdEngine eng(ed_config(c, s.L), s.pos, s.vel, s.rad, s.mass);
+        EdEngine eng(rough_disk_box(s.L, c.r, c.mu, c.t_c), s.pos, s.vel, s.rad, s.mass);
         return observe(c, s, eng, run);
     }
     DsmcConfig cfg = dsmc_config(c, s.L);
@@ -618,7 +591,7 @@ void add_setup(Result& res, const CoolingSpec& c, const Setup& s, const std::vec
     // last bit.
     const double s_star = 1 / theory::henderson_contact_value(c.rho);
     const double t0_printed = std::sqrt(M_PI) * c.d * s_star / (2 * (1 - r * r) * c.rho * c.vbar);
-    const double t0_measured_rate = 4 / ((1 - r * r) * s.omega_measured);
+    const double t0_measured_rate = 4 / ((1 - r * r) * s.collision_rate);
     res.scalar("N", double(s.pos.size()), "1", "number of disks");
     res.scalar("seeds", double(c.seeds), "1", "independent initial states (equilibration, ED and DSMC each)");
     double wall_ed = 0, wall_ds = 0;
@@ -630,7 +603,7 @@ void add_setup(Result& res, const CoolingSpec& c, const Setup& s, const std::vec
     res.scalar("box", s.L, "m", "side of the periodic box");
     res.scalar("t0_inv_eq19_printed", 1 / t0_printed, "1/s", "1/t0 from Eq. (19) as printed (sqrt(pi))");
     res.scalar("t0_inv_kinetic_theory", 1 / c.t0(), "1/s", "1/t0 = (1-r^2) omega_E / 4 with Henderson's g(d): sqrt(2 pi)");
-    res.scalar("omega_equilibration_over_enskog", s.omega_measured / c.omega_enskog(), "1",
+    res.scalar("omega_equilibration_over_enskog", s.collision_rate / c.omega_enskog(), "1",
                "elastic ED collision rate over the second half of the equilibration over the Enskog-Henderson rate");
     res.scalar("t0_inv_measured_rate", 1 / t0_measured_rate, "1/s", "1/t0 from the measured elastic collision rate");
 }

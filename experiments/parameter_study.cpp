@@ -31,6 +31,7 @@
 #include "harness/experiment.hpp"
 #include "harness/distributed_sweep.hpp"
 #include "harness/run_log.hpp"
+#include "scenarios/ed_gas.hpp"
 
 namespace granrepro::experiments {
 
@@ -92,15 +93,9 @@ Trace run_point(const ParameterStudySpec& s, const Point& pt, std::uint64_t seed
     const double L = s.box_over_d * s.d;
     const std::vector<double> rad(n, 0.5 * s.d), mass(n, s.mass);
     RngStream rng(seed, stream);
-    const EquilibratedGas gas = equilibrated_lattice_gas(L, rad, mass, s.vbar, s.equilibration, rng);
-
-    EdConfig cfg;
-    cfg.lx = cfg.ly = L;
-    cfg.law.r = pt.r;
-    cfg.law.mu = s.mu;
-    cfg.law.beta0 = s.mu > 0 ? 0.0 : -1.0;
-    cfg.t_c = pt.t_c;
-    EdEngine eng(cfg, gas.pos, gas.vel, rad, mass); // t = 0: dissipation switched on
+    const EquilibratedGas gas =
+        equilibrated_lattice_gas(L, maxwellian_velocities(mass, s.vbar, rng), rad, mass, s.vbar, s.equilibration);
+    EdEngine eng(rough_disk_box(L, pt.r, s.mu, pt.t_c), gas.pos, gas.vel, rad, mass); // t = 0: dissipation switched on
 
     Trace tr;
     auto sample = [&] {
