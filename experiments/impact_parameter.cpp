@@ -23,13 +23,14 @@
 #include "data/spec.hpp"
 #include "engines/ed/ed_engine.hpp"
 #include "engines/ed/ed_initial_states.hpp"
-#include "engines/ed3d/hard_sphere_gas.hpp"
 #include "experiments/work_limits.hpp"
 #include "harness/distributed_sweep.hpp"
 #include "harness/experiment.hpp"
 #include "io/json_fields.hpp"
 #include "observables/collisional_stress.hpp"
 #include "observables/impact_parameter_histogram.hpp"
+#include "scenarios/ed_gas.hpp"
+#include "scenarios/hard_sphere_lattice.hpp"
 #include "theory/kinetic_theory.hpp"
 
 namespace granrepro {
@@ -344,23 +345,11 @@ PointResult cooling_run(const ImpactSpec& s, EdEngine& e, double l, bool figure_
 // on a simple cubic lattice at packing fraction eta, Gaussian velocities of zero mean, about
 // equilibration_collisions per sphere as in Sec. 3, then elastic3d_collisions binned by b/d.
 PointResult run_3d(const ImpactSpec& s, std::uint64_t seed, std::size_t k) {
-    const long side = s.elastic3d_n_side;
-    const auto n3 = static_cast<std::size_t>(side * side * side);
     const int nb = s.n_bins;
-    const double box = std::cbrt(static_cast<double>(n3) * M_PI / 6 / s.elastic3d_packing[k]) * s.d;
     RngStream rng3(seed, 1000000 + k);
-    std::vector<Vec3> r, v;
-    Vec3 mean;
-    for (long a = 0; a < side; ++a)
-        for (long b = 0; b < side; ++b)
-            for (long c = 0; c < side; ++c) {
-                r.push_back({(a + 0.5) * box / side, (b + 0.5) * box / side, (c + 0.5) * box / side});
-                v.push_back({s.vbar * rng3.normal(), s.vbar * rng3.normal(), s.vbar * rng3.normal()});
-                mean += v.back();
-            }
-    for (Vec3& x : v) x -= mean * (1.0 / static_cast<double>(n3));
-    HardSphereGas3D g(r, v, s.d, box);
-    g.run_collisions(static_cast<std::uint64_t>(s.equilibration_collisions * static_cast<double>(n3) / 2.0 + 0.5));
+    HardSphereGas3D g = simple_cubic_gas(s.elastic3d_n_side, s.elastic3d_packing[k], s.d, s.vbar, rng3);
+    const auto n3 = static_cast<double>(g.positions().size());
+    g.run_collisions(static_cast<std::uint64_t>(s.equilibration_collisions * n3 / 2.0 + 0.5));
     std::vector<std::uint64_t> counts(static_cast<std::size_t>(nb), 0);
     g.run_collisions(static_cast<std::uint64_t>(s.elastic3d_collisions), [&](double x) {
         counts[std::min(static_cast<std::size_t>(nb) - 1, static_cast<std::size_t>(x * nb))] += 1;
@@ -376,12 +365,9 @@ nlohmann::json run_point(const ImpactSpec& s, std::uint64_t seed, std::size_t i)
     const bool inelastic = k < s.n_r();
     const double l = box_side(n, s.d, inelastic ? s.rho : s.elastic_densities[k - s.n_r()]);
     RngStream rng(seed, i);
-    EdConfig cfg;
-    cfg.lx = cfg.ly = l;
     // Smooth disks (mu = 0, beta0 = -1): Sec. 2.4 says DSMC's collision scheme "is identical
     // to the event driven procedure" with the tangential velocity unchanged, beta0 = -1.
-    cfg.law = RoughDiskCollision{inelastic ? s.restitutions[k] : 1.0, 0.0, -1.0, 0.4};
-    cfg.t_c = inelastic ? s.t_c : 0.0;
+    const EdConfig cfg = rough_disk_box(l, inelastic ? s.restitutions[k] : 1.0, 0.0, inelastic ? s.t_c : 0.0);
     const std::vector<double> rad(n, 0.5 * s.d), mass(n, s.m);
     EdEngine e(cfg, staggered_lattice(n, l, s.d), maxwellian_velocities(mass, s.vbar, rng), rad, mass);
     // Sec. 3: "first allowed to evolve with r = 1 for about 10 collisions per particle"; the
