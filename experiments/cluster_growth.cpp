@@ -155,12 +155,6 @@ CollisionRateFit fit(const RateHistogram& h, CollisionRateFit::Model m, double l
     }
 }
 
-std::string label(const char* prefix, double v) {
-    char buf[48];
-    std::snprintf(buf, sizeof buf, "%s%g", prefix, v);
-    return buf;
-}
-
 // The per-particle rates and counts of an instant fix everything else in it, so a resumed run
 // recomputes it identically.
 Instant make_instant(InstantRecord rec, const ClusterSpec& s) {
@@ -243,21 +237,6 @@ EdEngine tced_engine(const ClusterSpec& s, const EquilibratedGas& gas, bool tc_b
     return EdEngine(cfg, gas.pos, gas.vel, s.radii(), s.masses());
 }
 
-// The samples at t = 0 and the observer's state before the first collision.
-LoopState fresh_loop(const EdEngine& eng, std::size_t n) {
-    const EdKineticEnergy k0 = eng.kinetic_energy();
-    LoopState st;
-    st.ts = {0.0};
-    st.ks = {k0.total()};
-    st.kxs = {k0.kx};
-    st.kys = {k0.ky};
-    st.cns = st.ecns = st.fast_share = st.hot = {0.0};
-    st.last_t.assign(n, -INFINITY);
-    st.last_interval.assign(n, INFINITY);
-    st.fast.assign(n, 0);
-    return st;
-}
-
 // Eq. (7) per particle, from the records: was this collision within t_c of the particle's
 // previous one?
 void observe(LoopState& st, const CollisionRecord& c, double t_c) {
@@ -288,6 +267,16 @@ void record_sample(LoopState& st, const EdEngine& eng, double t, double t_c) {
     for (double iv : st.last_interval)
         if (iv <= t_c) ++hot;
     st.hot.push_back(double(hot) / double(n));
+}
+
+// The samples at t = 0 and the observer's state before the first collision.
+LoopState fresh_loop(const EdEngine& eng, std::size_t n, double t_c) {
+    LoopState st;
+    st.last_t.assign(n, -INFINITY);
+    st.last_interval.assign(n, INFINITY);
+    st.fast.assign(n, 0);
+    record_sample(st, eng, 0.0, t_c);
+    return st;
 }
 
 // At t = t_base 2^k: N_c over (t/2, t] from the counts now and at the previous instant t/2.
@@ -338,7 +327,7 @@ RunOutcome run_tced(const RunContext& ctx, const ClusterSpec& s, const Equilibra
     EdState saved;
     const bool resumed = run.resume(saved, st);
     EdEngine eng = resumed ? EdEngine(saved) : tced_engine(s, gas, tc_both);
-    if (!resumed) st = fresh_loop(eng, s.n());
+    if (!resumed) st = fresh_loop(eng, s.n(), s.t_c);
     const ProgressSlot slot(progress, -1); // the engine time is shown, the instants are ticked
     if (progress) progress->tick((run.next_sample() + m - 1) / m);
     bool advancing = false; // from a sample time's trigger to its sample: a runtime_error is the engine's
@@ -608,7 +597,7 @@ void report_poisson_falling(Result& res, const std::vector<Instant>& instants, d
 
 // P(N_c) at one instant with the fitted Eqs. (20)-(22), as Fig. 12 shows it.
 void fig12_histogram_table(Result& res, const Instant& in, std::size_t panel) {
-    Table& h = res.table("pnc_" + std::to_string(panel), "P(N_c) and the fitted Eqs. (20)-(22) at t = " + label("", in.t) + " s");
+    Table& h = res.table("pnc_" + std::to_string(panel), "P(N_c) and the fitted Eqs. (20)-(22) at t = " + number_text(in.t) + " s");
     std::vector<double> pp, pe, pw, pwt, pet;
     for (std::size_t b = 0; b < in.hist.centres.size(); ++b) {
         const double w = in.hist.edges[b + 1] - std::max(0.0, in.hist.edges[b]);
@@ -678,7 +667,7 @@ void fig12_panels(Result& res, const std::vector<Instant>& instants, const std::
         mt.push_back(in.t);
         mw.push_back(in.window);
         fig12_histogram_table(res, in, s);
-        fig12_panel_scalars(res, in, s < pcn.size() ? label("_cn", paper) : std::string("_last"));
+        fig12_panel_scalars(res, in, s < pcn.size() ? "_cn" + number_text(paper) : std::string("_last"));
     }
     // Created last: res.table() may move the tables created before.
     Table& meta = res.table("fig12_selection", "instants shown in Fig. 12: the paper's C/N and ours");
@@ -702,8 +691,8 @@ void report_cluster_centres(Result& res, const std::vector<double>& mt, const st
                "over the clustered snapshots (C/N >= 70): the lowest density rank (1-10) of the tenth of particles with the largest mean N_c");
     res.scalar("densest_tenth_Nc_over_mean_min", min_ratio, "1", "the smallest ratio of the densest tenth's mean N_c to the overall mean there");
     for (std::size_t k = 0; k < mt.size(); ++k) {
-        res.scalar("densest_tenth_Nc_over_mean" + label("_t", mt[k]), ratio[k], "1", "mean N_c of the densest tenth over the overall mean at this snapshot");
-        res.scalar("densest_tenth_rank_of_max_Nc" + label("_t", mt[k]), top[k], "1", "density rank (1-10) of the tenth with the largest mean N_c");
+        res.scalar("densest_tenth_Nc_over_mean_t" + number_text(mt[k]), ratio[k], "1", "mean N_c of the densest tenth over the overall mean at this snapshot");
+        res.scalar("densest_tenth_rank_of_max_Nc_t" + number_text(mt[k]), top[k], "1", "density rank (1-10) of the tenth with the largest mean N_c");
     }
 }
 
@@ -722,7 +711,7 @@ double at_cn(const std::vector<Instant>& instants, double cn, Get get) {
 
 void report_at_paper_cn(Result& res, const std::vector<Instant>& instants, const std::vector<double>& paper_cn) {
     for (double c : paper_cn) {
-        const std::string tag = label("_at_cn", c);
+        const std::string tag = "_at_cn" + number_text(c);
         res.scalar("chi" + tag, at_cn(instants, c, [](const Instant& in) { return in.poisson.value; }), "1", "Eq. (20) chi interpolated to the paper's C/N");
         res.scalar("A" + tag, at_cn(instants, c, [](const Instant& in) { return in.expo.value; }), "1/s", "Eq. (21) A interpolated to the paper's C/N");
         res.scalar("B" + tag, at_cn(instants, c, [](const Instant& in) { return in.power.value; }), "1/s", "Eq. (22) B interpolated to the paper's C/N");
@@ -812,7 +801,7 @@ void fig11(Result& res, const std::vector<Instant>& instants, const ClusterSpec&
         mt.push_back(in->t);
         mc.push_back(in->cn);
         Table& sn = res.table("snapshot_" + std::to_string(mt.size() - 1),
-                              "positions and N_c over the last t/2 at t = " + label("", in->t) + " s");
+                              "positions and N_c over the last t/2 at t = " + number_text(in->t) + " s");
         std::vector<double> x, y;
         for (const Vec2& q : in->pos) {
             x.push_back(q.x / s.d);

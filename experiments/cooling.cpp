@@ -177,12 +177,6 @@ std::vector<double> sample_times(const CoolingSpec& c) {
     return t;
 }
 
-bool is_snapshot(const std::vector<double>& snapshot_times, double t) {
-    for (double s : snapshot_times)
-        if (std::abs(s - t) < 1e-12) return true;
-    return false;
-}
-
 // a2 of the translational velocities (about their mean) and its standard error from the sample
 // variance of v^4 (independent particles).
 std::array<double, 2> sonine_a2(const std::vector<Vec2>& vel) {
@@ -273,7 +267,8 @@ Trace observe(const CoolingSpec& c, const Setup& s, Engine& eng, SampledRun<Trac
     run.run(eng, tr, trigger, [&hist](const CollisionRecord& col) { hist.add(col); },
             [&](long, double t) {
                 record_sample(tr, eng, t);
-                if (is_snapshot(c.snapshot_times, t)) record_snapshot(tr, eng.positions(), s.L, c.d);
+                const auto now = [t](double snap) { return std::abs(snap - t) < 1e-12; };
+                if (std::any_of(c.snapshot_times.begin(), c.snapshot_times.end(), now)) record_snapshot(tr, eng.positions(), s.L, c.d);
                 tr.pbd_counts.clear();
                 for (const auto& w : hist.counts()) tr.pbd_counts.push_back({w});
                 return false;
@@ -405,39 +400,48 @@ double ratio_at(const Trace& tr, double t0, double t) {
     return NAN;
 }
 
-// First time at which |y(t)| exceeds level, interpolated linearly in ln t between the samples
-// around the crossing; NaN if it never does.
-double first_exceeding(const std::vector<double>& t, const std::vector<double>& y, double level) {
-    for (std::size_t i = 1; i < t.size(); ++i)
-        if (std::abs(y[i]) > level && std::abs(y[i - 1]) <= level && t[i - 1] > 0) {
-            const double f = (level - std::abs(y[i - 1])) / (std::abs(y[i]) - std::abs(y[i - 1]));
-            return std::exp(std::log(t[i - 1]) + f * std::log(t[i] / t[i - 1]));
+// Eq. (18) at the sample times of a trace.
+std::vector<double> eq18_curve(const Trace& tr, double t0) {
+    std::vector<double> out;
+    for (double t : tr.t) out.push_back(eq18(t, t0));
+    return out;
+}
+
+// First t/t0 at which |k/ref - 1| exceeds level, interpolated linearly in ln t between the
+// samples around the crossing; NaN if it never does.
+double first_departure(const std::vector<double>& t, const std::vector<double>& k, const std::vector<double>& ref, double t0,
+                       double level) {
+    std::vector<double> x, y;
+    for (std::size_t i = 0; i < t.size() && i < k.size() && i < ref.size(); ++i) {
+        x.push_back(t[i] / t0);
+        y.push_back(std::abs(k[i] / ref[i] - 1));
+    }
+    for (std::size_t i = 1; i < x.size(); ++i)
+        if (y[i] > level && y[i - 1] <= level && x[i - 1] > 0) {
+            const double f = (level - y[i - 1]) / (y[i] - y[i - 1]);
+            return std::exp(std::log(x[i - 1]) + f * std::log(x[i] / x[i - 1]));
         }
     return NAN;
 }
 
 // Mean, maximum and minimum of a curve v(x) over lo <= x <= hi.
-double mean_over(const std::vector<double>& v, const std::vector<double>& x, double lo, double hi) {
-    double s = 0;
-    int n = 0;
+std::vector<double> over(const std::vector<double>& v, const std::vector<double>& x, double lo, double hi) {
+    std::vector<double> in;
     for (std::size_t i = 0; i < v.size(); ++i)
-        if (x[i] >= lo && x[i] <= hi) {
-            s += v[i];
-            ++n;
-        }
-    return n ? s / n : NAN;
+        if (x[i] >= lo && x[i] <= hi) in.push_back(v[i]);
+    return in;
+}
+double mean_over(const std::vector<double>& v, const std::vector<double>& x, double lo, double hi) {
+    const auto in = over(v, x, lo, hi);
+    return in.empty() ? NAN : std::accumulate(in.begin(), in.end(), 0.0) / double(in.size());
 }
 double max_over(const std::vector<double>& v, const std::vector<double>& x, double lo, double hi) {
-    double m = -INFINITY;
-    for (std::size_t i = 0; i < v.size(); ++i)
-        if (x[i] >= lo && x[i] <= hi) m = std::max(m, v[i]);
-    return m;
+    const auto in = over(v, x, lo, hi);
+    return std::accumulate(in.begin(), in.end(), -HUGE_VAL, [](double a, double b) { return std::max(a, b); });
 }
 double min_over(const std::vector<double>& v, const std::vector<double>& x, double lo, double hi) {
-    double m = INFINITY;
-    for (std::size_t i = 0; i < v.size(); ++i)
-        if (x[i] >= lo && x[i] <= hi) m = std::min(m, v[i]);
-    return m;
+    const auto in = over(v, x, lo, hi);
+    return std::accumulate(in.begin(), in.end(), HUGE_VAL, [](double a, double b) { return std::min(a, b); });
 }
 
 // Mean over 1 <= k <= k_max of ln(S_a/S_b), or of |ln(S_a/S_b)| (shells where both are positive).
@@ -473,12 +477,6 @@ double bump_contrast(const std::vector<double>& S, const std::vector<double>& k,
     const double lo = mean_over(S, k, 0.75 * kc - 2, 0.75 * kc + 2);
     const double hi = 1.25 * kc + 2 <= kmax ? mean_over(S, k, 1.25 * kc - 2, 1.25 * kc + 2) : NAN;
     return std::isfinite(hi) ? centre / std::sqrt(lo * hi) : centre / lo;
-}
-
-std::string time_label(double t) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "t%g", t);
-    return buf;
 }
 
 // Early collision rate: C/N at the sample nearest t = 0.25 t0 over what Haff's law with the
@@ -562,7 +560,7 @@ void add_seed_tables(Result& res, const std::vector<Trace>& trs, const std::vect
         {
             Table& t = res.table(std::string("sk_") + name + "_seed" + std::to_string(k), std::string("S(k) at the snapshot times, seed index ") + std::to_string(k) + ", " + name);
             t.add("k", "1").values = tr.S_k;
-            for (std::size_t i = 0; i < tr.snaps.size(); ++i) t.add("S_" + time_label(snaps[i]), "1").values = tr.snaps[i].S;
+            for (std::size_t i = 0; i < tr.snaps.size(); ++i) t.add("S_t" + number_text(snaps[i]), "1").values = tr.snaps[i].S;
         }
         Table& e = res.table(std::string("energy_") + name + "_seed" + std::to_string(k), std::string("K/K0 against t, seed index ") + std::to_string(k) + ", " + name);
         e.add("t", "s").values = tr.t;
@@ -626,21 +624,18 @@ void add_equilibrated_a2(Result& res, const CoolingSpec& c, std::uint64_t seed, 
 void add_energy_table(Result& res, const Trace& tr, double t0, const char* name) {
     Table& t = res.table(std::string("energy_") + name, std::string("K/K0 and a2 against t/t0, ") + name);
     const double k0 = tr.kx.front() + tr.ky.front() + tr.krot.front();
-    std::vector<double> tt0, e18, kx, ky, kr;
-    for (std::size_t i = 0; i < tr.t.size(); ++i) {
-        tt0.push_back(tr.t[i] / t0);
-        e18.push_back(eq18(tr.t[i], t0));
-        kx.push_back(tr.kx[i] / k0);
-        ky.push_back(tr.ky[i] / k0);
-        kr.push_back(tr.krot[i] / k0);
-    }
+    const auto over_by = [](const std::vector<double>& v, double by) {
+        std::vector<double> out;
+        for (double x : v) out.push_back(x / by);
+        return out;
+    };
     t.add("t", "s").values = tr.t;
-    t.add("t_over_t0", "1").values = tt0;
+    t.add("t_over_t0", "1").values = over_by(tr.t, t0);
     t.add("K_over_K0", "1").values = k_ratio(tr);
-    t.add("Kx_over_K0", "1").values = kx;
-    t.add("Ky_over_K0", "1").values = ky;
-    t.add("Krot_over_K0", "1").values = kr;
-    t.add("eq18", "1").values = e18;
+    t.add("Kx_over_K0", "1").values = over_by(tr.kx, k0);
+    t.add("Ky_over_K0", "1").values = over_by(tr.ky, k0);
+    t.add("Krot_over_K0", "1").values = over_by(tr.krot, k0);
+    t.add("eq18", "1").values = eq18_curve(tr, t0);
     t.add("C_over_N", "1").values = tr.cn;
     t.add("elastic_C_over_N", "1").values = tr.elastic_cn;
     t.add("a2", "1").values = tr.a2;
@@ -664,15 +659,7 @@ void add_ed_cooling(Result& res, const CoolingSpec& c, const std::vector<Trace>&
     // Departure from homogeneous cooling (Sec. 3.1: "at t/t0 ≈ 2 substantial deviations"): the
     // first t/t0 where the ED K(t) leaves Eq. (18) by more than departure_level, per seed.
     std::vector<double> dep;
-    for (const Trace& tr : eds) {
-        const auto k = k_ratio(tr);
-        std::vector<double> x, y;
-        for (std::size_t i = 0; i < tr.t.size(); ++i) {
-            x.push_back(tr.t[i] / t0);
-            y.push_back(k[i] / eq18(tr.t[i], t0) - 1);
-        }
-        dep.push_back(first_exceeding(x, y, c.departure_level));
-    }
+    for (const Trace& tr : eds) dep.push_back(first_departure(tr.t, k_ratio(tr), eq18_curve(tr, t0), t0, c.departure_level));
     const auto ms = mean_sd(dep);
     res.scalar("ed_departure_t_over_t0", ms[0], "1", "first t/t0 with |K_ED/K_18 - 1| > departure_level, mean over seeds");
     res.scalar("ed_departure_t_over_t0_sd", ms[1], "1", "its seed standard deviation");
@@ -687,8 +674,8 @@ void add_impact_parameter(Result& res, const Trace& ed) {
         Table& t = res.table("impact_parameter_ed", "P(b/d) of the ED run per time window (columns by window start)");
         t.add("b_over_d", "1").values = ed.pbd_centres;
         for (const auto& w : ed.pbd) {
-            t.add("P_" + time_label(w.t_begin), "1").values = w.p;
-            t.add("err_" + time_label(w.t_begin), "1").values = w.error;
+            t.add("P_t" + number_text(w.t_begin), "1").values = w.p;
+            t.add("err_t" + number_text(w.t_begin), "1").values = w.error;
         }
     }
     Table& wt = res.table("impact_parameter_windows", "time windows of P(b/d): [t_begin, t_end)");
@@ -709,11 +696,11 @@ void add_structure_tables(Result& res, const Trace& tr, const std::vector<double
     {
         Table& g = res.table(std::string("gr_") + name, std::string("g(r/d) at the snapshot times, ") + name);
         g.add("r_over_d", "1").values = tr.g_r;
-        for (std::size_t i = 0; i < tr.snaps.size(); ++i) g.add("g_" + time_label(snaps[i]), "1").values = tr.snaps[i].g;
+        for (std::size_t i = 0; i < tr.snaps.size(); ++i) g.add("g_t" + number_text(snaps[i]), "1").values = tr.snaps[i].g;
     }
     Table& sk = res.table(std::string("sk_") + name, std::string("S(k), k = l/lambda, at the snapshot times, ") + name);
     sk.add("k", "1").values = tr.S_k;
-    for (std::size_t i = 0; i < tr.snaps.size(); ++i) sk.add("S_" + time_label(snaps[i]), "1").values = tr.snaps[i].S;
+    for (std::size_t i = 0; i < tr.snaps.size(); ++i) sk.add("S_t" + number_text(snaps[i]), "1").values = tr.snaps[i].S;
     sk.add("S_equilibrium", "1").values = std::vector<double>(tr.S_k.size(), theory::hard_disk_structure_factor_zero(rho));
 }
 
@@ -804,16 +791,7 @@ void add_ed_dsmc_energy(Result& res, const std::vector<Trace>& eds, const std::v
     res.scalar("dsmc_over_ed_t0", ratio_at(ds, t0, t0) / ratio_at(ed, t0, t0), "1", "K_DSMC/K_ED at t = t0");
     res.scalar("dsmc_over_ed_5t0", ratio_at(ds, t0, 5 * t0) / ratio_at(ed, t0, 5 * t0), "1", "K_DSMC/K_ED at t = 5 t0");
     std::vector<double> split;
-    for (std::size_t k = 0; k < eds.size(); ++k) {
-        const Trace &a = eds[k], &b = dss[k];
-        const auto ka = k_ratio(a), kb = k_ratio(b);
-        std::vector<double> x, y;
-        for (std::size_t i = 0; i < a.t.size() && i < b.t.size(); ++i) {
-            x.push_back(a.t[i] / t0);
-            y.push_back(kb[i] / ka[i] - 1);
-        }
-        split.push_back(first_exceeding(x, y, level));
-    }
+    for (std::size_t k = 0; k < eds.size(); ++k) split.push_back(first_departure(eds[k].t, k_ratio(dss[k]), k_ratio(eds[k]), t0, level));
     const auto ms = mean_sd(split);
     res.scalar("dsmc_ed_split_t_over_t0", ms[0], "1", "first t/t0 with |K_DSMC/K_ED - 1| > departure_level, mean over seeds");
     res.scalar("dsmc_ed_split_t_over_t0_sd", ms[1], "1", "its seed standard deviation");
@@ -821,18 +799,29 @@ void add_ed_dsmc_energy(Result& res, const std::vector<Trace>& eds, const std::v
 
 // Fig. 7, DSMC against ED: agreement of S(k) at small k. Per seed: m = mean over
 // 1 <= k <= sk_k_max of ln(S_DSMC/S_ED) at the last snapshot (and at 20 s); then mean and
-// scatter over seeds.
+// scatter over seeds, and a table of the seeds.
 void add_sk_agreement(Result& res, const std::vector<Trace>& eds, const std::vector<Trace>& dss, const std::vector<double>& snaps, double k_small) {
     const auto i20 = snapshot_20s(snaps);
-    std::vector<double> m_last, m_20, abs_last, d_change;
+    std::vector<double> idx, e20, elast, d20, dlast, m_last, m_20, abs_last, d_change;
     for (std::size_t k = 0; k < eds.size(); ++k) {
         const Trace &a = eds[k], &b = dss[k];
+        idx.push_back(double(k));
+        e20.push_back(i20 ? small_k_S(a, a.snaps[*i20], k_small) : NAN);
+        d20.push_back(i20 ? small_k_S(b, b.snaps[*i20], k_small) : NAN);
+        elast.push_back(small_k_S(a, a.snaps.back(), k_small));
+        dlast.push_back(small_k_S(b, b.snaps.back(), k_small));
+        d_change.push_back(dlast.back() / d20.back() - 1);
         m_last.push_back(mean_log_ratio(b.snaps.back().S, a.snaps.back().S, a.S_k, k_small));
         abs_last.push_back(mean_log_ratio(a.snaps.back().S, b.snaps.back().S, a.S_k, k_small, true));
         if (i20) m_20.push_back(mean_log_ratio(b.snaps[*i20].S, a.snaps[*i20].S, a.S_k, k_small));
-        const double s20 = i20 ? small_k_S(b, b.snaps[*i20], k_small) : NAN;
-        d_change.push_back(small_k_S(b, b.snaps.back(), k_small) / s20 - 1);
     }
+    Table& t = res.table("sk_seeds", "per seed: mean S(1 <= k <= sk_k_max) of ED and DSMC at 20 s and at the last snapshot, and the mean ln ratio");
+    t.add("seed_index", "1").values = idx;
+    t.add("S_ed_20s", "1").values = e20;
+    t.add("S_ed_last", "1").values = elast;
+    t.add("S_dsmc_20s", "1").values = d20;
+    t.add("S_dsmc_last", "1").values = dlast;
+    t.add("mean_ln_ratio_last", "1").values = m_last;
     const auto ml = mean_sd(m_last);
     res.scalar("Sk_dsmc_over_ed_log", ml[0], "1", "ln(S_DSMC/S_ED) averaged over 1 <= k <= sk_k_max at the last snapshot, mean over seeds");
     res.scalar("Sk_dsmc_over_ed_log_sd", ml[1], "1", "its seed standard deviation");
@@ -871,27 +860,6 @@ void add_cell_imprint(Result& res, const CoolingSpec& c, const Setup& s, const s
     res.scalar("dsmc_Sk_cell_imprint_over_ed", mean_sd(imprint)[0] / mean_sd(imprint_ed)[0], "1", "DSMC's contrast at the cell shell over ED's there (1: no imprint)");
 }
 
-void add_sk_seed_table(Result& res, const std::vector<Trace>& eds, const std::vector<Trace>& dss, const std::vector<double>& snaps, double k_small) {
-    const auto i20 = snapshot_20s(snaps);
-    std::vector<double> idx, e20, elast, d20, dlast, m_last;
-    for (std::size_t k = 0; k < eds.size(); ++k) {
-        const Trace &a = eds[k], &b = dss[k];
-        idx.push_back(double(k));
-        e20.push_back(i20 ? small_k_S(a, a.snaps[*i20], k_small) : NAN);
-        d20.push_back(i20 ? small_k_S(b, b.snaps[*i20], k_small) : NAN);
-        elast.push_back(small_k_S(a, a.snaps.back(), k_small));
-        dlast.push_back(small_k_S(b, b.snaps.back(), k_small));
-        m_last.push_back(mean_log_ratio(b.snaps.back().S, a.snaps.back().S, a.S_k, k_small));
-    }
-    Table& t = res.table("sk_seeds", "per seed: mean S(1 <= k <= sk_k_max) of ED and DSMC at 20 s and at the last snapshot, and the mean ln ratio");
-    t.add("seed_index", "1").values = idx;
-    t.add("S_ed_20s", "1").values = e20;
-    t.add("S_ed_last", "1").values = elast;
-    t.add("S_dsmc_20s", "1").values = d20;
-    t.add("S_dsmc_last", "1").values = dlast;
-    t.add("mean_ln_ratio_last", "1").values = m_last;
-}
-
 // Figs. 2, 6 and 7 of DSMC, and DSMC against ED.
 void add_dsmc(Result& res, const CoolingSpec& c, const Setup& s, const std::vector<Trace>& eds, const std::vector<Trace>& dss) {
     const Trace& ds = dss.front();
@@ -908,7 +876,6 @@ void add_dsmc(Result& res, const CoolingSpec& c, const Setup& s, const std::vect
                "g near contact over g at 2.5-5 d, last snapshot, DSMC");
     add_sk_agreement(res, eds, dss, snaps, k_small);
     add_cell_imprint(res, c, s, eds, dss);
-    add_sk_seed_table(res, eds, dss, snaps, k_small);
     res.scalar("dsmc_Sk_small_k_growth", small_k_S(ds, ds.snaps.back(), k_small) / small_k_S(ds, ds.snaps.front(), k_small), "1",
                "mean S(k <= sk_k_max) at the last snapshot over that at t = 0, DSMC, first seed");
     res.scalar("dsmc_Sk_growth_over_equilibrium", small_k_S(ds, ds.snaps.back(), k_small) / theory::hard_disk_structure_factor_zero(c.rho), "1",
