@@ -25,7 +25,6 @@
 #include <algorithm>
 #include <cmath>
 #include <gsl/gsl_fit.h>
-#include <gsl/gsl_sort.h>
 #include <gsl/gsl_statistics_double.h>
 #include <mutex>
 #include <optional>
