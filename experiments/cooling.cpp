@@ -268,7 +268,8 @@ Trace observe(const CoolingSpec& c, const Setup& s, Engine& eng, SampledRun<Trac
             [&](long, double t) {
                 record_sample(tr, eng, t);
                 const auto now = [t](double snap) { return std::abs(snap - t) < 1e-12; };
-                if (std::any_of(c.snapshot_times.begin(), c.snapshot_times.end(), now)) record_snapshot(tr, eng.positions(), s.L, c.d);
+                if (std::any_of(c.snapshot_times.begin(), c.snapshot_times.end(), now))
+                    record_snapshot(tr, eng.positions(), s.L, c.d);
                 tr.pbd_counts.clear();
                 for (const auto& w : hist.counts()) tr.pbd_counts.push_back({w});
                 return false;
@@ -409,8 +410,8 @@ std::vector<double> eq18_curve(const Trace& tr, double t0) {
 
 // First t/t0 at which |k/ref - 1| exceeds level, interpolated linearly in ln t between the
 // samples around the crossing; NaN if it never does.
-double first_departure(const std::vector<double>& t, const std::vector<double>& k, const std::vector<double>& ref, double t0,
-                       double level) {
+double first_departure(const std::vector<double>& t, const std::vector<double>& k, const std::vector<double>& ref,
+                       double t0, double level) {
     std::vector<double> x, y;
     for (std::size_t i = 0; i < t.size() && i < k.size() && i < ref.size(); ++i) {
         x.push_back(t[i] / t0);
@@ -465,6 +466,13 @@ std::array<double, 2> mean_sd(const std::vector<double>& v) {
     double s = 0;
     for (double x : v) s += (x - m) * (x - m);
     return {m, v.size() > 1 ? std::sqrt(s / double(v.size() - 1)) : NAN};
+}
+
+// The mean over seeds of v as `name`, and its seed standard deviation as name_sd.
+void add_mean_sd(Result& res, const std::string& name, const std::vector<double>& v, const std::string& what) {
+    const auto ms = mean_sd(v);
+    res.scalar(name, ms[0], "1", what);
+    res.scalar(name + "_sd", ms[1], "1", "its seed standard deviation");
 }
 
 // A bump of S(k) at shell kc (the DSMC cell lattice, box/cell, folded into the FFT range by the
@@ -659,10 +667,9 @@ void add_ed_cooling(Result& res, const CoolingSpec& c, const std::vector<Trace>&
     // Departure from homogeneous cooling (Sec. 3.1: "at t/t0 ≈ 2 substantial deviations"): the
     // first t/t0 where the ED K(t) leaves Eq. (18) by more than departure_level, per seed.
     std::vector<double> dep;
-    for (const Trace& tr : eds) dep.push_back(first_departure(tr.t, k_ratio(tr), eq18_curve(tr, t0), t0, c.departure_level));
-    const auto ms = mean_sd(dep);
-    res.scalar("ed_departure_t_over_t0", ms[0], "1", "first t/t0 with |K_ED/K_18 - 1| > departure_level, mean over seeds");
-    res.scalar("ed_departure_t_over_t0_sd", ms[1], "1", "its seed standard deviation");
+    for (const Trace& tr : eds)
+        dep.push_back(first_departure(tr.t, k_ratio(tr), eq18_curve(tr, t0), t0, c.departure_level));
+    add_mean_sd(res, "ed_departure_t_over_t0", dep, "first t/t0 with |K_ED/K_18 - 1| > departure_level, mean over seeds");
     res.scalar("a2_van_noije_ernst", theory::van_noije_ernst_a2(c.r, 2), "1", "van Noije-Ernst a2 of the 2D HCS at this r (first Sonine approximation)");
     hcs_a2(res, eds, c, "ed");
 }
@@ -768,9 +775,8 @@ void add_ed_sk(Result& res, const std::vector<Trace>& eds, const std::vector<dou
                "the same at t = 0: below 1 where the long waves have not forgotten the lattice start");
     res.scalar("ed_Sk_small_k_growth", small_k_S(ed, ed.snaps.back(), k_small) / small_k_S(ed, ed.snaps.front(), k_small), "1",
                "mean S(k <= sk_k_max) at the last snapshot over that at t = 0 (lattice leftover), ED, first seed");
-    const auto ms = mean_sd(change);
-    res.scalar("ed_Sk_change_after_20s", ms[0], "1", "relative change of mean S(k <= sk_k_max) from t = 20 s to the last snapshot, ED, mean over seeds");
-    res.scalar("ed_Sk_change_after_20s_sd", ms[1], "1", "its seed standard deviation");
+    add_mean_sd(res, "ed_Sk_change_after_20s", change,
+                "relative change of mean S(k <= sk_k_max) from t = 20 s to the last snapshot, ED, mean over seeds");
     res.scalar("ed_Sk_log_seed_sd", mean_sd(lns)[1], "1",
                "seed standard deviation of ln(mean S_ED(k <= sk_k_max)) at the last snapshot: the run-to-run scatter of one run");
 }
@@ -791,10 +797,9 @@ void add_ed_dsmc_energy(Result& res, const std::vector<Trace>& eds, const std::v
     res.scalar("dsmc_over_ed_t0", ratio_at(ds, t0, t0) / ratio_at(ed, t0, t0), "1", "K_DSMC/K_ED at t = t0");
     res.scalar("dsmc_over_ed_5t0", ratio_at(ds, t0, 5 * t0) / ratio_at(ed, t0, 5 * t0), "1", "K_DSMC/K_ED at t = 5 t0");
     std::vector<double> split;
-    for (std::size_t k = 0; k < eds.size(); ++k) split.push_back(first_departure(eds[k].t, k_ratio(dss[k]), k_ratio(eds[k]), t0, level));
-    const auto ms = mean_sd(split);
-    res.scalar("dsmc_ed_split_t_over_t0", ms[0], "1", "first t/t0 with |K_DSMC/K_ED - 1| > departure_level, mean over seeds");
-    res.scalar("dsmc_ed_split_t_over_t0_sd", ms[1], "1", "its seed standard deviation");
+    for (std::size_t k = 0; k < eds.size(); ++k)
+        split.push_back(first_departure(eds[k].t, k_ratio(dss[k]), k_ratio(eds[k]), t0, level));
+    add_mean_sd(res, "dsmc_ed_split_t_over_t0", split, "first t/t0 with |K_DSMC/K_ED - 1| > departure_level, mean over seeds");
 }
 
 // Fig. 7, DSMC against ED: agreement of S(k) at small k. Per seed: m = mean over
@@ -822,21 +827,13 @@ void add_sk_agreement(Result& res, const std::vector<Trace>& eds, const std::vec
     t.add("S_dsmc_20s", "1").values = d20;
     t.add("S_dsmc_last", "1").values = dlast;
     t.add("mean_ln_ratio_last", "1").values = m_last;
-    const auto ml = mean_sd(m_last);
-    res.scalar("Sk_dsmc_over_ed_log", ml[0], "1", "ln(S_DSMC/S_ED) averaged over 1 <= k <= sk_k_max at the last snapshot, mean over seeds");
-    res.scalar("Sk_dsmc_over_ed_log_sd", ml[1], "1", "its seed standard deviation");
-    res.scalar("Sk_dsmc_over_ed_factor", std::exp(ml[0]), "1", "exp of Sk_dsmc_over_ed_log: DSMC's S(k <= sk_k_max) in units of ED's");
-    if (!m_20.empty()) {
-        const auto m2 = mean_sd(m_20);
-        res.scalar("Sk_dsmc_over_ed_log_20s", m2[0], "1", "the same at t = 20 s");
-        res.scalar("Sk_dsmc_over_ed_log_20s_sd", m2[1], "1", "its seed standard deviation");
-    }
+    add_mean_sd(res, "Sk_dsmc_over_ed_log", m_last, "ln(S_DSMC/S_ED) averaged over 1 <= k <= sk_k_max at the last snapshot, mean over seeds");
+    res.scalar("Sk_dsmc_over_ed_factor", std::exp(mean_sd(m_last)[0]), "1", "exp of Sk_dsmc_over_ed_log: DSMC's S(k <= sk_k_max) in units of ED's");
+    if (!m_20.empty()) add_mean_sd(res, "Sk_dsmc_over_ed_log_20s", m_20, "the same at t = 20 s");
     res.scalar("Sk_ed_dsmc_mean_abs_log_ratio", mean_sd(abs_last)[0], "1",
                "mean |ln(S_ED/S_DSMC)| over 1 <= k <= sk_k_max at the last snapshot, mean over seeds");
-    const auto dc = mean_sd(d_change);
-    res.scalar("dsmc_Sk_change_after_20s", dc[0], "1",
-               "relative change of mean S(k <= sk_k_max) from t = 20 s to the last snapshot, DSMC, mean over seeds");
-    res.scalar("dsmc_Sk_change_after_20s_sd", dc[1], "1", "its seed standard deviation");
+    add_mean_sd(res, "dsmc_Sk_change_after_20s", d_change,
+                "relative change of mean S(k <= sk_k_max) from t = 20 s to the last snapshot, DSMC, mean over seeds");
 }
 
 // Fig. 7, the DSMC cell lattice's imprint on S(k): the bump of S at the cell shell, DSMC against
