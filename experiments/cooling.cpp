@@ -425,7 +425,7 @@ double first_departure(const std::vector<double>& t, const std::vector<double>& 
     return NAN;
 }
 
-// Mean, maximum and minimum of a curve v(x) over lo <= x <= hi.
+// The values of a curve v(x) over lo <= x <= hi, and their mean, maximum and minimum.
 std::vector<double> over(const std::vector<double>& v, const std::vector<double>& x, double lo, double hi) {
     std::vector<double> in;
     for (std::size_t i = 0; i < v.size(); ++i)
