@@ -24,7 +24,6 @@
 // per-collision bookkeeping (1e8 collisions at paper scale).
 #include <algorithm>
 #include <cmath>
-#include <gsl/gsl_fit.h>
 #include <gsl/gsl_statistics_double.h>
 #include <mutex>
 #include <optional>
@@ -476,16 +475,8 @@ std::vector<double> fig10_table(Result& res, const Samples& st, double t0, doubl
 
 // How K(t) departs from homogeneous cooling: Eq. (18) early, the slopes later.
 void fig10_slopes(Result& res, const std::vector<double>& ts, const std::vector<double>& kk, double t0, int m, double late_from) {
-    // Early cooling: Eq. (18) fitted over t <= t0 (1/sqrt(K/K0) - 1 = t/t0, a line through 0).
-    std::vector<double> x, y;
-    for (std::size_t i = 1; i < ts.size(); ++i)
-        if (ts[i] <= t0) {
-            x.push_back(ts[i]);
-            y.push_back(1 / std::sqrt(kk[i]) - 1);
-        }
-    double c1 = NAN, cov = 0, ss = 0;
-    if (x.size() >= 2) gsl_fit_mul(x.data(), 1, y.data(), 1, x.size(), &c1, &cov, &ss);
-    res.scalar("t0_fit_over_kinetic", c1 * t0, "1", "1/t0 fitted to K(t) over t <= t0 (Eq. 18) over the kinetic-theory value");
+    // Early cooling: Eq. (18) fitted over t <= t0.
+    res.scalar("t0_fit_over_kinetic", fit_haff_inv_t0(ts, kk, t0) * t0, "1", "1/t0 fitted to K(t) over t <= t0 (Eq. 18) over the kinetic-theory value");
     // Steepest local slope d ln K / d ln t (over one octave) before late_slope_from: Eq. (18)
     // tends to -2 only for t >> t0, while clustering sets in at a few t0.
     double steepest = 0;

@@ -15,12 +15,12 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
-#include <gsl/gsl_fit.h>
 #include <numeric>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "analysis/curve_analysis.hpp"
 #include "core/rng_stream.hpp"
 #include "data/spec.hpp"
 #include "engines/dsmc/dsmc_engine.hpp"
@@ -496,20 +496,6 @@ double rate_over_enskog(const Trace& tr, double t0, double omega) {
     return tr.cn[best] / theory::haff_collisions_per_particle(tr.t[best], t0, omega);
 }
 
-// Eq. (18) fitted over t <= t0 (1/sqrt(K/K0) - 1 = t/t0, a line through 0): the fitted 1/t0 [1/s].
-double fit_inv_t0(const Trace& tr, double t0) {
-    const auto k = k_ratio(tr);
-    std::vector<double> x, y;
-    for (std::size_t i = 0; i < tr.t.size(); ++i)
-        if (tr.t[i] > 0 && tr.t[i] <= t0) {
-            x.push_back(tr.t[i]);
-            y.push_back(1 / std::sqrt(k[i]) - 1);
-        }
-    double c1 = NAN, cov = 0, ss = 0;
-    if (x.size() >= 2) gsl_fit_mul(x.data(), 1, y.data(), 1, x.size(), &c1, &cov, &ss);
-    return c1;
-}
-
 // Grazing over central collisions: mean P(b/d) over b/d > 0.8 against b/d < 0.2.
 double grazing_ratio(const ImpactParameterHistogram::Window& w, const std::vector<double>& centres) {
     return mean_over(w.p, centres, 0.8, 1.0) / mean_over(w.p, centres, 0.0, 0.2);
@@ -555,7 +541,7 @@ void add_dsmc_kinetics(Result& res, const std::vector<Trace>& dss, const Cooling
     const double t0 = c.t0();
     const Trace& ds = dss.front();
     res.scalar("dsmc_rate_over_enskog_early", rate_over_enskog(ds, t0, c.omega_enskog()), "1", "C/N at t = 0.25 t0 over Haff's law with the Enskog rate, DSMC");
-    res.scalar("t0_fit_over_kinetic_dsmc", fit_inv_t0(ds, t0) * t0, "1", "1/t0 fitted to the DSMC K(t) over t <= t0 (Eq. 18) over the kinetic-theory 1/t0");
+    res.scalar("t0_fit_over_kinetic_dsmc", fit_haff_inv_t0(ds.t, k_ratio(ds), t0) * t0, "1", "1/t0 fitted to the DSMC K(t) over t <= t0 (Eq. 18) over the kinetic-theory 1/t0");
     res.scalar("dsmc_over_eq18_2t0", ratio_at(ds, t0, 2 * t0), "1", "K/K_18 at t = 2 t0, DSMC");
     hcs_a2(res, dss, c, "dsmc");
 }
@@ -655,7 +641,7 @@ void add_energy_table(Result& res, const Trace& tr, double t0, const char* name)
 void add_ed_cooling(Result& res, const CoolingSpec& c, const std::vector<Trace>& eds) {
     const Trace& ed = eds.front();
     const double t0 = c.t0();
-    const double inv_t0_fit = fit_inv_t0(ed, t0);
+    const double inv_t0_fit = fit_haff_inv_t0(ed.t, k_ratio(ed), t0);
     res.scalar("t0_inv_fit_ed", inv_t0_fit, "1/s", "1/t0 fitted to the ED K(t) over t <= t0 (Eq. 18)");
     res.scalar("t0_fit_over_kinetic_ed", inv_t0_fit * t0, "1", "fitted over kinetic-theory 1/t0, ED");
     res.scalar("ed_rate_over_enskog_early", rate_over_enskog(ed, t0, c.omega_enskog()), "1", "C/N at t = 0.25 t0 over Haff's law with the Enskog rate, ED");
