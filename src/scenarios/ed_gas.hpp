@@ -5,7 +5,6 @@
 #pragma once
 #include <vector>
 
-#include "core/rng_stream.hpp"
 #include "core/vec2.hpp"
 #include "engines/ed/ed_config.hpp"
 
