@@ -24,8 +24,6 @@
 // per-collision bookkeeping (1e8 collisions at paper scale).
 #include <algorithm>
 #include <cmath>
-#include <gsl/gsl_fit.h>
-#include <gsl/gsl_sort.h>
 #include <gsl/gsl_statistics_double.h>
 #include <mutex>
 #include <optional>
@@ -46,6 +44,7 @@
 #include "io/json_fields.hpp"
 #include "observables/collision_rate_fit.hpp"
 #include "observables/rate_histogram.hpp"
+#include "scenarios/ed_gas.hpp"
 #include "theory/kinetic_theory.hpp"
 
 namespace granrepro::experiments {
@@ -154,12 +153,6 @@ CollisionRateFit fit(const RateHistogram& h, CollisionRateFit::Model m, double l
     }
 }
 
-std::string label(const char* prefix, double v) {
-    char buf[48];
-    std::snprintf(buf, sizeof buf, "%s%g", prefix, v);
-    return buf;
-}
-
 // The per-particle rates and counts of an instant fix everything else in it, so a resumed run
 // recomputes it identically.
 Instant make_instant(InstantRecord rec, const ClusterSpec& s) {
@@ -230,47 +223,16 @@ EquilibratedGas initial_gas(const ClusterSpec& s, std::uint64_t seed) {
     const std::vector<double> rad = s.radii(), mass = s.masses();
     RngStream rng(seed, 0);
     if (s.initial_positions == Start::lattice)
-        return equilibrated_lattice_gas(L, rad, mass, s.vbar, s.equilibration, rng);
+        return equilibrated_lattice_gas(L, maxwellian_velocities(mass, s.vbar, rng), rad, mass, s.vbar, s.equilibration);
     std::vector<Vec2> pos = random_positions(rad, L, L, true, true, rng);
-    std::vector<Vec2> vel = maxwellian_velocities(mass, s.vbar, rng);
-    EdConfig cfg;
-    cfg.lx = cfg.ly = L;
-    cfg.law.r = 1.0;
-    EdEngine eq(cfg, pos, vel, rad, mass);
-    equilibrate(eq, s.equilibration);
-    EquilibratedGas gas;
-    gas.collision_rate = eq.time() > 0 ? 2.0 * double(eq.total_collisions()) / double(mass.size()) / eq.time() : NAN;
-    gas.pos = eq.positions();
-    gas.vel = eq.velocities();
-    zero_momentum_and_scale(gas.vel, mass, s.vbar);
-    return gas;
+    return equilibrated_gas(L, pos, maxwellian_velocities(mass, s.vbar, rng), rad, mass, s.vbar, s.equilibration);
 }
 
 // The TCED gas at t = 0: Eq. (7) with pair rule tc_both.
 EdEngine tced_engine(const ClusterSpec& s, const EquilibratedGas& gas, bool tc_both) {
-    EdConfig cfg;
-    cfg.lx = cfg.ly = s.L();
-    cfg.law.r = s.r;
-    cfg.law.mu = s.mu;
-    cfg.law.beta0 = s.mu > 0 ? 0.0 : -1.0;
-    cfg.t_c = s.t_c;
+    EdConfig cfg = rough_disk_box(s.L(), s.r, s.mu, s.t_c);
     cfg.tc_both = tc_both;
     return EdEngine(cfg, gas.pos, gas.vel, s.radii(), s.masses());
-}
-
-// The samples at t = 0 and the observer's state before the first collision.
-LoopState fresh_loop(const EdEngine& eng, std::size_t n) {
-    const EdKineticEnergy k0 = eng.kinetic_energy();
-    LoopState st;
-    st.ts = {0.0};
-    st.ks = {k0.total()};
-    st.kxs = {k0.kx};
-    st.kys = {k0.ky};
-    st.cns = st.ecns = st.fast_share = st.hot = {0.0};
-    st.last_t.assign(n, -INFINITY);
-    st.last_interval.assign(n, INFINITY);
-    st.fast.assign(n, 0);
-    return st;
 }
 
 // Eq. (7) per particle, from the records: was this collision within t_c of the particle's
@@ -303,6 +265,16 @@ void record_sample(LoopState& st, const EdEngine& eng, double t, double t_c) {
     for (double iv : st.last_interval)
         if (iv <= t_c) ++hot;
     st.hot.push_back(double(hot) / double(n));
+}
+
+// The samples at t = 0 and the observer's state before the first collision.
+LoopState fresh_loop(const EdEngine& eng, std::size_t n, double t_c) {
+    LoopState st;
+    st.last_t.assign(n, -INFINITY);
+    st.last_interval.assign(n, INFINITY);
+    st.fast.assign(n, 0);
+    record_sample(st, eng, 0.0, t_c);
+    return st;
 }
 
 // At t = t_base 2^k: N_c over (t/2, t] from the counts now and at the previous instant t/2.
@@ -353,7 +325,7 @@ RunOutcome run_tced(const RunContext& ctx, const ClusterSpec& s, const Equilibra
     EdState saved;
     const bool resumed = run.resume(saved, st);
     EdEngine eng = resumed ? EdEngine(saved) : tced_engine(s, gas, tc_both);
-    if (!resumed) st = fresh_loop(eng, s.n());
+    if (!resumed) st = fresh_loop(eng, s.n(), s.t_c);
     const ProgressSlot slot(progress, -1); // the engine time is shown, the instants are ticked
     if (progress) progress->tick((run.next_sample() + m - 1) / m);
     bool advancing = false; // from a sample time's trigger to its sample: a runtime_error is the engine's
@@ -503,16 +475,8 @@ std::vector<double> fig10_table(Result& res, const Samples& st, double t0, doubl
 
 // How K(t) departs from homogeneous cooling: Eq. (18) early, the slopes later.
 void fig10_slopes(Result& res, const std::vector<double>& ts, const std::vector<double>& kk, double t0, int m, double late_from) {
-    // Early cooling: Eq. (18) fitted over t <= t0 (1/sqrt(K/K0) - 1 = t/t0, a line through 0).
-    std::vector<double> x, y;
-    for (std::size_t i = 1; i < ts.size(); ++i)
-        if (ts[i] <= t0) {
-            x.push_back(ts[i]);
-            y.push_back(1 / std::sqrt(kk[i]) - 1);
-        }
-    double c1 = NAN, cov = 0, ss = 0;
-    if (x.size() >= 2) gsl_fit_mul(x.data(), 1, y.data(), 1, x.size(), &c1, &cov, &ss);
-    res.scalar("t0_fit_over_kinetic", c1 * t0, "1", "1/t0 fitted to K(t) over t <= t0 (Eq. 18) over the kinetic-theory value");
+    // Early cooling: Eq. (18) fitted over t <= t0.
+    res.scalar("t0_fit_over_kinetic", fit_haff_inv_t0(ts, kk, t0) * t0, "1", "1/t0 fitted to K(t) over t <= t0 (Eq. 18) over the kinetic-theory value");
     // Steepest local slope d ln K / d ln t (over one octave) before late_slope_from: Eq. (18)
     // tends to -2 only for t >> t0, while clustering sets in at a few t0.
     double steepest = 0;
@@ -623,7 +587,7 @@ void report_poisson_falling(Result& res, const std::vector<Instant>& instants, d
 
 // P(N_c) at one instant with the fitted Eqs. (20)-(22), as Fig. 12 shows it.
 void fig12_histogram_table(Result& res, const Instant& in, std::size_t panel) {
-    Table& h = res.table("pnc_" + std::to_string(panel), "P(N_c) and the fitted Eqs. (20)-(22) at t = " + label("", in.t) + " s");
+    Table& h = res.table("pnc_" + std::to_string(panel), "P(N_c) and the fitted Eqs. (20)-(22) at t = " + number_text(in.t) + " s");
     std::vector<double> pp, pe, pw, pwt, pet;
     for (std::size_t b = 0; b < in.hist.centres.size(); ++b) {
         const double w = in.hist.edges[b + 1] - std::max(0.0, in.hist.edges[b]);
@@ -693,7 +657,7 @@ void fig12_panels(Result& res, const std::vector<Instant>& instants, const std::
         mt.push_back(in.t);
         mw.push_back(in.window);
         fig12_histogram_table(res, in, s);
-        fig12_panel_scalars(res, in, s < pcn.size() ? label("_cn", paper) : std::string("_last"));
+        fig12_panel_scalars(res, in, s < pcn.size() ? "_cn" + number_text(paper) : std::string("_last"));
     }
     // Created last: res.table() may move the tables created before.
     Table& meta = res.table("fig12_selection", "instants shown in Fig. 12: the paper's C/N and ours");
@@ -717,8 +681,8 @@ void report_cluster_centres(Result& res, const std::vector<double>& mt, const st
                "over the clustered snapshots (C/N >= 70): the lowest density rank (1-10) of the tenth of particles with the largest mean N_c");
     res.scalar("densest_tenth_Nc_over_mean_min", min_ratio, "1", "the smallest ratio of the densest tenth's mean N_c to the overall mean there");
     for (std::size_t k = 0; k < mt.size(); ++k) {
-        res.scalar("densest_tenth_Nc_over_mean" + label("_t", mt[k]), ratio[k], "1", "mean N_c of the densest tenth over the overall mean at this snapshot");
-        res.scalar("densest_tenth_rank_of_max_Nc" + label("_t", mt[k]), top[k], "1", "density rank (1-10) of the tenth with the largest mean N_c");
+        res.scalar("densest_tenth_Nc_over_mean_t" + number_text(mt[k]), ratio[k], "1", "mean N_c of the densest tenth over the overall mean at this snapshot");
+        res.scalar("densest_tenth_rank_of_max_Nc_t" + number_text(mt[k]), top[k], "1", "density rank (1-10) of the tenth with the largest mean N_c");
     }
 }
 
@@ -737,7 +701,7 @@ double at_cn(const std::vector<Instant>& instants, double cn, Get get) {
 
 void report_at_paper_cn(Result& res, const std::vector<Instant>& instants, const std::vector<double>& paper_cn) {
     for (double c : paper_cn) {
-        const std::string tag = label("_at_cn", c);
+        const std::string tag = "_at_cn" + number_text(c);
         res.scalar("chi" + tag, at_cn(instants, c, [](const Instant& in) { return in.poisson.value; }), "1", "Eq. (20) chi interpolated to the paper's C/N");
         res.scalar("A" + tag, at_cn(instants, c, [](const Instant& in) { return in.expo.value; }), "1/s", "Eq. (21) A interpolated to the paper's C/N");
         res.scalar("B" + tag, at_cn(instants, c, [](const Instant& in) { return in.power.value; }), "1/s", "Eq. (22) B interpolated to the paper's C/N");
@@ -827,7 +791,7 @@ void fig11(Result& res, const std::vector<Instant>& instants, const ClusterSpec&
         mt.push_back(in->t);
         mc.push_back(in->cn);
         Table& sn = res.table("snapshot_" + std::to_string(mt.size() - 1),
-                              "positions and N_c over the last t/2 at t = " + label("", in->t) + " s");
+                              "positions and N_c over the last t/2 at t = " + number_text(in->t) + " s");
         std::vector<double> x, y;
         for (const Vec2& q : in->pos) {
             x.push_back(q.x / s.d);

@@ -15,12 +15,12 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
-#include <gsl/gsl_fit.h>
 #include <numeric>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "analysis/curve_analysis.hpp"
 #include "core/rng_stream.hpp"
 #include "data/spec.hpp"
 #include "engines/dsmc/dsmc_engine.hpp"
@@ -35,6 +35,7 @@
 #include "observables/log_time_sampler.hpp"
 #include "observables/pair_correlation.hpp"
 #include "observables/structure_factor.hpp"
+#include "scenarios/ed_gas.hpp"
 #include "theory/kinetic_theory.hpp"
 
 namespace granrepro::experiments {
@@ -151,11 +152,10 @@ struct Trace {
     }
 };
 
-struct Setup {
-    std::vector<Vec2> pos, vel;
+// A seed's state at t = 0; its collision_rate is that of the second half of the equilibration.
+struct Setup : EquilibratedGas {
     std::vector<double> rad, mass;
-    double L = 0;              // box side [m]
-    double omega_measured = 0; // elastic collision rate per particle during equilibration [1/s]
+    double L = 0; // box side [m]
 };
 
 // Sample times: log-spaced K(t) samples, a2_samples evenly spaced in the a2 window, and the
@@ -175,12 +175,6 @@ std::vector<double> sample_times(const CoolingSpec& c) {
     std::sort(t.begin(), t.end());
     t.erase(std::unique(t.begin(), t.end(), [](double a, double b) { return std::abs(a - b) < 1e-12; }), t.end());
     return t;
-}
-
-bool is_snapshot(const std::vector<double>& snapshot_times, double t) {
-    for (double s : snapshot_times)
-        if (std::abs(s - t) < 1e-12) return true;
-    return false;
 }
 
 // a2 of the translational velocities (about their mean) and its standard error from the sample
@@ -273,7 +267,9 @@ Trace observe(const CoolingSpec& c, const Setup& s, Engine& eng, SampledRun<Trac
     run.run(eng, tr, trigger, [&hist](const CollisionRecord& col) { hist.add(col); },
             [&](long, double t) {
                 record_sample(tr, eng, t);
-                if (is_snapshot(c.snapshot_times, t)) record_snapshot(tr, eng.positions(), s.L, c.d);
+                const auto now = [t](double snap) { return std::abs(snap - t) < 1e-12; };
+                if (std::any_of(c.snapshot_times.begin(), c.snapshot_times.end(), now))
+                    record_snapshot(tr, eng.positions(), s.L, c.d);
                 tr.pbd_counts.clear();
                 for (const auto& w : hist.counts()) tr.pbd_counts.push_back({w});
                 return false;
@@ -301,38 +297,11 @@ Setup prepare(const CoolingSpec& c, std::uint64_t seed, long seed_index) {
     s.rad.assign(n, 0.5 * c.d);
     s.mass.assign(n, c.mass);
     RngStream rng(seed, setup_stream(seed_index));
-    std::vector<Vec2> pos = square_lattice_positions(n, s.L, s.L);
-    std::vector<Vec2> vel = initial_velocities(c, s.mass, rng);
-    zero_momentum_and_scale(vel, s.mass, c.vbar);
-    EdConfig cfg;
-    cfg.lx = cfg.ly = s.L;
-    cfg.law.r = 1.0;
-    EdEngine eng(cfg, pos, vel, s.rad, s.mass);
     // The first collisions after a lattice start are rarer than in equilibrium, so the
-    // equilibrium collision rate is measured over the second half of the equilibration only
-    // (the same total number of collisions, hence the same state at t = 0).
-    equilibrate(eng, 0.5 * c.equilibration);
-    const double t_half = eng.time();
-    const auto c_half = eng.total_collisions();
-    equilibrate(eng, 0.5 * c.equilibration);
-    const double dt = eng.time() - t_half;
-    s.omega_measured = dt > 0 ? 2.0 * double(eng.total_collisions() - c_half) / double(n) / dt : NAN;
-    s.pos = eng.positions();
-    s.vel = eng.velocities();
-    // Elastic equilibration conserves energy; rescale anyway so that v̄ at t = 0 is exactly the
-    // paper's (round-off only).
-    zero_momentum_and_scale(s.vel, s.mass, c.vbar);
+    // equilibrium collision rate is measured over the second half of the equilibration only.
+    static_cast<EquilibratedGas&>(s) =
+        equilibrated_lattice_gas(s.L, initial_velocities(c, s.mass, rng), s.rad, s.mass, c.vbar, c.equilibration, true);
     return s;
-}
-
-EdConfig ed_config(const CoolingSpec& c, double L) {
-    EdConfig cfg;
-    cfg.lx = cfg.ly = L;
-    cfg.law.r = c.r;
-    cfg.law.mu = c.mu;
-    cfg.law.beta0 = c.mu > 0 ? 0.0 : -1.0;
-    cfg.t_c = c.t_c;
-    return cfg;
 }
 
 DsmcConfig dsmc_config(const CoolingSpec& c, double L) {
@@ -359,7 +328,7 @@ Trace run_method(const RunContext& ctx, const CoolingSpec& c, const Setup& s, lo
     RunCheckpoint checkpoint(ctx, k == 0 ? method : method + "_" + std::to_string(k));
     SampledRun<Trace> run(checkpoint, kCoolingRunSchema, kCoolingRunSchemaVersion);
     if (is_ed) {
-        EdEngine eng(ed_config(c, s.L), s.pos, s.vel, s.rad, s.mass);
+        EdEngine eng(rough_disk_box(s.L, c.r, c.mu, c.t_c), s.pos, s.vel, s.rad, s.mass);
         return observe(c, s, eng, run);
     }
     DsmcConfig cfg = dsmc_config(c, s.L);
@@ -432,39 +401,48 @@ double ratio_at(const Trace& tr, double t0, double t) {
     return NAN;
 }
 
-// First time at which |y(t)| exceeds level, interpolated linearly in ln t between the samples
-// around the crossing; NaN if it never does.
-double first_exceeding(const std::vector<double>& t, const std::vector<double>& y, double level) {
-    for (std::size_t i = 1; i < t.size(); ++i)
-        if (std::abs(y[i]) > level && std::abs(y[i - 1]) <= level && t[i - 1] > 0) {
-            const double f = (level - std::abs(y[i - 1])) / (std::abs(y[i]) - std::abs(y[i - 1]));
-            return std::exp(std::log(t[i - 1]) + f * std::log(t[i] / t[i - 1]));
+// Eq. (18) at the sample times of a trace.
+std::vector<double> eq18_curve(const Trace& tr, double t0) {
+    std::vector<double> out;
+    for (double t : tr.t) out.push_back(eq18(t, t0));
+    return out;
+}
+
+// First t/t0 at which |k/ref - 1| exceeds level, interpolated linearly in ln t between the
+// samples around the crossing; NaN if it never does.
+double first_departure(const std::vector<double>& t, const std::vector<double>& k, const std::vector<double>& ref,
+                       double t0, double level) {
+    std::vector<double> x, y;
+    for (std::size_t i = 0; i < t.size() && i < k.size() && i < ref.size(); ++i) {
+        x.push_back(t[i] / t0);
+        y.push_back(std::abs(k[i] / ref[i] - 1));
+    }
+    for (std::size_t i = 1; i < x.size(); ++i)
+        if (y[i] > level && y[i - 1] <= level && x[i - 1] > 0) {
+            const double f = (level - y[i - 1]) / (y[i] - y[i - 1]);
+            return std::exp(std::log(x[i - 1]) + f * std::log(x[i] / x[i - 1]));
         }
     return NAN;
 }
 
-// Mean, maximum and minimum of a curve v(x) over lo <= x <= hi.
-double mean_over(const std::vector<double>& v, const std::vector<double>& x, double lo, double hi) {
-    double s = 0;
-    int n = 0;
+// The values of a curve v(x) over lo <= x <= hi, and their mean, maximum and minimum.
+std::vector<double> over(const std::vector<double>& v, const std::vector<double>& x, double lo, double hi) {
+    std::vector<double> in;
     for (std::size_t i = 0; i < v.size(); ++i)
-        if (x[i] >= lo && x[i] <= hi) {
-            s += v[i];
-            ++n;
-        }
-    return n ? s / n : NAN;
+        if (x[i] >= lo && x[i] <= hi) in.push_back(v[i]);
+    return in;
+}
+double mean_over(const std::vector<double>& v, const std::vector<double>& x, double lo, double hi) {
+    const auto in = over(v, x, lo, hi);
+    return in.empty() ? NAN : std::accumulate(in.begin(), in.end(), 0.0) / double(in.size());
 }
 double max_over(const std::vector<double>& v, const std::vector<double>& x, double lo, double hi) {
-    double m = -INFINITY;
-    for (std::size_t i = 0; i < v.size(); ++i)
-        if (x[i] >= lo && x[i] <= hi) m = std::max(m, v[i]);
-    return m;
+    const auto in = over(v, x, lo, hi);
+    return std::accumulate(in.begin(), in.end(), -HUGE_VAL, [](double a, double b) { return std::max(a, b); });
 }
 double min_over(const std::vector<double>& v, const std::vector<double>& x, double lo, double hi) {
-    double m = INFINITY;
-    for (std::size_t i = 0; i < v.size(); ++i)
-        if (x[i] >= lo && x[i] <= hi) m = std::min(m, v[i]);
-    return m;
+    const auto in = over(v, x, lo, hi);
+    return std::accumulate(in.begin(), in.end(), HUGE_VAL, [](double a, double b) { return std::min(a, b); });
 }
 
 // Mean over 1 <= k <= k_max of ln(S_a/S_b), or of |ln(S_a/S_b)| (shells where both are positive).
@@ -490,6 +468,13 @@ std::array<double, 2> mean_sd(const std::vector<double>& v) {
     return {m, v.size() > 1 ? std::sqrt(s / double(v.size() - 1)) : NAN};
 }
 
+// The mean over seeds of v as `name`, and its seed standard deviation as name_sd.
+void add_mean_sd(Result& res, const std::string& name, const std::vector<double>& v, const std::string& what) {
+    const auto ms = mean_sd(v);
+    res.scalar(name, ms[0], "1", what);
+    res.scalar(name + "_sd", ms[1], "1", "its seed standard deviation");
+}
+
 // A bump of S(k) at shell kc (the DSMC cell lattice, box/cell, folded into the FFT range by the
 // NGP aliasing of an M-point grid): mean S over kc +- 2 over the geometric mean of the mean S over
 // the flanks 0.75 kc +- 2 and 1.25 kc +- 2 (a flank beyond M/2 is left out). A smooth S(k) gives
@@ -502,12 +487,6 @@ double bump_contrast(const std::vector<double>& S, const std::vector<double>& k,
     return std::isfinite(hi) ? centre / std::sqrt(lo * hi) : centre / lo;
 }
 
-std::string time_label(double t) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "t%g", t);
-    return buf;
-}
-
 // Early collision rate: C/N at the sample nearest t = 0.25 t0 over what Haff's law with the
 // Enskog-Henderson rate omega promises there (the rate of the collision rule, before clustering).
 double rate_over_enskog(const Trace& tr, double t0, double omega) {
@@ -515,20 +494,6 @@ double rate_over_enskog(const Trace& tr, double t0, double omega) {
     for (std::size_t i = 1; i < tr.t.size(); ++i)
         if (std::abs(std::log(tr.t[i] / (0.25 * t0))) < std::abs(std::log(tr.t[best] / (0.25 * t0)))) best = i;
     return tr.cn[best] / theory::haff_collisions_per_particle(tr.t[best], t0, omega);
-}
-
-// Eq. (18) fitted over t <= t0 (1/sqrt(K/K0) - 1 = t/t0, a line through 0): the fitted 1/t0 [1/s].
-double fit_inv_t0(const Trace& tr, double t0) {
-    const auto k = k_ratio(tr);
-    std::vector<double> x, y;
-    for (std::size_t i = 0; i < tr.t.size(); ++i)
-        if (tr.t[i] > 0 && tr.t[i] <= t0) {
-            x.push_back(tr.t[i]);
-            y.push_back(1 / std::sqrt(k[i]) - 1);
-        }
-    double c1 = NAN, cov = 0, ss = 0;
-    if (x.size() >= 2) gsl_fit_mul(x.data(), 1, y.data(), 1, x.size(), &c1, &cov, &ss);
-    return c1;
 }
 
 // Grazing over central collisions: mean P(b/d) over b/d > 0.8 against b/d < 0.2.
@@ -576,7 +541,7 @@ void add_dsmc_kinetics(Result& res, const std::vector<Trace>& dss, const Cooling
     const double t0 = c.t0();
     const Trace& ds = dss.front();
     res.scalar("dsmc_rate_over_enskog_early", rate_over_enskog(ds, t0, c.omega_enskog()), "1", "C/N at t = 0.25 t0 over Haff's law with the Enskog rate, DSMC");
-    res.scalar("t0_fit_over_kinetic_dsmc", fit_inv_t0(ds, t0) * t0, "1", "1/t0 fitted to the DSMC K(t) over t <= t0 (Eq. 18) over the kinetic-theory 1/t0");
+    res.scalar("t0_fit_over_kinetic_dsmc", fit_haff_inv_t0(ds.t, k_ratio(ds), t0) * t0, "1", "1/t0 fitted to the DSMC K(t) over t <= t0 (Eq. 18) over the kinetic-theory 1/t0");
     res.scalar("dsmc_over_eq18_2t0", ratio_at(ds, t0, 2 * t0), "1", "K/K_18 at t = 2 t0, DSMC");
     hcs_a2(res, dss, c, "dsmc");
 }
@@ -589,7 +554,7 @@ void add_seed_tables(Result& res, const std::vector<Trace>& trs, const std::vect
         {
             Table& t = res.table(std::string("sk_") + name + "_seed" + std::to_string(k), std::string("S(k) at the snapshot times, seed index ") + std::to_string(k) + ", " + name);
             t.add("k", "1").values = tr.S_k;
-            for (std::size_t i = 0; i < tr.snaps.size(); ++i) t.add("S_" + time_label(snaps[i]), "1").values = tr.snaps[i].S;
+            for (std::size_t i = 0; i < tr.snaps.size(); ++i) t.add("S_t" + number_text(snaps[i]), "1").values = tr.snaps[i].S;
         }
         Table& e = res.table(std::string("energy_") + name + "_seed" + std::to_string(k), std::string("K/K0 against t, seed index ") + std::to_string(k) + ", " + name);
         e.add("t", "s").values = tr.t;
@@ -618,7 +583,7 @@ void add_setup(Result& res, const CoolingSpec& c, const Setup& s, const std::vec
     // last bit.
     const double s_star = 1 / theory::henderson_contact_value(c.rho);
     const double t0_printed = std::sqrt(M_PI) * c.d * s_star / (2 * (1 - r * r) * c.rho * c.vbar);
-    const double t0_measured_rate = 4 / ((1 - r * r) * s.omega_measured);
+    const double t0_measured_rate = 4 / ((1 - r * r) * s.collision_rate);
     res.scalar("N", double(s.pos.size()), "1", "number of disks");
     res.scalar("seeds", double(c.seeds), "1", "independent initial states (equilibration, ED and DSMC each)");
     double wall_ed = 0, wall_ds = 0;
@@ -630,7 +595,7 @@ void add_setup(Result& res, const CoolingSpec& c, const Setup& s, const std::vec
     res.scalar("box", s.L, "m", "side of the periodic box");
     res.scalar("t0_inv_eq19_printed", 1 / t0_printed, "1/s", "1/t0 from Eq. (19) as printed (sqrt(pi))");
     res.scalar("t0_inv_kinetic_theory", 1 / c.t0(), "1/s", "1/t0 = (1-r^2) omega_E / 4 with Henderson's g(d): sqrt(2 pi)");
-    res.scalar("omega_equilibration_over_enskog", s.omega_measured / c.omega_enskog(), "1",
+    res.scalar("omega_equilibration_over_enskog", s.collision_rate / c.omega_enskog(), "1",
                "elastic ED collision rate over the second half of the equilibration over the Enskog-Henderson rate");
     res.scalar("t0_inv_measured_rate", 1 / t0_measured_rate, "1/s", "1/t0 from the measured elastic collision rate");
 }
@@ -653,21 +618,18 @@ void add_equilibrated_a2(Result& res, const CoolingSpec& c, std::uint64_t seed, 
 void add_energy_table(Result& res, const Trace& tr, double t0, const char* name) {
     Table& t = res.table(std::string("energy_") + name, std::string("K/K0 and a2 against t/t0, ") + name);
     const double k0 = tr.kx.front() + tr.ky.front() + tr.krot.front();
-    std::vector<double> tt0, e18, kx, ky, kr;
-    for (std::size_t i = 0; i < tr.t.size(); ++i) {
-        tt0.push_back(tr.t[i] / t0);
-        e18.push_back(eq18(tr.t[i], t0));
-        kx.push_back(tr.kx[i] / k0);
-        ky.push_back(tr.ky[i] / k0);
-        kr.push_back(tr.krot[i] / k0);
-    }
+    const auto over_by = [](const std::vector<double>& v, double by) {
+        std::vector<double> out;
+        for (double x : v) out.push_back(x / by);
+        return out;
+    };
     t.add("t", "s").values = tr.t;
-    t.add("t_over_t0", "1").values = tt0;
+    t.add("t_over_t0", "1").values = over_by(tr.t, t0);
     t.add("K_over_K0", "1").values = k_ratio(tr);
-    t.add("Kx_over_K0", "1").values = kx;
-    t.add("Ky_over_K0", "1").values = ky;
-    t.add("Krot_over_K0", "1").values = kr;
-    t.add("eq18", "1").values = e18;
+    t.add("Kx_over_K0", "1").values = over_by(tr.kx, k0);
+    t.add("Ky_over_K0", "1").values = over_by(tr.ky, k0);
+    t.add("Krot_over_K0", "1").values = over_by(tr.krot, k0);
+    t.add("eq18", "1").values = eq18_curve(tr, t0);
     t.add("C_over_N", "1").values = tr.cn;
     t.add("elastic_C_over_N", "1").values = tr.elastic_cn;
     t.add("a2", "1").values = tr.a2;
@@ -679,7 +641,7 @@ void add_energy_table(Result& res, const Trace& tr, double t0, const char* name)
 void add_ed_cooling(Result& res, const CoolingSpec& c, const std::vector<Trace>& eds) {
     const Trace& ed = eds.front();
     const double t0 = c.t0();
-    const double inv_t0_fit = fit_inv_t0(ed, t0);
+    const double inv_t0_fit = fit_haff_inv_t0(ed.t, k_ratio(ed), t0);
     res.scalar("t0_inv_fit_ed", inv_t0_fit, "1/s", "1/t0 fitted to the ED K(t) over t <= t0 (Eq. 18)");
     res.scalar("t0_fit_over_kinetic_ed", inv_t0_fit * t0, "1", "fitted over kinetic-theory 1/t0, ED");
     res.scalar("ed_rate_over_enskog_early", rate_over_enskog(ed, t0, c.omega_enskog()), "1", "C/N at t = 0.25 t0 over Haff's law with the Enskog rate, ED");
@@ -691,18 +653,9 @@ void add_ed_cooling(Result& res, const CoolingSpec& c, const std::vector<Trace>&
     // Departure from homogeneous cooling (Sec. 3.1: "at t/t0 ≈ 2 substantial deviations"): the
     // first t/t0 where the ED K(t) leaves Eq. (18) by more than departure_level, per seed.
     std::vector<double> dep;
-    for (const Trace& tr : eds) {
-        const auto k = k_ratio(tr);
-        std::vector<double> x, y;
-        for (std::size_t i = 0; i < tr.t.size(); ++i) {
-            x.push_back(tr.t[i] / t0);
-            y.push_back(k[i] / eq18(tr.t[i], t0) - 1);
-        }
-        dep.push_back(first_exceeding(x, y, c.departure_level));
-    }
-    const auto ms = mean_sd(dep);
-    res.scalar("ed_departure_t_over_t0", ms[0], "1", "first t/t0 with |K_ED/K_18 - 1| > departure_level, mean over seeds");
-    res.scalar("ed_departure_t_over_t0_sd", ms[1], "1", "its seed standard deviation");
+    for (const Trace& tr : eds)
+        dep.push_back(first_departure(tr.t, k_ratio(tr), eq18_curve(tr, t0), t0, c.departure_level));
+    add_mean_sd(res, "ed_departure_t_over_t0", dep, "first t/t0 with |K_ED/K_18 - 1| > departure_level, mean over seeds");
     res.scalar("a2_van_noije_ernst", theory::van_noije_ernst_a2(c.r, 2), "1", "van Noije-Ernst a2 of the 2D HCS at this r (first Sonine approximation)");
     hcs_a2(res, eds, c, "ed");
 }
@@ -714,8 +667,8 @@ void add_impact_parameter(Result& res, const Trace& ed) {
         Table& t = res.table("impact_parameter_ed", "P(b/d) of the ED run per time window (columns by window start)");
         t.add("b_over_d", "1").values = ed.pbd_centres;
         for (const auto& w : ed.pbd) {
-            t.add("P_" + time_label(w.t_begin), "1").values = w.p;
-            t.add("err_" + time_label(w.t_begin), "1").values = w.error;
+            t.add("P_t" + number_text(w.t_begin), "1").values = w.p;
+            t.add("err_t" + number_text(w.t_begin), "1").values = w.error;
         }
     }
     Table& wt = res.table("impact_parameter_windows", "time windows of P(b/d): [t_begin, t_end)");
@@ -736,11 +689,11 @@ void add_structure_tables(Result& res, const Trace& tr, const std::vector<double
     {
         Table& g = res.table(std::string("gr_") + name, std::string("g(r/d) at the snapshot times, ") + name);
         g.add("r_over_d", "1").values = tr.g_r;
-        for (std::size_t i = 0; i < tr.snaps.size(); ++i) g.add("g_" + time_label(snaps[i]), "1").values = tr.snaps[i].g;
+        for (std::size_t i = 0; i < tr.snaps.size(); ++i) g.add("g_t" + number_text(snaps[i]), "1").values = tr.snaps[i].g;
     }
     Table& sk = res.table(std::string("sk_") + name, std::string("S(k), k = l/lambda, at the snapshot times, ") + name);
     sk.add("k", "1").values = tr.S_k;
-    for (std::size_t i = 0; i < tr.snaps.size(); ++i) sk.add("S_" + time_label(snaps[i]), "1").values = tr.snaps[i].S;
+    for (std::size_t i = 0; i < tr.snaps.size(); ++i) sk.add("S_t" + number_text(snaps[i]), "1").values = tr.snaps[i].S;
     sk.add("S_equilibrium", "1").values = std::vector<double>(tr.S_k.size(), theory::hard_disk_structure_factor_zero(rho));
 }
 
@@ -808,9 +761,8 @@ void add_ed_sk(Result& res, const std::vector<Trace>& eds, const std::vector<dou
                "the same at t = 0: below 1 where the long waves have not forgotten the lattice start");
     res.scalar("ed_Sk_small_k_growth", small_k_S(ed, ed.snaps.back(), k_small) / small_k_S(ed, ed.snaps.front(), k_small), "1",
                "mean S(k <= sk_k_max) at the last snapshot over that at t = 0 (lattice leftover), ED, first seed");
-    const auto ms = mean_sd(change);
-    res.scalar("ed_Sk_change_after_20s", ms[0], "1", "relative change of mean S(k <= sk_k_max) from t = 20 s to the last snapshot, ED, mean over seeds");
-    res.scalar("ed_Sk_change_after_20s_sd", ms[1], "1", "its seed standard deviation");
+    add_mean_sd(res, "ed_Sk_change_after_20s", change,
+                "relative change of mean S(k <= sk_k_max) from t = 20 s to the last snapshot, ED, mean over seeds");
     res.scalar("ed_Sk_log_seed_sd", mean_sd(lns)[1], "1",
                "seed standard deviation of ln(mean S_ED(k <= sk_k_max)) at the last snapshot: the run-to-run scatter of one run");
 }
@@ -831,50 +783,43 @@ void add_ed_dsmc_energy(Result& res, const std::vector<Trace>& eds, const std::v
     res.scalar("dsmc_over_ed_t0", ratio_at(ds, t0, t0) / ratio_at(ed, t0, t0), "1", "K_DSMC/K_ED at t = t0");
     res.scalar("dsmc_over_ed_5t0", ratio_at(ds, t0, 5 * t0) / ratio_at(ed, t0, 5 * t0), "1", "K_DSMC/K_ED at t = 5 t0");
     std::vector<double> split;
-    for (std::size_t k = 0; k < eds.size(); ++k) {
-        const Trace &a = eds[k], &b = dss[k];
-        const auto ka = k_ratio(a), kb = k_ratio(b);
-        std::vector<double> x, y;
-        for (std::size_t i = 0; i < a.t.size() && i < b.t.size(); ++i) {
-            x.push_back(a.t[i] / t0);
-            y.push_back(kb[i] / ka[i] - 1);
-        }
-        split.push_back(first_exceeding(x, y, level));
-    }
-    const auto ms = mean_sd(split);
-    res.scalar("dsmc_ed_split_t_over_t0", ms[0], "1", "first t/t0 with |K_DSMC/K_ED - 1| > departure_level, mean over seeds");
-    res.scalar("dsmc_ed_split_t_over_t0_sd", ms[1], "1", "its seed standard deviation");
+    for (std::size_t k = 0; k < eds.size(); ++k)
+        split.push_back(first_departure(eds[k].t, k_ratio(dss[k]), k_ratio(eds[k]), t0, level));
+    add_mean_sd(res, "dsmc_ed_split_t_over_t0", split, "first t/t0 with |K_DSMC/K_ED - 1| > departure_level, mean over seeds");
 }
 
 // Fig. 7, DSMC against ED: agreement of S(k) at small k. Per seed: m = mean over
 // 1 <= k <= sk_k_max of ln(S_DSMC/S_ED) at the last snapshot (and at 20 s); then mean and
-// scatter over seeds.
+// scatter over seeds, and a table of the seeds.
 void add_sk_agreement(Result& res, const std::vector<Trace>& eds, const std::vector<Trace>& dss, const std::vector<double>& snaps, double k_small) {
     const auto i20 = snapshot_20s(snaps);
-    std::vector<double> m_last, m_20, abs_last, d_change;
+    std::vector<double> idx, e20, elast, d20, dlast, m_last, m_20, abs_last, d_change;
     for (std::size_t k = 0; k < eds.size(); ++k) {
         const Trace &a = eds[k], &b = dss[k];
+        idx.push_back(double(k));
+        e20.push_back(i20 ? small_k_S(a, a.snaps[*i20], k_small) : NAN);
+        d20.push_back(i20 ? small_k_S(b, b.snaps[*i20], k_small) : NAN);
+        elast.push_back(small_k_S(a, a.snaps.back(), k_small));
+        dlast.push_back(small_k_S(b, b.snaps.back(), k_small));
+        d_change.push_back(dlast.back() / d20.back() - 1);
         m_last.push_back(mean_log_ratio(b.snaps.back().S, a.snaps.back().S, a.S_k, k_small));
         abs_last.push_back(mean_log_ratio(a.snaps.back().S, b.snaps.back().S, a.S_k, k_small, true));
         if (i20) m_20.push_back(mean_log_ratio(b.snaps[*i20].S, a.snaps[*i20].S, a.S_k, k_small));
-        const double s20 = i20 ? small_k_S(b, b.snaps[*i20], k_small) : NAN;
-        d_change.push_back(small_k_S(b, b.snaps.back(), k_small) / s20 - 1);
     }
-    const auto ml = mean_sd(m_last);
-    res.scalar("Sk_dsmc_over_ed_log", ml[0], "1", "ln(S_DSMC/S_ED) averaged over 1 <= k <= sk_k_max at the last snapshot, mean over seeds");
-    res.scalar("Sk_dsmc_over_ed_log_sd", ml[1], "1", "its seed standard deviation");
-    res.scalar("Sk_dsmc_over_ed_factor", std::exp(ml[0]), "1", "exp of Sk_dsmc_over_ed_log: DSMC's S(k <= sk_k_max) in units of ED's");
-    if (!m_20.empty()) {
-        const auto m2 = mean_sd(m_20);
-        res.scalar("Sk_dsmc_over_ed_log_20s", m2[0], "1", "the same at t = 20 s");
-        res.scalar("Sk_dsmc_over_ed_log_20s_sd", m2[1], "1", "its seed standard deviation");
-    }
+    Table& t = res.table("sk_seeds", "per seed: mean S(1 <= k <= sk_k_max) of ED and DSMC at 20 s and at the last snapshot, and the mean ln ratio");
+    t.add("seed_index", "1").values = idx;
+    t.add("S_ed_20s", "1").values = e20;
+    t.add("S_ed_last", "1").values = elast;
+    t.add("S_dsmc_20s", "1").values = d20;
+    t.add("S_dsmc_last", "1").values = dlast;
+    t.add("mean_ln_ratio_last", "1").values = m_last;
+    add_mean_sd(res, "Sk_dsmc_over_ed_log", m_last, "ln(S_DSMC/S_ED) averaged over 1 <= k <= sk_k_max at the last snapshot, mean over seeds");
+    res.scalar("Sk_dsmc_over_ed_factor", std::exp(mean_sd(m_last)[0]), "1", "exp of Sk_dsmc_over_ed_log: DSMC's S(k <= sk_k_max) in units of ED's");
+    if (!m_20.empty()) add_mean_sd(res, "Sk_dsmc_over_ed_log_20s", m_20, "the same at t = 20 s");
     res.scalar("Sk_ed_dsmc_mean_abs_log_ratio", mean_sd(abs_last)[0], "1",
                "mean |ln(S_ED/S_DSMC)| over 1 <= k <= sk_k_max at the last snapshot, mean over seeds");
-    const auto dc = mean_sd(d_change);
-    res.scalar("dsmc_Sk_change_after_20s", dc[0], "1",
-               "relative change of mean S(k <= sk_k_max) from t = 20 s to the last snapshot, DSMC, mean over seeds");
-    res.scalar("dsmc_Sk_change_after_20s_sd", dc[1], "1", "its seed standard deviation");
+    add_mean_sd(res, "dsmc_Sk_change_after_20s", d_change,
+                "relative change of mean S(k <= sk_k_max) from t = 20 s to the last snapshot, DSMC, mean over seeds");
 }
 
 // Fig. 7, the DSMC cell lattice's imprint on S(k): the bump of S at the cell shell, DSMC against
@@ -898,27 +843,6 @@ void add_cell_imprint(Result& res, const CoolingSpec& c, const Setup& s, const s
     res.scalar("dsmc_Sk_cell_imprint_over_ed", mean_sd(imprint)[0] / mean_sd(imprint_ed)[0], "1", "DSMC's contrast at the cell shell over ED's there (1: no imprint)");
 }
 
-void add_sk_seed_table(Result& res, const std::vector<Trace>& eds, const std::vector<Trace>& dss, const std::vector<double>& snaps, double k_small) {
-    const auto i20 = snapshot_20s(snaps);
-    std::vector<double> idx, e20, elast, d20, dlast, m_last;
-    for (std::size_t k = 0; k < eds.size(); ++k) {
-        const Trace &a = eds[k], &b = dss[k];
-        idx.push_back(double(k));
-        e20.push_back(i20 ? small_k_S(a, a.snaps[*i20], k_small) : NAN);
-        d20.push_back(i20 ? small_k_S(b, b.snaps[*i20], k_small) : NAN);
-        elast.push_back(small_k_S(a, a.snaps.back(), k_small));
-        dlast.push_back(small_k_S(b, b.snaps.back(), k_small));
-        m_last.push_back(mean_log_ratio(b.snaps.back().S, a.snaps.back().S, a.S_k, k_small));
-    }
-    Table& t = res.table("sk_seeds", "per seed: mean S(1 <= k <= sk_k_max) of ED and DSMC at 20 s and at the last snapshot, and the mean ln ratio");
-    t.add("seed_index", "1").values = idx;
-    t.add("S_ed_20s", "1").values = e20;
-    t.add("S_ed_last", "1").values = elast;
-    t.add("S_dsmc_20s", "1").values = d20;
-    t.add("S_dsmc_last", "1").values = dlast;
-    t.add("mean_ln_ratio_last", "1").values = m_last;
-}
-
 // Figs. 2, 6 and 7 of DSMC, and DSMC against ED.
 void add_dsmc(Result& res, const CoolingSpec& c, const Setup& s, const std::vector<Trace>& eds, const std::vector<Trace>& dss) {
     const Trace& ds = dss.front();
@@ -935,7 +859,6 @@ void add_dsmc(Result& res, const CoolingSpec& c, const Setup& s, const std::vect
                "g near contact over g at 2.5-5 d, last snapshot, DSMC");
     add_sk_agreement(res, eds, dss, snaps, k_small);
     add_cell_imprint(res, c, s, eds, dss);
-    add_sk_seed_table(res, eds, dss, snaps, k_small);
     res.scalar("dsmc_Sk_small_k_growth", small_k_S(ds, ds.snaps.back(), k_small) / small_k_S(ds, ds.snaps.front(), k_small), "1",
                "mean S(k <= sk_k_max) at the last snapshot over that at t = 0, DSMC, first seed");
     res.scalar("dsmc_Sk_growth_over_equilibrium", small_k_S(ds, ds.snaps.back(), k_small) / theory::hard_disk_structure_factor_zero(c.rho), "1",

@@ -19,17 +19,17 @@
 #include "analysis/eddy_pair.hpp"
 #include "core/input_error.hpp"
 #include "core/rng_stream.hpp"
-#include "core/vec3.hpp"
 #include "data/spec.hpp"
 #include "engines/ed/ed_engine.hpp"
 #include "engines/ed/ed_initial_states.hpp"
-#include "engines/ed3d/hard_sphere_gas.hpp"
 #include "experiments/work_limits.hpp"
 #include "harness/distributed_sweep.hpp"
 #include "harness/experiment.hpp"
 #include "io/json_fields.hpp"
 #include "observables/collisional_stress.hpp"
 #include "observables/impact_parameter_histogram.hpp"
+#include "scenarios/ed_gas.hpp"
+#include "scenarios/hard_sphere_lattice.hpp"
 #include "theory/kinetic_theory.hpp"
 
 namespace granrepro {
@@ -137,8 +137,6 @@ struct PointResult {
 
 PointResult counts_only(const std::vector<std::uint64_t>& c) { PointResult r; r.counts = {c}; return r; }
 
-nlohmann::json point_json(const PointResult& r) { return to_json_fields(r); }
-PointResult point_from_json(const nlohmann::json& j) { return from_json_fields<PointResult>(j); }
 
 // P(b/d) from counts: density over [0, 1] with bin width 1/nb, Poisson error sqrt(n) per bin.
 struct Histogram {
@@ -344,23 +342,11 @@ PointResult cooling_run(const ImpactSpec& s, EdEngine& e, double l, bool figure_
 // on a simple cubic lattice at packing fraction eta, Gaussian velocities of zero mean, about
 // equilibration_collisions per sphere as in Sec. 3, then elastic3d_collisions binned by b/d.
 PointResult run_3d(const ImpactSpec& s, std::uint64_t seed, std::size_t k) {
-    const long side = s.elastic3d_n_side;
-    const auto n3 = static_cast<std::size_t>(side * side * side);
     const int nb = s.n_bins;
-    const double box = std::cbrt(static_cast<double>(n3) * M_PI / 6 / s.elastic3d_packing[k]) * s.d;
     RngStream rng3(seed, 1000000 + k);
-    std::vector<Vec3> r, v;
-    Vec3 mean;
-    for (long a = 0; a < side; ++a)
-        for (long b = 0; b < side; ++b)
-            for (long c = 0; c < side; ++c) {
-                r.push_back({(a + 0.5) * box / side, (b + 0.5) * box / side, (c + 0.5) * box / side});
-                v.push_back({s.vbar * rng3.normal(), s.vbar * rng3.normal(), s.vbar * rng3.normal()});
-                mean += v.back();
-            }
-    for (Vec3& x : v) x -= mean * (1.0 / static_cast<double>(n3));
-    HardSphereGas3D g(r, v, s.d, box);
-    g.run_collisions(static_cast<std::uint64_t>(s.equilibration_collisions * static_cast<double>(n3) / 2.0 + 0.5));
+    HardSphereGas3D g = simple_cubic_gas(s.elastic3d_n_side, s.elastic3d_packing[k], s.d, s.vbar, rng3);
+    const auto n3 = static_cast<double>(g.positions().size());
+    g.run_collisions(static_cast<std::uint64_t>(s.equilibration_collisions * n3 / 2.0 + 0.5));
     std::vector<std::uint64_t> counts(static_cast<std::size_t>(nb), 0);
     g.run_collisions(static_cast<std::uint64_t>(s.elastic3d_collisions), [&](double x) {
         counts[std::min(static_cast<std::size_t>(nb) - 1, static_cast<std::size_t>(x * nb))] += 1;
@@ -370,28 +356,25 @@ PointResult run_3d(const ImpactSpec& s, std::uint64_t seed, std::size_t k) {
 
 // Sweep point i: the 2D run of random stream i (see ImpactSpec::per_seed) or a 3D point.
 nlohmann::json run_point(const ImpactSpec& s, std::uint64_t seed, std::size_t i) {
-    if (i >= s.n_2d()) return point_json(run_3d(s, seed, i - s.n_2d()));
+    if (i >= s.n_2d()) return to_json_fields(run_3d(s, seed, i - s.n_2d()));
     const auto n = static_cast<std::size_t>(s.N);
     const std::size_t k = i % s.per_seed();
     const bool inelastic = k < s.n_r();
     const double l = box_side(n, s.d, inelastic ? s.rho : s.elastic_densities[k - s.n_r()]);
     RngStream rng(seed, i);
-    EdConfig cfg;
-    cfg.lx = cfg.ly = l;
     // Smooth disks (mu = 0, beta0 = -1): Sec. 2.4 says DSMC's collision scheme "is identical
     // to the event driven procedure" with the tangential velocity unchanged, beta0 = -1.
-    cfg.law = RoughDiskCollision{inelastic ? s.restitutions[k] : 1.0, 0.0, -1.0, 0.4};
-    cfg.t_c = inelastic ? s.t_c : 0.0;
+    const EdConfig cfg = rough_disk_box(l, inelastic ? s.restitutions[k] : 1.0, 0.0, inelastic ? s.t_c : 0.0);
     const std::vector<double> rad(n, 0.5 * s.d), mass(n, s.m);
     EdEngine e(cfg, staggered_lattice(n, l, s.d), maxwellian_velocities(mass, s.vbar, rng), rad, mass);
     // Sec. 3: "first allowed to evolve with r = 1 for about 10 collisions per particle"; the
     // elastic run conserves K, so vbar is still the initial mean velocity at t = 0.
     equilibrate(e, s.equilibration_collisions);
-    if (inelastic) return point_json(cooling_run(s, e, l, i < s.per_seed(), mix_seed(seed, i)));
+    if (inelastic) return to_json_fields(cooling_run(s, e, l, i < s.per_seed(), mix_seed(seed, i)));
     ImpactParameterHistogram hist(s.n_bins, {e.time(), std::numeric_limits<double>::max()}); // Fig. 4's elastic check
     e.run_collisions(static_cast<std::uint64_t>(s.elastic_collisions_per_particle * static_cast<double>(n) / 2.0 + 0.5),
                      [&](const CollisionRecord& c) { hist.add(c); });
-    return point_json(counts_only(hist.window(0).counts));
+    return to_json_fields(counts_only(hist.window(0).counts));
 }
 
 // Every point goes through distributed_sweep(), so threads, MPI ranks and --points shards give the
@@ -410,13 +393,21 @@ std::vector<PointResult> sweep(const RunContext& ctx, const ImpactSpec& s, long&
         return run_point(s, ctx.seed, static_cast<std::size_t>(i));
     });
     std::vector<PointResult> pts;
-    for (const auto& j : swept.points) pts.push_back(point_from_json(j));
+    for (const auto& j : swept.points) pts.push_back(from_json_fields<PointResult>(j));
     resumed = swept.resumed;
     return pts;
 }
 
 const PointResult& at(const ImpactSpec& s, const std::vector<PointResult>& pts, std::size_t seed, std::size_t k) {
     return pts[seed * s.per_seed() + k];
+}
+
+// A field of run k summed over the seeds.
+template <class T>
+T seed_sum(const ImpactSpec& s, const std::vector<PointResult>& pts, std::size_t k, T PointResult::*field) {
+    T sum{};
+    for (std::size_t seed = 0; seed < s.n_seeds(); ++seed) sum += at(s, pts, seed, k).*field;
+    return sum;
 }
 
 // b/d counts of run k in windows [w0, w1), added over the seeds [seed0, seed1).
@@ -448,31 +439,25 @@ void fig4_inelastic(Result& res, const ImpactSpec& s, const std::vector<PointRes
     t4.add("b_over_d", "1").values = centres;
     for (std::size_t k = 0; k < s.n_r(); ++k) {
         const std::string lb = label("r", s.restitutions[k], "%.2f");
-        const auto all = merged(s, pts, k, 0, s.n_windows()), late = merged(s, pts, k, s.n_windows() - 1, s.n_windows());
-        const Histogram ha = normalise(all), hl = normalise(late);
-        t4.add("P_" + lb, "1").values = ha.p;
-        t4.add("err_" + lb, "1").values = ha.err;
-        t4.add("P_late_" + lb, "1").values = hl.p;
-        t4.add("err_late_" + lb, "1").values = hl.err;
-        const Ratio ra = grazing_ratio(all), rl = grazing_ratio(late);
-        res.scalar("collisions_" + lb, static_cast<double>(ha.total), "1", "pair collisions 0 <= t < t_end, all seeds");
-        res.scalar("collisions_late_" + lb, static_cast<double>(hl.total), "1", "pair collisions in the last window, all seeds");
-        res.scalar("chi2_dof_" + lb, chi2_per_dof(all), "1", "chi^2 per dof of P(b/d) against 1, whole run");
-        res.scalar("chi2_dof_late_" + lb, chi2_per_dof(late), "1", "chi^2 per dof of P(b/d) against 1, last window");
-        res.scalar("grazing_ratio_" + lb, ra.value, "1", "P(b/d > 0.8) / P(b/d < 0.2), whole run");
-        res.scalar("grazing_ratio_err_" + lb, ra.err, "1", "its Poisson error");
-        res.scalar("grazing_z_" + lb, ra.z, "1", "(ratio - 1) / error, whole run");
-        res.scalar("grazing_ratio_late_" + lb, rl.value, "1", "P(b/d > 0.8) / P(b/d < 0.2), last window");
-        res.scalar("grazing_ratio_late_err_" + lb, rl.err, "1", "its Poisson error");
-        res.scalar("grazing_z_late_" + lb, rl.z, "1", "(ratio - 1) / error, last window");
+        for (const bool late : {false, true}) {
+            const auto c = merged(s, pts, k, late ? s.n_windows() - 1 : 0, s.n_windows());
+            const Histogram h = normalise(c);
+            const Ratio ra = grazing_ratio(c);
+            const std::string sfx = late ? "late_" : "", when = late ? "last window" : "whole run";
+            t4.add("P_" + sfx + lb, "1").values = h.p;
+            t4.add("err_" + sfx + lb, "1").values = h.err;
+            res.scalar("collisions_" + sfx + lb, static_cast<double>(h.total), "1",
+                       late ? "pair collisions in the last window, all seeds" : "pair collisions 0 <= t < t_end, all seeds");
+            res.scalar("chi2_dof_" + sfx + lb, chi2_per_dof(c), "1", "chi^2 per dof of P(b/d) against 1, " + when);
+            res.scalar("grazing_ratio_" + sfx + lb, ra.value, "1", "P(b/d > 0.8) / P(b/d < 0.2), " + when);
+            res.scalar("grazing_ratio_" + sfx + "err_" + lb, ra.err, "1", "its Poisson error");
+            res.scalar("grazing_z_" + sfx + lb, ra.z, "1", "(ratio - 1) / error, " + when);
+        }
         if (s.n_seeds() >= 2)
             res.scalar("grazing_ratio_seed_sem_" + lb, grazing_ratio_seed_sem(s, pts, k), "1",
                        "standard error of the mean of the per-seed ratios (compare grazing_ratio_err)");
-        std::uint64_t el = 0, tot = 0;
-        for (std::size_t seed = 0; seed < s.n_seeds(); ++seed) {
-            el += at(s, pts, seed, k).elastic_by_tc;
-            tot += at(s, pts, seed, k).pair_collisions;
-        }
+        const std::uint64_t el = seed_sum(s, pts, k, &PointResult::elastic_by_tc);
+        const std::uint64_t tot = seed_sum(s, pts, k, &PointResult::pair_collisions);
         res.scalar("tc_elastic_fraction_" + lb, tot ? static_cast<double>(el) / static_cast<double>(tot) : NAN, "1",
                    "fraction of collisions made elastic by the TC model (Eq. 7)");
     }
@@ -611,13 +596,9 @@ void fig5_panels(Result& res, const ImpactSpec& s, const std::vector<PointResult
         res.scalar("K_end_over_K0_" + lb, pr.k_end / pr.k0, "1", "translational kinetic energy at t_end over K(0) (seed 0)");
         res.scalar("flow_fraction_end_" + lb, pr.flow_fraction, "1",
                    "K of the velocity field averaged over the stress cells, over K, at t_end (seed 0)");
-        double ff = 0.0, sm = 0.0;
-        for (std::size_t seed = 0; seed < s.n_seeds(); ++seed) {
-            ff += at(s, pts, seed, k).flow_fraction;
-            sm += at(s, pts, seed, k).sigma_max;
-        }
-        res.scalar("flow_fraction_mean_" + lb, ff / static_cast<double>(s.n_seeds()), "1", "flow_fraction_end averaged over seeds");
-        res.scalar("sigma_max_mean_" + lb, sm / static_cast<double>(s.n_seeds()), "N/m", "sigma_max averaged over seeds");
+        const double ns = static_cast<double>(s.n_seeds());
+        res.scalar("flow_fraction_mean_" + lb, seed_sum(s, pts, k, &PointResult::flow_fraction) / ns, "1", "flow_fraction_end averaged over seeds");
+        res.scalar("sigma_max_mean_" + lb, seed_sum(s, pts, k, &PointResult::sigma_max) / ns, "N/m", "sigma_max averaged over seeds");
     }
     Table& tm = res.table("fig5_meta", "per panel: r, box side, arrow scale, sigma_max, rms speed at t_end");
     tm.add("r", "1").values = s.restitutions;

@@ -31,6 +31,7 @@
 #include "harness/experiment.hpp"
 #include "harness/distributed_sweep.hpp"
 #include "harness/run_log.hpp"
+#include "scenarios/ed_gas.hpp"
 
 namespace granrepro::experiments {
 
@@ -92,15 +93,9 @@ Trace run_point(const ParameterStudySpec& s, const Point& pt, std::uint64_t seed
     const double L = s.box_over_d * s.d;
     const std::vector<double> rad(n, 0.5 * s.d), mass(n, s.mass);
     RngStream rng(seed, stream);
-    const EquilibratedGas gas = equilibrated_lattice_gas(L, rad, mass, s.vbar, s.equilibration, rng);
-
-    EdConfig cfg;
-    cfg.lx = cfg.ly = L;
-    cfg.law.r = pt.r;
-    cfg.law.mu = s.mu;
-    cfg.law.beta0 = s.mu > 0 ? 0.0 : -1.0;
-    cfg.t_c = pt.t_c;
-    EdEngine eng(cfg, gas.pos, gas.vel, rad, mass); // t = 0: dissipation switched on
+    const EquilibratedGas gas =
+        equilibrated_lattice_gas(L, maxwellian_velocities(mass, s.vbar, rng), rad, mass, s.vbar, s.equilibration);
+    EdEngine eng(rough_disk_box(L, pt.r, s.mu, pt.t_c), gas.pos, gas.vel, rad, mass); // t = 0: dissipation switched on
 
     Trace tr;
     auto sample = [&] {
@@ -151,12 +146,6 @@ double ln_k_at_t(const Trace& tr, double t) {
             return std::log(tr.k(i - 1) / tr.k(0)) * (1 - f) + std::log(tr.k(i) / tr.k(0)) * f;
         }
     return NAN;
-}
-
-std::string label(const char* prefix, double v) {
-    char buf[48];
-    std::snprintf(buf, sizeof buf, "%s%g", prefix, v);
-    return buf;
 }
 
 // c of ln(K/K0) = -c C/N, a line through the origin, over C/N <= cn_max (GSL weighted-free fit);
@@ -302,8 +291,8 @@ void report_totals(Result& res, const ParameterStudySpec& s, const Sweep& sw) {
 
 // Seed 0 of one point as it ran (the paper shows single runs), with Eq. (18)'s line.
 void report_seed0(Result& res, const Trace& tr, const Point& pt, const std::string& tag) {
-    Table& t = res.table("run_" + tag, "seed 0: K/K0, anisotropy, C/N against t for r = " + label("", pt.r) +
-                                           ", t_c = " + label("", pt.t_c) + " s");
+    Table& t = res.table("run_" + tag, "seed 0: K/K0, anisotropy, C/N against t for r = " + number_text(pt.r) +
+                                           ", t_c = " + number_text(pt.t_c) + " s");
     std::vector<double> kk, an, line;
     const double c_th = (1 - pt.r * pt.r) / 2;
     for (std::size_t i = 0; i < tr.t.size(); ++i) {
@@ -329,7 +318,7 @@ void report_points(Result& res, Sweep& sw, const std::vector<double>& cn_grid) {
     };
     for (std::size_t k = 0; k < sw.points.size(); ++k) {
         const Point& pt = sw.points[k];
-        const std::string tag = label("r", pt.r) + label("_tc", pt.t_c);
+        const std::string tag = "r" + number_text(pt.r) + "_tc" + number_text(pt.t_c);
         report_seed0(res, sw.traces[k][0], pt, tag);
         sw.mean_cn.push_back(mean_curve(sw.traces[k], cn_grid, ln_k_at_cn));
         double t_lo = INFINITY;
@@ -381,7 +370,7 @@ std::vector<Fig8Row> report_fig8_rows(Result& res, const ParameterStudySpec& s, 
                                                      median_of(column(runs, &Fig8Run::onset)),
                                                      mean_of(column(runs, &Fig8Run::max_aniso)),
                                                      mean_of(column(runs, &Fig8Run::early_aniso))});
-        const std::string rl = label("_r", r), rv = label("", r);
+        const std::string rv = number_text(r), rl = "_r" + rv;
         res.scalar("c_fit" + rl, f.c_fit, "1", "fitted c of K/K0 = exp(-c C/N) over the first exp_fit_efolds, seed mean, r = " + rv);
         res.scalar("c_fit_err" + rl, f.c_err, "1", "its standard error over the seeds");
         res.scalar("c_over_theory" + rl, f.c_fit / cth, "1", "fitted c over (1 - r^2)/2 from Eq. (18), r = " + rv);
@@ -490,7 +479,7 @@ Fig9 report_fig9_rows(Result& res, const ParameterStudySpec& s, const Sweep& sw,
         double el = 0;
         for (const Trace& tr : sw.traces[k]) el += tr.elastic_cn.back() / tr.cn.back();
         row.el_frac = el / double(sw.traces[k].size());
-        const std::string tl = label("_tc", row.t_c), tv = label("", row.t_c);
+        const std::string tv = number_text(row.t_c), tl = "_tc" + tv;
         res.scalar("zeta_early" + tl, row.z1, "1", "-d log K / d log(C/N) of the seed mean over zeta_fit_early, t_c = " + tv + " s");
         res.scalar("zeta_early_err" + tl, row.z1e, "1", "its uncertainty: standard error of the single-seed exponents");
         res.scalar("zeta_late" + tl, row.z2, "1", "-d log K / d log(C/N) of the seed mean over zeta_fit_late, t_c = " + tv + " s");

@@ -123,4 +123,16 @@ double first_upward_crossing(const std::vector<double>& x, const std::vector<dou
     return std::numeric_limits<double>::quiet_NaN();
 }
 
+double fit_haff_inv_t0(const std::vector<double>& t, const std::vector<double>& k_over_k0, double t0) {
+    std::vector<double> x, y;
+    for (std::size_t i = 0; i < t.size(); ++i)
+        if (t[i] > 0 && t[i] <= t0) {
+            x.push_back(t[i]);
+            y.push_back(1 / std::sqrt(k_over_k0[i]) - 1);
+        }
+    double c1 = NAN, cov = 0, ss = 0;
+    if (x.size() >= 2) gsl_fit_mul(x.data(), 1, y.data(), 1, x.size(), &c1, &cov, &ss);
+    return c1;
+}
+
 } // namespace granrepro

@@ -34,6 +34,11 @@ PowerLawFit fit_power_law(const std::vector<double>& x, const std::vector<double
 // relative to the curve's scale (floor: the maximum of |b|).
 double max_relative_difference(const std::vector<double>& a, const std::vector<double>& b);
 
+// Haff's law (Luding Eq. 18) fitted to the start of a cooling curve: the line through the origin
+// 1/sqrt(K/K0) - 1 = t/t0 over 0 < t <= t0 (GSL gsl_fit_mul). Returns the fitted 1/t0 [1/s]; NaN
+// below two samples.
+double fit_haff_inv_t0(const std::vector<double>& t, const std::vector<double>& k_over_k0, double t0);
+
 // First x at which y crosses `level` upwards (linear interpolation in log x); NaN if never.
 double first_upward_crossing(const std::vector<double>& x, const std::vector<double>& y, double level);
 

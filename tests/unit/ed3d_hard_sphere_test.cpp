@@ -3,6 +3,7 @@
 // with the Carnahan-Starling contact value, and the impact-parameter moments of P(b/d) = 2 b/d.
 #include "engines/ed3d/hard_sphere_gas.hpp"
 #include "core/rng_stream.hpp"
+#include "scenarios/hard_sphere_lattice.hpp"
 
 #include <gtest/gtest.h>
 
@@ -14,23 +15,11 @@ using namespace granrepro;
 
 namespace {
 
-// n^3 spheres on a simple cubic lattice in a cube sized for packing fraction eta, Gaussian
-// velocities with zero total momentum.
+// n^3 spheres of diameter 1 on a simple cubic lattice at packing fraction eta, unit Gaussian
+// velocity components with zero total momentum (src/scenarios/hard_sphere_lattice.hpp).
 HardSphereGas3D gas(int n, double eta, std::uint64_t seed) {
-    const double d = 1.0;
-    const double box = std::cbrt(double(n * n * n) * M_PI / 6 / eta) * d;
     RngStream rng(seed, 0);
-    std::vector<Vec3> r, v;
-    Vec3 mean;
-    for (int a = 0; a < n; ++a)
-        for (int b = 0; b < n; ++b)
-            for (int c = 0; c < n; ++c) {
-                r.push_back({(a + 0.5) * box / n, (b + 0.5) * box / n, (c + 0.5) * box / n});
-                v.push_back({rng.normal(), rng.normal(), rng.normal()});
-                mean += v.back();
-            }
-    for (Vec3& x : v) x -= mean * (1.0 / double(v.size()));
-    return HardSphereGas3D(r, v, d, box);
+    return simple_cubic_gas(n, eta, 1.0, 1.0, rng);
 }
 
 } // namespace

@@ -130,22 +130,4 @@ std::vector<Vec2> uniform_velocities(std::size_t n, double v0, RngStream& rng) {
     return v;
 }
 
-EquilibratedGas equilibrated_lattice_gas(double L, const std::vector<double>& radius, const std::vector<double>& mass,
-                                         double vbar, double collisions_per_particle, RngStream& rng) {
-    const std::size_t n = mass.size();
-    std::vector<Vec2> vel = maxwellian_velocities(mass, vbar, rng);
-    zero_momentum_and_scale(vel, mass, vbar);
-    EdConfig cfg;
-    cfg.lx = cfg.ly = L;
-    cfg.law.r = 1.0;
-    EdEngine eq(cfg, square_lattice_positions(n, L, L), vel, radius, mass);
-    equilibrate(eq, collisions_per_particle);
-    EquilibratedGas gas;
-    gas.collision_rate = 2.0 * double(eq.total_collisions()) / double(n) / eq.time();
-    gas.pos = eq.positions();
-    gas.vel = eq.velocities();
-    zero_momentum_and_scale(gas.vel, mass, vbar);
-    return gas;
-}
-
 } // namespace granrepro

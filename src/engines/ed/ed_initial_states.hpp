@@ -55,16 +55,4 @@ void equilibrate(BasicEdEngine<Queue, Collision>& engine, double collisions_per_
         engine.set_wall_law(w, saved.walls[w].r, saved.walls[w].mu, saved.walls[w].beta0);
 }
 
-// The start of Luding's free-cooling runs (Secs. 3 and 4): disks of the given radii and masses on
-// a square lattice in a periodic L x L box [m], Maxwellian velocities with zero momentum and
-// v̄ = vbar [m/s], equilibrated elastically for collisions_per_particle, then rescaled to vbar
-// (the elastic run conserves energy; the rescale removes round-off).
-struct EquilibratedGas {
-    std::vector<Vec2> pos;       // [m]
-    std::vector<Vec2> vel;       // [m/s]
-    double collision_rate = 0.0; // collisions per particle and second during the equilibration [1/s]
-};
-EquilibratedGas equilibrated_lattice_gas(double L, const std::vector<double>& radius, const std::vector<double>& mass,
-                                         double vbar, double collisions_per_particle, RngStream& rng);
-
 } // namespace granrepro
