@@ -17,21 +17,16 @@ Scale parse_scale(const std::string& s) {
     throw InputError("--scale " + s + ": must be 'quick' or 'paper'");
 }
 
-std::string number_text(double x) {
+std::string number_text(double x, int precision) {
     std::ostringstream os;
-    os.precision(6);
+    os.precision(precision);
     os << x;
     return os.str();
 }
 
 namespace {
 
-std::string fmt(double x) {
-    std::ostringstream os;
-    os.precision(10);
-    os << x;
-    return os.str();
-}
+std::string fmt(double x) { return number_text(x, 10); }
 
 std::string kind_text(Parameter::Kind k) {
     switch (k) {
@@ -50,10 +45,7 @@ std::string toml_text(const toml::value& v) {
     if (v.is_boolean()) return v.as_boolean() ? "true" : "false";
     if (v.is_array()) {
         std::string out;
-        for (const auto& e : v.as_array()) {
-            if (!out.empty()) out += ",";
-            out += toml_text(e);
-        }
+        for (const auto& e : v.as_array()) out += (out.empty() ? "" : ",") + toml_text(e);
         return out;
     }
     return "?";
@@ -88,13 +80,17 @@ std::string Parameter::allowed_text() const {
 
 namespace {
 
+// A finite number in p's range.
+bool allowed_number(const Parameter& p, const std::string& text, double& x) {
+    return parse_double(text, x) && std::isfinite(x) && (!p.has_range || p.range.contains(x));
+}
+
 // Parses `text` into p according to its kind and checks range/choices; false when not allowed.
 bool assign(Parameter& p, const std::string& text) {
     switch (p.kind) {
     case Parameter::Kind::Real: {
         double x;
-        if (!parse_double(text, x) || !std::isfinite(x)) return false;
-        if (p.has_range && !p.range.contains(x)) return false;
+        if (!allowed_number(p, text, x)) return false;
         p.real = x;
         return true;
     }
@@ -121,8 +117,7 @@ bool assign(Parameter& p, const std::string& text) {
         std::string item;
         while (std::getline(ss, item, ',')) {
             double x;
-            if (!parse_double(item, x) || !std::isfinite(x)) return false;
-            if (p.has_range && !p.range.contains(x)) return false;
+            if (!allowed_number(p, item, x)) return false;
             xs.push_back(x);
         }
         if (xs.empty()) return false;
@@ -191,8 +186,7 @@ ParameterSet ParameterSet::load(const std::filesystem::path& file, Scale scale) 
             p.has_range = true;
             p.range = Interval::parse(range);
         }
-        if (t.count("choices"))
-            for (const auto& c : toml::find<std::vector<std::string>>(spec, "choices")) p.choices.push_back(c);
+        if (t.count("choices")) p.choices = toml::find<std::vector<std::string>>(spec, "choices");
         const toml::value* quick = nullptr;
         const toml::value* paper = nullptr;
         if (t.count("value")) quick = paper = &t.at("value");
@@ -252,10 +246,6 @@ const Parameter& ParameterSet::get(const std::string& name) const {
         if (p.name == name) return p;
     // The experiment's code needs it: a table renamed or removed in the experiment file.
     throw InputError(file_ + ": missing [parameters." + name + "] (the experiment needs it)");
-}
-
-bool ParameterSet::has(const std::string& name) const {
-    return std::any_of(params_.begin(), params_.end(), [&](const Parameter& p) { return p.name == name; });
 }
 
 const Parameter& ParameterSet::find(const std::string& name, Parameter::Kind kind) const {

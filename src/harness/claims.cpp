@@ -19,12 +19,7 @@ const char* to_string(Verdict v) {
 }
 
 namespace {
-std::string num(double x) {
-    std::ostringstream os;
-    os.precision(4);
-    os << x;
-    return os.str();
-}
+std::string num(double x) { return number_text(x, 4); }
 
 std::string band_text(const Band& b) { return "[" + num(b.lo) + ", " + num(b.hi) + "]"; }
 
