@@ -26,9 +26,6 @@ EdBenchResult bench(std::size_t n, double density, double budget, double csf) {
     BasicEdEngine<Queue> eng(cfg, pos, vel, rad, mass);
     equilibrate(eng, 2.0); // leave the lattice before timing
 
-    EdBenchResult r;
-    r.n = n;
-    r.density = density;
     const std::uint64_t e0 = eng.events_processed(), c0 = eng.total_collisions();
     const std::uint64_t chunk = std::max<std::uint64_t>(20000, n / 4);
     const std::clock_t start = std::clock();
@@ -37,14 +34,9 @@ EdBenchResult bench(std::size_t n, double density, double budget, double csf) {
         eng.run_collisions(chunk);
         used = static_cast<double>(std::clock() - start) / CLOCKS_PER_SEC;
     } while (used < budget);
-    r.cpu_seconds = used;
-    r.events = eng.events_processed() - e0;
-    r.collisions = eng.total_collisions() - c0;
-    r.events_per_second = static_cast<double>(r.events) / used;
-    r.collisions_per_second = static_cast<double>(r.collisions) / used;
-    r.bytes_per_particle = static_cast<double>(eng.memory_bytes()) / static_cast<double>(n);
-    r.max_overlap_over_d = eng.max_overlap() / d;
-    return r;
+    return {static_cast<double>(eng.events_processed() - e0) / used,
+            static_cast<double>(eng.total_collisions() - c0) / used,
+            static_cast<double>(eng.memory_bytes()) / static_cast<double>(n)};
 }
 
 } // namespace

@@ -2,20 +2,13 @@
 // periodic square box at area fraction `density`, equilibrated from a square lattice.
 #pragma once
 #include <cstddef>
-#include <cstdint>
 
 namespace granrepro {
 
 struct EdBenchResult {
-    std::size_t n = 0;
-    double density = 0.0;              // area fraction [-]
-    double cpu_seconds = 0.0;          // CPU time of the timed part [s]
-    std::uint64_t events = 0;          // events processed in the timed part
-    std::uint64_t collisions = 0;      // particle-particle collisions in the timed part
-    double events_per_second = 0.0;    // per CPU second
-    double collisions_per_second = 0.0;
-    double bytes_per_particle = 0.0;   // engine memory / N [B]
-    double max_overlap_over_d = 0.0;   // [-]
+    double events_per_second = 0.0;     // per CPU second
+    double collisions_per_second = 0.0; // particle-particle collisions per CPU second
+    double bytes_per_particle = 0.0;    // engine memory / N [B]
 };
 
 // queue: 0 = engine default (EdEngine), 1 = CalendarQueue, 2 = BinaryHeapQueue, 4 = QuaternaryHeapQueue.

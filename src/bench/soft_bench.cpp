@@ -58,6 +58,14 @@ struct Timing {
     double wall = NAN, cpu = NAN; // [s]
 };
 
+struct Series {
+    std::vector<double> wall, cpu; // [s]
+    void add(const Timing& t) {
+        wall.push_back(t.wall);
+        cpu.push_back(t.cpu);
+    }
+};
+
 Timing time_advance(Engine& eng, long steps) {
     const double c0 = cpu_now();
     const auto t0 = std::chrono::steady_clock::now();
@@ -183,8 +191,7 @@ void write_lammps_case(const std::filesystem::path& dir, const Engine& eng, cons
 }
 
 struct LammpsRun {
-    double loop_wall = NAN; // "Loop time" [s]
-    double cpu = NAN;       // loop time x CPU use x tasks [s]
+    Timing time; // wall: "Loop time"; cpu: loop time x CPU use x tasks [s]
     long neighbor_builds = -1;
 };
 
@@ -195,19 +202,19 @@ LammpsRun run_lammps(const Lammps& l, const std::filesystem::path& dir, int np) 
     LammpsRun r;
     std::ifstream out(dir / "lmp.out");
     for (std::string line; std::getline(out, line);) {
-        if (line.rfind("Loop time of ", 0) == 0) r.loop_wall = std::atof(line.c_str() + 13);
+        if (line.rfind("Loop time of ", 0) == 0) r.time.wall = std::atof(line.c_str() + 13);
         const auto pct = line.find("% CPU use with ");
         if (pct != std::string::npos) {
             const double use = std::atof(line.c_str()) / 100.0;
             const long tasks = std::atol(line.c_str() + pct + 15);
-            r.cpu = r.loop_wall * use * double(tasks);
+            r.time.cpu = r.time.wall * use * double(tasks);
         }
         if (line.rfind("Neighbor list builds = ", 0) == 0) r.neighbor_builds = std::atol(line.c_str() + 23);
     }
-    if (rc != 0 || !(r.loop_wall > 0)) {
+    if (rc != 0 || !(r.time.wall > 0)) {
         std::fprintf(stderr, "granrepro: LAMMPS run failed (%s); input and output kept in %s\n", cmd.c_str(),
                      dir.c_str());
-        r.loop_wall = NAN;
+        r.time.wall = NAN;
     }
     return r;
 }
@@ -254,7 +261,7 @@ void trajectory_check(const Lammps& l, const std::filesystem::path& dir, const P
     Engine eng = build_pipe(spec);
     write_lammps_case(dir, eng, spec, steps, every);
     const LammpsRun run = run_lammps(l, dir, 1);
-    if (std::isnan(run.loop_wall)) return;
+    if (std::isnan(run.time.wall)) return;
     const std::size_t n = eng.size();
     const std::vector<Frame> frames = read_dump(dir / "traj.dump", n);
     const std::vector<double> mass = eng.mass();
@@ -327,40 +334,30 @@ void comparison(const BenchOptions& opt) {
     }
     const bool multi_lmp = !l.lmp.empty() && !l.mpirun.empty() && threads > 1;
 
-    std::vector<double> us1_cpu, us1_wall, usT_cpu, usT_wall, l1_cpu, l1_wall, lT_cpu, lT_wall;
-    std::uint64_t hash1 = 0, hashT = 0;
+    Series us1, usT, l1, lT; // granrepro and LAMMPS on 1 core and on `threads`
+    std::uint64_t hash1 = 0;
     bool identical = true;
     long builds = 0, lmp_builds = -1;
     const double load_before = load_average();
     for (int r = 0; r < opt.repeats; ++r) {
         {
             Engine eng = build_pipe(spec);
-            const Timing t = time_advance(eng, steps);
-            us1_cpu.push_back(t.cpu);
-            us1_wall.push_back(t.wall);
+            us1.add(time_advance(eng, steps));
             hash1 = state_hash(eng);
             builds = eng.list_builds();
         }
         if (!l.lmp.empty()) {
             const LammpsRun lr = run_lammps(l, dir, 1);
-            l1_cpu.push_back(lr.cpu);
-            l1_wall.push_back(lr.loop_wall);
+            l1.add(lr.time);
             lmp_builds = lr.neighbor_builds;
         }
         if (threads > 1) {
             Engine eng = build_pipe(spec);
             eng.set_threads(threads);
-            const Timing t = time_advance(eng, steps);
-            usT_cpu.push_back(t.cpu);
-            usT_wall.push_back(t.wall);
-            hashT = state_hash(eng);
-            identical = identical && hashT == hash1;
+            usT.add(time_advance(eng, steps));
+            identical = identical && state_hash(eng) == hash1;
         }
-        if (multi_lmp) {
-            const LammpsRun lr = run_lammps(l, dir, threads);
-            lT_cpu.push_back(lr.cpu);
-            lT_wall.push_back(lr.loop_wall);
-        }
+        if (multi_lmp) lT.add(run_lammps(l, dir, threads).time);
     }
     const double load_after = load_average();
     if (!l.lmp.empty() && !std::getenv("GRANREPRO_KEEP_LAMMPS")) std::filesystem::remove_all(dir);
@@ -375,14 +372,14 @@ void comparison(const BenchOptions& opt) {
     std::printf("  Load average (1 min) %.2f before, %.2f after. List builds in the window: ours %ld, LAMMPS %ld.\n",
                 load_before, load_after, builds, lmp_builds);
     std::printf("  %-34s %12s %12s %8s\n", "free-grain steps per second", "granrepro", "LAMMPS", "ratio");
-    row("1 core, per CPU second", us1_cpu, l1_cpu);
-    row("1 core, per wall second", us1_wall, l1_wall);
+    row("1 core, per CPU second", us1.cpu, l1.cpu);
+    row("1 core, per wall second", us1.wall, l1.wall);
     if (threads > 1) {
         char what[64];
         std::snprintf(what, sizeof what, "%d threads / np %d, per wall second", threads, threads);
-        row(what, usT_wall, lT_wall);
+        row(what, usT.wall, lT.wall);
         std::snprintf(what, sizeof what, "%d threads / np %d, per CPU second", threads, threads);
-        row(what, usT_cpu, lT_cpu);
+        row(what, usT.cpu, lT.cpu);
         std::printf("  granrepro with %d threads ends in the state of 1 thread, bit for bit: %s\n", threads,
                     identical ? "yes" : "NO");
     }

@@ -2,13 +2,9 @@
 #include "bench/soft_bench.hpp"
 
 #include <algorithm>
-#include <chrono>
-#include <cstdio>
-#include <functional>
-#include <numeric>
-#include <random>
-#include <vector>
 #include <cmath>
+#include <cstdio>
+#include <vector>
 
 #include "core/input_error.hpp"
 #include "bench/dsmc_bench.hpp"
@@ -20,11 +16,6 @@
 namespace granrepro {
 
 namespace {
-
-struct Measurement {
-    double rate;          // work units per second
-    const char* unit;     // what a work unit is
-};
 
 double median(std::vector<double> v) {
     std::sort(v.begin(), v.end());
@@ -45,23 +36,13 @@ std::vector<double> medians(int repeats, Run run) {
     return out;
 }
 
-void report_simple(const char* name, const char* description, Measurement (*fn)(double), const BenchOptions& opt) {
-    std::vector<double> rates;
-    const char* unit = "";
-    for (int k = 0; k < opt.repeats; ++k) {
-        const Measurement m = fn(opt.seconds);
-        rates.push_back(m.rate);
-        unit = m.unit;
-    }
-    std::sort(rates.begin(), rates.end());
-    std::printf("bench %s: %s\n  median %.4g %s over %d runs (min %.4g, max %.4g)\n", name, description,
-                median(rates), unit, opt.repeats, rates.front(), rates.back());
-}
-
 void bench_impact_report(const BenchOptions& opt) {
-    report_simple("impact", "few-body soft-sphere impacts on a wall row (Schäfer-Wolf Fig. 4 set-up)", [](double s) {
-        return Measurement{run_impact_benchmark(s), "impacts/s"};
-    }, opt);
+    std::vector<double> rates;
+    for (int k = 0; k < opt.repeats; ++k) rates.push_back(run_impact_benchmark(opt.seconds));
+    std::sort(rates.begin(), rates.end());
+    std::printf("bench impact: few-body soft-sphere impacts on a wall row (Schäfer-Wolf Fig. 4 set-up)\n"
+                "  median %.4g impacts/s over %d runs (min %.4g, max %.4g)\n",
+                median(rates), opt.repeats, rates.front(), rates.back());
 }
 
 // Elastic disks at rho = 0.25, periodic: events and collisions per CPU second from N = 1e3 to 1e6.
