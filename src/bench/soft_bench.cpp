@@ -6,15 +6,14 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
-#include <cstring>
 #include <ctime>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 #include <string>
 #include <unistd.h>
 #include <vector>
 
+#include "core/stable_hash.hpp"
 #include "scenarios/pipe_setup.hpp"
 
 namespace granrepro {
@@ -78,14 +77,10 @@ Timing time_advance(Engine& eng, long steps) {
 
 // FNV-1a over the bits of the state in id order.
 std::uint64_t state_hash(const Engine& eng) {
-    std::uint64_t h = 1469598103934665603ull;
+    std::string bits;
     for (const auto* v : {&eng.x(), &eng.y(), &eng.vx(), &eng.vy(), &eng.ax(), &eng.ay()})
-        for (double d : *v) {
-            std::uint64_t b;
-            std::memcpy(&b, &d, sizeof b);
-            h = (h ^ b) * 1099511628211ull;
-        }
-    return h;
+        bits.append(reinterpret_cast<const char*>(v->data()), v->size() * sizeof(double));
+    return fnv1a64(bits);
 }
 
 double median(std::vector<double> v) {

@@ -189,11 +189,8 @@ int plot_all_experiments(const std::filesystem::path& out, const std::vector<std
         for (const auto& f : figures)
             if (experiment_of_figure(f) == e.name) mine.push_back(f);
         if (!figures.empty() && mine.empty()) continue;
-        if (!std::filesystem::exists(out / e.name / "tables")) {
-            missing += (missing.empty() ? "" : ", ") + e.name;
-            continue;
-        }
-        rc |= plot_experiment(e.name, out, mine, strict);
+        if (std::filesystem::exists(out / e.name / "tables")) rc |= plot_experiment(e.name, out, mine, strict);
+        else missing += (missing.empty() ? "" : ", ") + e.name;
     }
     if (!missing.empty()) {
         std::fprintf(stderr, "granrepro: plot --all: no results in %s for: %s\n", out.c_str(), missing.c_str());

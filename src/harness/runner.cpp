@@ -274,11 +274,9 @@ int run_experiment(const std::string& name, const RunOptions& opt, VerdictCounts
             if (fs::exists(png) && !png_complete(png)) throw WriteError(png.string(), "figure cut short (disk full?)");
         }
         const double wall_total = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-        run_log().line("claims: " + [&] {
-            VerdictCounts c;
-            c.add(verdicts);
-            return c.text();
-        }());
+        VerdictCounts counts;
+        counts.add(verdicts);
+        run_log().line("claims: " + counts.text());
         run_log().line("done: wall time " + std::to_string(wall_total) + " s with writing and " +
                        std::to_string(to_render.size()) + " figures");
         run_log().close();
@@ -342,11 +340,8 @@ int check_all(const fs::path& out, const CheckOptions& opt) {
     VerdictCounts totals;
     std::vector<std::string> missing;
     for (const auto& e : experiment_registry()) {
-        if (!has_results(e.name, out)) {
-            missing.push_back(e.name);
-            continue;
-        }
-        rc |= check_experiment(e.name, out, opt, &totals);
+        if (has_results(e.name, out)) rc |= check_experiment(e.name, out, opt, &totals);
+        else missing.push_back(e.name);
     }
     std::printf("totals: %s\n", totals.text().c_str());
     std::fflush(stdout);
