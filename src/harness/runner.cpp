@@ -68,6 +68,9 @@ std::string read_text(const fs::path& p) {
     return ss.str();
 }
 fs::path expected_file(const std::string& name) { return project_root() / "expected" / (name + ".toml"); }
+bool makes(const ExperimentInfo& info, const std::string& figure) {
+    return std::any_of(info.figures.begin(), info.figures.end(), [&](const auto& f) { return f.id == figure; });
+}
 
 // A PNG ends with its IEND chunk; gnuplot does not report a write that ran out of space, so a
 // figure cut short is found here.
@@ -149,11 +152,8 @@ int run_experiment(const std::string& name, const RunOptions& opt, VerdictCounts
     const Experiment& exp = find_experiment(name);
     const ExperimentInfo info = experiment_info(name);
     const ParameterSet params = resolve_parameters(name, opt);
-    for (const auto& f : opt.figures) {
-        bool found = false;
-        for (const auto& fi : info.figures) found = found || fi.id == f;
-        if (!found) throw InputError("figure " + f + " is not made by experiment " + name);
-    }
+    for (const auto& f : opt.figures)
+        if (!makes(info, f)) throw InputError("figure " + f + " is not made by experiment " + name);
     // Read the claims before spending time on the run: a broken file is an input error.
     const auto claims = load_claims(expected_file(name), name);
     ensure_writable_directory(opt.out, "--out");
@@ -164,13 +164,16 @@ int run_experiment(const std::string& name, const RunOptions& opt, VerdictCounts
     // Shards of one sweep share the lock (each point is its own file), a whole run or `gather`
     // holds it alone; MPI ranks other than 0 run under rank 0's lock. Only a lone holder may
     // clean leftovers: a shard's in-flight point files look like a dead run's.
-    const bool shard_run = opt.sweep.mode == SweepPlan::Mode::Shard ||
-                           (opt.sweep.mode == SweepPlan::Mode::All && opt.shard_from_slurm && exp.distributed &&
-                            slurm_array_shard().has_value());
+    SweepPlan plan = opt.sweep;
+    if (plan.mode == SweepPlan::Mode::All && opt.shard_from_slurm && exp.distributed)
+        if (const auto shard = slurm_array_shard()) plan = *shard;
+    const bool shard_run = plan.mode == SweepPlan::Mode::Shard;
+    const int ranks = mpi::size();
+    const bool rank0 = mpi::rank() == 0;
     std::optional<OutputLock> lock;
-    if (mpi::rank() == 0) lock.emplace(opt.out, name, shard_run ? OutputLock::Mode::Shared : OutputLock::Mode::Exclusive);
+    if (rank0) lock.emplace(opt.out, name, shard_run ? OutputLock::Mode::Shared : OutputLock::Mode::Exclusive);
     const fs::path work_dir = opt.out / ("." + name + ".checkpoint");
-    if (mpi::rank() == 0 && !shard_run) {
+    if (rank0 && !shard_run) {
         clean_staging_leftovers(final_dir, opt.quiet);
         clean_temporary_leftovers(work_dir);
     }
@@ -183,11 +186,6 @@ int run_experiment(const std::string& name, const RunOptions& opt, VerdictCounts
             fs::exists(final_dir / (f.id + ".png")))
             to_render.push_back(f.id);
 
-    const int ranks = mpi::size();
-    const bool rank0 = mpi::rank() == 0;
-    SweepPlan plan = opt.sweep;
-    if (plan.mode == SweepPlan::Mode::All && opt.shard_from_slurm && exp.distributed)
-        if (const auto shard = slurm_array_shard()) plan = *shard;
     if (plan.mode != SweepPlan::Mode::All) {
         const char* what = plan.mode == SweepPlan::Mode::Gather ? "gather" : "--points";
         if (!exp.distributed)
@@ -200,7 +198,7 @@ int run_experiment(const std::string& name, const RunOptions& opt, VerdictCounts
 
     // Shards and ranks > 0 write only checkpoint files (rank 0 writes them under MPI).
     std::optional<StagedDirectory> stage;
-    if (rank0 && plan.mode != SweepPlan::Mode::Shard) stage.emplace(final_dir);
+    if (rank0 && !shard_run) stage.emplace(final_dir);
     // run.log: opened in the staging folder, so it moves into place with the results (rank 0).
     struct CloseLog {
         ~CloseLog() { run_log().close(); }
@@ -387,11 +385,9 @@ int plot_experiment(const std::string& name, const fs::path& out, const std::vec
     const ExperimentInfo info = experiment_info(name);
     std::string known;
     for (const auto& f : info.figures) known += (known.empty() ? "" : ", ") + f.id;
-    for (const auto& id : figures) {
-        bool found = false;
-        for (const auto& f : info.figures) found = found || f.id == id;
-        if (!found) throw InputError("--figure " + id + " is not made by experiment " + name + "; it makes " + known);
-    }
+    for (const auto& id : figures)
+        if (!makes(info, id))
+            throw InputError("--figure " + id + " is not made by experiment " + name + "; it makes " + known);
     const fs::path dir = out / name;
     if (!fs::exists(dir / "tables"))
         throw InputError("plot " + name + ": no results in " + dir.string() + "; run `granrepro " + name + "` first");

@@ -230,7 +230,9 @@ template std::vector<std::uint32_t> H5Object::read_array(const std::string&) con
 template std::vector<std::uint64_t> H5Object::read_array(const std::string&) const;
 
 long H5Object::read_long_attr(const std::string& name) const { return read_scalar_attr<long>(id_, name); }
-std::uint64_t H5Object::read_u64_attr(const std::string& name) const { return read_scalar_attr<std::uint64_t>(id_, name); }
+std::uint64_t H5Object::read_u64_attr(const std::string& name) const {
+    return read_scalar_attr<std::uint64_t>(id_, name);
+}
 double H5Object::read_double_attr(const std::string& name) const { return read_scalar_attr<double>(id_, name); }
 
 std::string H5Object::read_string_attr(const std::string& name) const {
