@@ -9,6 +9,7 @@
 #include <ctime>
 #include <filesystem>
 #include <fstream>
+#include <gsl/gsl_statistics_double.h>
 #include <string>
 #include <unistd.h>
 #include <vector>
@@ -83,12 +84,7 @@ std::uint64_t state_hash(const Engine& eng) {
     return fnv1a64(bits);
 }
 
-double median(std::vector<double> v) {
-    if (v.empty()) return NAN;
-    std::sort(v.begin(), v.end());
-    const std::size_t n = v.size();
-    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
+double median(std::vector<double> v) { return v.empty() ? NAN : gsl_stats_median(v.data(), 1, v.size()); }
 
 std::string shell_output(const std::string& cmd) {
     std::string out;

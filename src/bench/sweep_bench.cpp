@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <gsl/gsl_statistics_double.h>
 #include <numeric>
 #include <fcntl.h>
 #include <regex>
@@ -45,10 +46,7 @@ double timed_run(const std::vector<std::string>& argv) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
-double median(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    return v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
-}
+double median(std::vector<double> v) { return gsl_stats_median(v.data(), 1, v.size()); }
 
 } // namespace
 

@@ -51,35 +51,6 @@ std::string toml_text(const toml::value& v) {
     return "?";
 }
 
-} // namespace
-
-std::string Parameter::value_text() const {
-    switch (kind) {
-    case Kind::Real: return fmt(real);
-    case Kind::Integer: return std::to_string(integer);
-    case Kind::Text: return text;
-    case Kind::Flag: return flag ? "true" : "false";
-    default: {
-        std::string out;
-        for (double x : reals) out += (out.empty() ? "" : ",") + fmt(x);
-        return out;
-    }
-    }
-}
-
-std::string Parameter::allowed_text() const {
-    std::string out = kind_text(kind);
-    if (kind == Kind::Text) {
-        for (std::size_t i = 0; i < choices.size(); ++i) out += (i ? ", " : " ") + choices[i];
-    } else if (has_range) {
-        out += (kind == Kind::RealList ? ", each in " : " in ") + range.text;
-    }
-    if (!unit.empty() && unit != "1" && kind != Kind::Text && kind != Kind::Flag) out += " [" + unit + "]";
-    return out;
-}
-
-namespace {
-
 // A finite number in p's range.
 bool allowed_number(const Parameter& p, const std::string& text, double& x) {
     return parse_double(text, x) && std::isfinite(x) && (!p.has_range || p.range.contains(x));
@@ -137,7 +108,49 @@ Parameter::Kind kind_of(const toml::value& v) {
     throw InputError("unsupported parameter type");
 }
 
+// The parameters behind a refusal: those the user changed with --set (they are the likely cause),
+// or all of them when none was changed.
+std::string named_values(const ParameterSet& set, const std::vector<std::string>& names) {
+    std::vector<std::string> shown;
+    for (const auto& n : names)
+        if (set.get(n).overridden) shown.push_back(n);
+    if (shown.empty()) shown = names;
+    std::string out;
+    for (const auto& n : shown) {
+        const Parameter& p = set.get(n);
+        out += (out.empty() ? "" : ", ") + n + " = " + p.value_text();
+        if (p.kind != Parameter::Kind::Text && p.kind != Parameter::Kind::Flag && !p.unit.empty() && p.unit != "1")
+            out += " " + p.unit;
+    }
+    return out;
+}
+
 } // namespace
+
+std::string Parameter::value_text() const {
+    switch (kind) {
+    case Kind::Real: return fmt(real);
+    case Kind::Integer: return std::to_string(integer);
+    case Kind::Text: return text;
+    case Kind::Flag: return flag ? "true" : "false";
+    default: {
+        std::string out;
+        for (double x : reals) out += (out.empty() ? "" : ",") + fmt(x);
+        return out;
+    }
+    }
+}
+
+std::string Parameter::allowed_text() const {
+    std::string out = kind_text(kind);
+    if (kind == Kind::Text) {
+        for (std::size_t i = 0; i < choices.size(); ++i) out += (i ? ", " : " ") + choices[i];
+    } else if (has_range) {
+        out += (kind == Kind::RealList ? ", each in " : " in ") + range.text;
+    }
+    if (!unit.empty() && unit != "1" && kind != Kind::Text && kind != Kind::Flag) out += " [" + unit + "]";
+    return out;
+}
 
 ParameterSet ParameterSet::load(const std::filesystem::path& file, Scale scale) {
     const std::string where = file.string();
@@ -271,25 +284,6 @@ const std::vector<double>& ParameterSet::reals(const std::string& n) const {
 void ParameterSet::reject(const std::string& name, const std::string& requirement) const {
     throw InputError(name + " = " + get(name).value_text() + ": " + requirement);
 }
-
-namespace {
-// The parameters behind a refusal: those the user changed with --set (they are the likely cause),
-// or all of them when none was changed.
-std::string named_values(const ParameterSet& set, const std::vector<std::string>& names) {
-    std::vector<std::string> shown;
-    for (const auto& n : names)
-        if (set.get(n).overridden) shown.push_back(n);
-    if (shown.empty()) shown = names;
-    std::string out;
-    for (const auto& n : shown) {
-        const Parameter& p = set.get(n);
-        out += (out.empty() ? "" : ", ") + n + " = " + p.value_text();
-        if (p.kind != Parameter::Kind::Text && p.kind != Parameter::Kind::Flag && !p.unit.empty() && p.unit != "1")
-            out += " " + p.unit;
-    }
-    return out;
-}
-} // namespace
 
 void ParameterSet::reject(const std::vector<std::string>& names, const std::string& requirement) const {
     throw InputError(named_values(*this, names) + ": " + requirement);
