@@ -366,11 +366,9 @@ void comparison(const BenchOptions& opt) {
     row("1 core, per CPU second", us1.cpu, l1.cpu);
     row("1 core, per wall second", us1.wall, l1.wall);
     if (threads > 1) {
-        char what[64];
-        std::snprintf(what, sizeof what, "%d threads / np %d, per wall second", threads, threads);
-        row(what, usT.wall, lT.wall);
-        std::snprintf(what, sizeof what, "%d threads / np %d, per CPU second", threads, threads);
-        row(what, usT.cpu, lT.cpu);
+        const std::string what = std::to_string(threads) + " threads / np " + std::to_string(threads) + ", per ";
+        row((what + "wall second").c_str(), usT.wall, lT.wall);
+        row((what + "CPU second").c_str(), usT.cpu, lT.cpu);
         std::printf("  granrepro with %d threads ends in the state of 1 thread, bit for bit: %s\n", threads,
                     identical ? "yes" : "NO");
     }

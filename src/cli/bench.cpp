@@ -85,27 +85,24 @@ struct Target {
     void (*run)(const BenchOptions&);
 };
 
-const std::vector<Target>& targets() {
-    static const std::vector<Target> t = {
-        {"impact", bench_impact_report},
-        {"soft", bench_soft_report},
-        {"ed", bench_ed_report},
-        {"dsmc", bench_dsmc_report},
-        {"sweep", bench_sweep_report},
-    };
-    return t;
-}
+const Target kTargets[] = {
+    {"impact", bench_impact_report},
+    {"soft", bench_soft_report},
+    {"ed", bench_ed_report},
+    {"dsmc", bench_dsmc_report},
+    {"sweep", bench_sweep_report},
+};
 
 } // namespace
 
 std::string bench_targets() {
     std::string s;
-    for (const auto& t : targets()) s += (s.empty() ? "" : ", ") + std::string(t.name);
+    for (const auto& t : kTargets) s += (s.empty() ? "" : ", ") + std::string(t.name);
     return s;
 }
 
 int run_bench(const std::string& name, const BenchOptions& opt) {
-    for (const auto& t : targets())
+    for (const auto& t : kTargets)
         if (name == t.name) {
             t.run(opt);
             return 0;
