@@ -299,7 +299,7 @@ void ParameterSet::limit_work(const std::vector<std::string>& names, double esti
 nlohmann::json ParameterSet::to_json() const {
     nlohmann::json j = nlohmann::json::object();
     for (const auto& p : params_) {
-        nlohmann::json e;
+        nlohmann::json e = {{"unit", p.unit}, {"source", p.source}};
         switch (p.kind) {
         case Parameter::Kind::Real: e["value"] = p.real; break;
         case Parameter::Kind::Integer: e["value"] = p.integer; break;
@@ -307,8 +307,6 @@ nlohmann::json ParameterSet::to_json() const {
         case Parameter::Kind::Flag: e["value"] = p.flag; break;
         case Parameter::Kind::RealList: e["value"] = p.reals; break;
         }
-        e["unit"] = p.unit;
-        e["source"] = p.source;
         if (p.overridden) e["overridden"] = true;
         j[p.name] = e;
     }

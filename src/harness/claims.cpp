@@ -257,15 +257,12 @@ std::string format_deviation_explanations(const std::vector<ClaimResult>& result
 nlohmann::json claims_to_json(const std::vector<ClaimResult>& results) {
     nlohmann::json arr = nlohmann::json::array();
     for (const auto& r : results) {
-        nlohmann::json j;
-        j["id"] = r.claim.id;
-        j["statement"] = r.claim.statement;
-        j["source"] = r.claim.source;
-        j["expected"] = r.expected_text;
-        j["tolerance"] = r.tolerance_text;
-        j["tolerance_reason"] = r.claim.tolerance_reason;
-        j["measured"] = r.measured && std::isfinite(*r.measured) ? nlohmann::json(*r.measured) : nlohmann::json();
-        j["verdict"] = to_string(r.verdict);
+        const bool finite = r.measured && std::isfinite(*r.measured);
+        nlohmann::json j = {{"id", r.claim.id}, {"statement", r.claim.statement}, {"source", r.claim.source},
+                            {"expected", r.expected_text}, {"tolerance", r.tolerance_text},
+                            {"tolerance_reason", r.claim.tolerance_reason},
+                            {"measured", finite ? nlohmann::json(*r.measured) : nlohmann::json()},
+                            {"verdict", to_string(r.verdict)}};
         if (!r.claim.known_deviation.empty()) {
             j["known_deviation"] = r.claim.known_deviation;
             j["deviation_band"] = r.band_text; // text: JSON has no infinity

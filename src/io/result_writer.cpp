@@ -197,25 +197,15 @@ nlohmann::json scalars_json(const Result& result) {
 }
 
 nlohmann::json summary_json(const Provenance& prov, const ParameterSet& params, const Result& result) {
-    nlohmann::json j;
-    j["schema"] = "granrepro-summary";
-    j["schema_version"] = 1;
-    j["experiment"] = prov.experiment;
-    j["scale"] = to_string(prov.scale);
-    j["seed"] = prov.seed;
-    j["code_version"] = code_version();
-    j["wall_time_s"] = prov.wall_time_s;
-    j["command_line"] = prov.command_line;
-    nlohmann::json sets = nlohmann::json::object();
+    nlohmann::json sets = nlohmann::json::object(), units = nlohmann::json::object();
     for (const auto& p : params.all())
         if (p.overridden) sets[p.name] = p.value_text();
-    j["overridden_parameters"] = sets;
-    j["scalars"] = scalars_json(result);
-    nlohmann::json units = nlohmann::json::object();
     for (const auto& s : result.scalars) units[s.name] = s.unit;
-    j["units"] = units;
-    j["parameters"] = params.to_json();
-    return j;
+    return {{"schema", "granrepro-summary"}, {"schema_version", 1}, {"experiment", prov.experiment},
+            {"scale", to_string(prov.scale)}, {"seed", prov.seed}, {"code_version", code_version()},
+            {"wall_time_s", prov.wall_time_s}, {"command_line", prov.command_line},
+            {"overridden_parameters", sets}, {"scalars", scalars_json(result)}, {"units", units},
+            {"parameters", params.to_json()}};
 }
 
 std::vector<std::string> write_compact_result_h5(const std::filesystem::path& src, const std::filesystem::path& dst,
