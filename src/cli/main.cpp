@@ -4,7 +4,7 @@
 // results), 2 bad input, 3 results could not be written (disk full, I/O error; the previous
 // results are untouched), 130/143 interrupted by SIGINT/SIGTERM (core/interrupt.hpp).
 #include <CLI/CLI.hpp>
-#include <cerrno>
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -42,12 +42,10 @@ std::string command_line; // argv joined, shell-quoted where needed
 // 18446744073709551615, accepts --checkpoint-interval nan and answers --threads abc with
 // "Value abc not in range". Each refusal is one line naming the flag and what is allowed.
 std::uint64_t parse_seed(const std::string& text) {
-    const std::string allowed = "--seed " + text + ": must be an integer in [0, 18446744073709551615]";
-    if (text.empty() || text.size() > 20 || text.find_first_not_of("0123456789") != std::string::npos)
-        throw InputError(allowed);
-    errno = 0;
-    const unsigned long long v = std::strtoull(text.c_str(), nullptr, 10);
-    if (errno == ERANGE) throw InputError(allowed);
+    std::uint64_t v = 0;
+    const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
+    if (text.empty() || text.size() > 20 || ec != std::errc() || end != text.data() + text.size())
+        throw InputError("--seed " + text + ": must be an integer in [0, 18446744073709551615]");
     return v;
 }
 

@@ -23,8 +23,6 @@ std::string num(double x) { return number_text(x, 4); }
 
 std::string band_text(const Band& b) { return "[" + num(b.lo) + ", " + num(b.hi) + "]"; }
 
-const char* const kScaleNames[] = {"quick", "paper"};
-
 const std::string kClaimKeys[] = {"id",     "statement", "source",           "measured",        "paper",
                                   "rel_tol", "abs_tol",  "min",              "max",             "tolerance_reason",
                                   "scales", "known_deviation", "deviation_band", "deviation_band_reason"};
@@ -164,9 +162,10 @@ std::vector<Claim> load_claims(const std::filesystem::path& file, const std::str
             } else {
                 // A known deviation is a measured result: it needs its own band at every scale
                 // where the claim applies, so that the deviation itself can still fail.
-                for (const char* scale : kScaleNames)
-                    if (k.applies_to(parse_scale(scale)) && !k.band_for(parse_scale(scale)))
-                        throw InputError(claim_where + ": known_deviation needs deviation_band for scale " + scale +
+                for (const Scale scale : {Scale::Quick, Scale::Paper})
+                    if (k.applies_to(scale) && !k.band_for(scale))
+                        throw InputError(claim_where + ": known_deviation needs deviation_band for scale " +
+                                         to_string(scale) +
                                          " (deviation_band = [lo, hi] or { quick = [lo, hi], paper = [lo, hi] })");
                 if (k.deviation_band_reason.empty())
                     throw InputError(claim_where + ": known_deviation needs deviation_band_reason (where the band comes from)");

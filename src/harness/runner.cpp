@@ -94,12 +94,9 @@ std::string json_kind(const nlohmann::json& j) {
 }
 
 nlohmann::json read_summary(const fs::path& file, const std::string& name) {
-    nlohmann::json j;
-    try {
-        j = nlohmann::json::parse(read_text(file));
-    } catch (const std::exception&) {
+    nlohmann::json j = nlohmann::json::parse(read_text(file), nullptr, false);
+    if (j.is_discarded())
         throw InputError(file.string() + ": not valid JSON (a damaged file? rerun `granrepro " + name + "`)");
-    }
     const std::string where = file.string() + ": ";
     if (!j.is_object())
         throw InputError(where + "not a granrepro summary (a JSON object expected, found " + json_kind(j) + ")");
