@@ -7,8 +7,7 @@
 #include <vector>
 
 #include "core/input_error.hpp"
-#include "bench/dsmc_bench.hpp"
-#include "bench/ed_bench.hpp"
+#include "bench/hard_disk_bench.hpp"
 #include "bench/impact_bench.hpp"
 #include "bench/memory_latency.hpp"
 #include "bench/sweep_bench.hpp"
@@ -52,7 +51,7 @@ void bench_ed_report(const BenchOptions& opt) {
     double ns_1e4 = NAN, ns_1e6 = NAN, bytes_1e4 = NAN, bytes_1e6 = NAN;
     for (std::size_t n : {std::size_t(1000), std::size_t(10000), std::size_t(100000), std::size_t(1000000)}) {
         const auto q = medians(opt.repeats, [&] {
-            const EdBenchResult r = run_ed_benchmark(n, 0.25, opt.seconds);
+            const HardDiskBenchResult r = run_ed_benchmark(n, 0.25, opt.seconds);
             return std::vector<double>{r.events_per_second, r.collisions_per_second, r.bytes_per_particle};
         });
         const double ns = 1e9 / q[0];
@@ -74,7 +73,7 @@ void bench_dsmc_report(const BenchOptions& opt) {
     std::printf("bench dsmc: elastic smooth disks, periodic box, rho = 0.25, N = 1e5, one core; medians of %d runs\n",
                 opt.repeats);
     const auto q = medians(opt.repeats, [&] {
-        const DsmcBenchResult r = run_dsmc_benchmark(100000, 0.25, opt.seconds);
+        const HardDiskBenchResult r = run_dsmc_benchmark(100000, 0.25, opt.seconds);
         return std::vector<double>{r.collisions_per_second, r.bytes_per_particle};
     });
     std::printf("  collisions/s %.4g, bytes/particle %.0f\n", q[0], q[1]);
