@@ -23,14 +23,6 @@ namespace {
 
 using Engine = PipeEngine<LinearSpringDashpot, CoulombShear>;
 
-// gran/hooke caps the shear force at mu |F_N| of the whole normal force (dashpot included): the
-// magnitude reading of Eq. (2). Whatever reading the experiments use, the comparison with LAMMPS
-// runs this one (PipeSpec names the reading once the experiments choose it).
-template <class Spec>
-void use_magnitude_reading(Spec& s) {
-    if constexpr (requires { s.friction_normal; }) s.friction_normal = FrictionNormal::Magnitude;
-}
-
 // The Fig. 6 pipe of the bench: width 2 cm, wall grains 0.66 mm at 1 mm spacing, k_N = 2000 N/m,
 // e_N = 0.95, mu = 0.5, area fraction 0.55, slow start; `length` sets the number of grains
 // (0.111 m: 1498 free grains).
@@ -39,7 +31,10 @@ PipeSpec bench_spec(double length) {
     s.geo.wall_spacing = 1.0e-3;
     s.geo.length = std::round(length / s.geo.wall_spacing) * s.geo.wall_spacing;
     s.e_N = 0.95;
-    use_magnitude_reading(s);
+    // gran/hooke caps the shear force at mu |F_N| of the whole normal force (dashpot included): the
+    // magnitude reading of Eq. (2). Whatever reading the experiments use, the comparison with
+    // LAMMPS runs this one.
+    s.friction_normal = FrictionNormal::Magnitude;
     return s;
 }
 
