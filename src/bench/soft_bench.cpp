@@ -6,15 +6,15 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
-#include <cstring>
 #include <ctime>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
+#include <gsl/gsl_statistics_double.h>
 #include <string>
 #include <unistd.h>
 #include <vector>
 
+#include "core/stable_hash.hpp"
 #include "scenarios/pipe_setup.hpp"
 
 namespace granrepro {
@@ -22,14 +22,6 @@ namespace granrepro {
 namespace {
 
 using Engine = PipeEngine<LinearSpringDashpot, CoulombShear>;
-
-// gran/hooke caps the shear force at mu |F_N| of the whole normal force (dashpot included): the
-// magnitude reading of Eq. (2). Whatever reading the experiments use, the comparison with LAMMPS
-// runs this one (PipeSpec names the reading once the experiments choose it).
-template <class Spec>
-void use_magnitude_reading(Spec& s) {
-    if constexpr (requires { s.friction_normal; }) s.friction_normal = FrictionNormal::Magnitude;
-}
 
 // The Fig. 6 pipe of the bench: width 2 cm, wall grains 0.66 mm at 1 mm spacing, k_N = 2000 N/m,
 // e_N = 0.95, mu = 0.5, area fraction 0.55, slow start; `length` sets the number of grains
@@ -39,7 +31,10 @@ PipeSpec bench_spec(double length) {
     s.geo.wall_spacing = 1.0e-3;
     s.geo.length = std::round(length / s.geo.wall_spacing) * s.geo.wall_spacing;
     s.e_N = 0.95;
-    use_magnitude_reading(s);
+    // gran/hooke caps the shear force at mu |F_N| of the whole normal force (dashpot included): the
+    // magnitude reading of Eq. (2). Whatever reading the experiments use, the comparison with
+    // LAMMPS runs this one.
+    s.friction_normal = FrictionNormal::Magnitude;
     return s;
 }
 
@@ -58,6 +53,14 @@ struct Timing {
     double wall = NAN, cpu = NAN; // [s]
 };
 
+struct Series {
+    std::vector<double> wall, cpu; // [s]
+    void add(const Timing& t) {
+        wall.push_back(t.wall);
+        cpu.push_back(t.cpu);
+    }
+};
+
 Timing time_advance(Engine& eng, long steps) {
     const double c0 = cpu_now();
     const auto t0 = std::chrono::steady_clock::now();
@@ -70,22 +73,13 @@ Timing time_advance(Engine& eng, long steps) {
 
 // FNV-1a over the bits of the state in id order.
 std::uint64_t state_hash(const Engine& eng) {
-    std::uint64_t h = 1469598103934665603ull;
+    std::string bits;
     for (const auto* v : {&eng.x(), &eng.y(), &eng.vx(), &eng.vy(), &eng.ax(), &eng.ay()})
-        for (double d : *v) {
-            std::uint64_t b;
-            std::memcpy(&b, &d, sizeof b);
-            h = (h ^ b) * 1099511628211ull;
-        }
-    return h;
+        bits.append(reinterpret_cast<const char*>(v->data()), v->size() * sizeof(double));
+    return fnv1a64(bits);
 }
 
-double median(std::vector<double> v) {
-    if (v.empty()) return NAN;
-    std::sort(v.begin(), v.end());
-    const std::size_t n = v.size();
-    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
+double median(std::vector<double> v) { return v.empty() ? NAN : gsl_stats_median(v.data(), 1, v.size()); }
 
 std::string shell_output(const std::string& cmd) {
     std::string out;
@@ -183,8 +177,7 @@ void write_lammps_case(const std::filesystem::path& dir, const Engine& eng, cons
 }
 
 struct LammpsRun {
-    double loop_wall = NAN; // "Loop time" [s]
-    double cpu = NAN;       // loop time x CPU use x tasks [s]
+    Timing time; // wall: "Loop time"; cpu: loop time x CPU use x tasks [s]
     long neighbor_builds = -1;
 };
 
@@ -195,19 +188,19 @@ LammpsRun run_lammps(const Lammps& l, const std::filesystem::path& dir, int np) 
     LammpsRun r;
     std::ifstream out(dir / "lmp.out");
     for (std::string line; std::getline(out, line);) {
-        if (line.rfind("Loop time of ", 0) == 0) r.loop_wall = std::atof(line.c_str() + 13);
+        if (line.rfind("Loop time of ", 0) == 0) r.time.wall = std::atof(line.c_str() + 13);
         const auto pct = line.find("% CPU use with ");
         if (pct != std::string::npos) {
             const double use = std::atof(line.c_str()) / 100.0;
             const long tasks = std::atol(line.c_str() + pct + 15);
-            r.cpu = r.loop_wall * use * double(tasks);
+            r.time.cpu = r.time.wall * use * double(tasks);
         }
         if (line.rfind("Neighbor list builds = ", 0) == 0) r.neighbor_builds = std::atol(line.c_str() + 23);
     }
-    if (rc != 0 || !(r.loop_wall > 0)) {
+    if (rc != 0 || !(r.time.wall > 0)) {
         std::fprintf(stderr, "granrepro: LAMMPS run failed (%s); input and output kept in %s\n", cmd.c_str(),
                      dir.c_str());
-        r.loop_wall = NAN;
+        r.time.wall = NAN;
     }
     return r;
 }
@@ -254,7 +247,7 @@ void trajectory_check(const Lammps& l, const std::filesystem::path& dir, const P
     Engine eng = build_pipe(spec);
     write_lammps_case(dir, eng, spec, steps, every);
     const LammpsRun run = run_lammps(l, dir, 1);
-    if (std::isnan(run.loop_wall)) return;
+    if (std::isnan(run.time.wall)) return;
     const std::size_t n = eng.size();
     const std::vector<Frame> frames = read_dump(dir / "traj.dump", n);
     const std::vector<double> mass = eng.mass();
@@ -327,40 +320,30 @@ void comparison(const BenchOptions& opt) {
     }
     const bool multi_lmp = !l.lmp.empty() && !l.mpirun.empty() && threads > 1;
 
-    std::vector<double> us1_cpu, us1_wall, usT_cpu, usT_wall, l1_cpu, l1_wall, lT_cpu, lT_wall;
-    std::uint64_t hash1 = 0, hashT = 0;
+    Series us1, usT, l1, lT; // granrepro and LAMMPS on 1 core and on `threads`
+    std::uint64_t hash1 = 0;
     bool identical = true;
     long builds = 0, lmp_builds = -1;
     const double load_before = load_average();
     for (int r = 0; r < opt.repeats; ++r) {
         {
             Engine eng = build_pipe(spec);
-            const Timing t = time_advance(eng, steps);
-            us1_cpu.push_back(t.cpu);
-            us1_wall.push_back(t.wall);
+            us1.add(time_advance(eng, steps));
             hash1 = state_hash(eng);
             builds = eng.list_builds();
         }
         if (!l.lmp.empty()) {
             const LammpsRun lr = run_lammps(l, dir, 1);
-            l1_cpu.push_back(lr.cpu);
-            l1_wall.push_back(lr.loop_wall);
+            l1.add(lr.time);
             lmp_builds = lr.neighbor_builds;
         }
         if (threads > 1) {
             Engine eng = build_pipe(spec);
             eng.set_threads(threads);
-            const Timing t = time_advance(eng, steps);
-            usT_cpu.push_back(t.cpu);
-            usT_wall.push_back(t.wall);
-            hashT = state_hash(eng);
-            identical = identical && hashT == hash1;
+            usT.add(time_advance(eng, steps));
+            identical = identical && state_hash(eng) == hash1;
         }
-        if (multi_lmp) {
-            const LammpsRun lr = run_lammps(l, dir, threads);
-            lT_cpu.push_back(lr.cpu);
-            lT_wall.push_back(lr.loop_wall);
-        }
+        if (multi_lmp) lT.add(run_lammps(l, dir, threads).time);
     }
     const double load_after = load_average();
     if (!l.lmp.empty() && !std::getenv("GRANREPRO_KEEP_LAMMPS")) std::filesystem::remove_all(dir);
@@ -375,14 +358,12 @@ void comparison(const BenchOptions& opt) {
     std::printf("  Load average (1 min) %.2f before, %.2f after. List builds in the window: ours %ld, LAMMPS %ld.\n",
                 load_before, load_after, builds, lmp_builds);
     std::printf("  %-34s %12s %12s %8s\n", "free-grain steps per second", "granrepro", "LAMMPS", "ratio");
-    row("1 core, per CPU second", us1_cpu, l1_cpu);
-    row("1 core, per wall second", us1_wall, l1_wall);
+    row("1 core, per CPU second", us1.cpu, l1.cpu);
+    row("1 core, per wall second", us1.wall, l1.wall);
     if (threads > 1) {
-        char what[64];
-        std::snprintf(what, sizeof what, "%d threads / np %d, per wall second", threads, threads);
-        row(what, usT_wall, lT_wall);
-        std::snprintf(what, sizeof what, "%d threads / np %d, per CPU second", threads, threads);
-        row(what, usT_cpu, lT_cpu);
+        const std::string what = std::to_string(threads) + " threads / np " + std::to_string(threads) + ", per ";
+        row((what + "wall second").c_str(), usT.wall, lT.wall);
+        row((what + "CPU second").c_str(), usT.cpu, lT.cpu);
         std::printf("  granrepro with %d threads ends in the state of 1 thread, bit for bit: %s\n", threads,
                     identical ? "yes" : "NO");
     }

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <gsl/gsl_statistics_double.h>
 #include <numeric>
 #include <fcntl.h>
 #include <regex>
@@ -45,10 +46,7 @@ double timed_run(const std::vector<std::string>& argv) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
-double median(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    return v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
-}
+double median(std::vector<double> v) { return gsl_stats_median(v.data(), 1, v.size()); }
 
 } // namespace
 
@@ -133,12 +131,9 @@ void bench_sweep_report(const BenchOptions& opt) {
     const fs::path tmp = fs::temp_directory_path() / ("granrepro-bench-sweep-" + std::to_string(::getpid()));
     // One thread per rank, so that R ranks use R cores; every run starts without a checkpoint.
     auto command = [&](int ranks) {
-        std::vector<std::string> a;
-        if (ranks > 1) a = {"mpirun", "--oversubscribe", "-np", std::to_string(ranks)};
-        for (const std::string& x : {self, opt.experiment, std::string("--scale"), opt.scale, std::string("--threads"),
-                                     std::string("1"), std::string("--quiet"), std::string("--out"),
-                                     (tmp / ("r" + std::to_string(ranks))).string()})
-            a.push_back(x);
+        std::vector<std::string> a = {self, opt.experiment, "--scale", opt.scale, "--threads", "1", "--quiet", "--out",
+                                      (tmp / ("r" + std::to_string(ranks))).string()};
+        if (ranks > 1) a.insert(a.begin(), {"mpirun", "--oversubscribe", "-np", std::to_string(ranks)});
         return a;
     };
     if (geteuid() == 0) { // OpenMPI refuses root without both variables (CI and containers run as root)

@@ -2,17 +2,12 @@
 #include "bench/soft_bench.hpp"
 
 #include <algorithm>
-#include <chrono>
-#include <cstdio>
-#include <functional>
-#include <numeric>
-#include <random>
-#include <vector>
 #include <cmath>
+#include <cstdio>
+#include <vector>
 
 #include "core/input_error.hpp"
-#include "bench/dsmc_bench.hpp"
-#include "bench/ed_bench.hpp"
+#include "bench/hard_disk_bench.hpp"
 #include "bench/impact_bench.hpp"
 #include "bench/memory_latency.hpp"
 #include "bench/sweep_bench.hpp"
@@ -20,11 +15,6 @@
 namespace granrepro {
 
 namespace {
-
-struct Measurement {
-    double rate;          // work units per second
-    const char* unit;     // what a work unit is
-};
 
 double median(std::vector<double> v) {
     std::sort(v.begin(), v.end());
@@ -45,23 +35,13 @@ std::vector<double> medians(int repeats, Run run) {
     return out;
 }
 
-void report_simple(const char* name, const char* description, Measurement (*fn)(double), const BenchOptions& opt) {
-    std::vector<double> rates;
-    const char* unit = "";
-    for (int k = 0; k < opt.repeats; ++k) {
-        const Measurement m = fn(opt.seconds);
-        rates.push_back(m.rate);
-        unit = m.unit;
-    }
-    std::sort(rates.begin(), rates.end());
-    std::printf("bench %s: %s\n  median %.4g %s over %d runs (min %.4g, max %.4g)\n", name, description,
-                median(rates), unit, opt.repeats, rates.front(), rates.back());
-}
-
 void bench_impact_report(const BenchOptions& opt) {
-    report_simple("impact", "few-body soft-sphere impacts on a wall row (Schäfer-Wolf Fig. 4 set-up)", [](double s) {
-        return Measurement{run_impact_benchmark(s), "impacts/s"};
-    }, opt);
+    std::vector<double> rates;
+    for (int k = 0; k < opt.repeats; ++k) rates.push_back(run_impact_benchmark(opt.seconds));
+    std::sort(rates.begin(), rates.end());
+    std::printf("bench impact: few-body soft-sphere impacts on a wall row (Schäfer-Wolf Fig. 4 set-up)\n"
+                "  median %.4g impacts/s over %d runs (min %.4g, max %.4g)\n",
+                median(rates), opt.repeats, rates.front(), rates.back());
 }
 
 // Elastic disks at rho = 0.25, periodic: events and collisions per CPU second from N = 1e3 to 1e6.
@@ -71,7 +51,7 @@ void bench_ed_report(const BenchOptions& opt) {
     double ns_1e4 = NAN, ns_1e6 = NAN, bytes_1e4 = NAN, bytes_1e6 = NAN;
     for (std::size_t n : {std::size_t(1000), std::size_t(10000), std::size_t(100000), std::size_t(1000000)}) {
         const auto q = medians(opt.repeats, [&] {
-            const EdBenchResult r = run_ed_benchmark(n, 0.25, opt.seconds);
+            const HardDiskBenchResult r = run_ed_benchmark(n, 0.25, opt.seconds);
             return std::vector<double>{r.events_per_second, r.collisions_per_second, r.bytes_per_particle};
         });
         const double ns = 1e9 / q[0];
@@ -93,7 +73,7 @@ void bench_dsmc_report(const BenchOptions& opt) {
     std::printf("bench dsmc: elastic smooth disks, periodic box, rho = 0.25, N = 1e5, one core; medians of %d runs\n",
                 opt.repeats);
     const auto q = medians(opt.repeats, [&] {
-        const DsmcBenchResult r = run_dsmc_benchmark(100000, 0.25, opt.seconds);
+        const HardDiskBenchResult r = run_dsmc_benchmark(100000, 0.25, opt.seconds);
         return std::vector<double>{r.collisions_per_second, r.bytes_per_particle};
     });
     std::printf("  collisions/s %.4g, bytes/particle %.0f\n", q[0], q[1]);
@@ -104,27 +84,24 @@ struct Target {
     void (*run)(const BenchOptions&);
 };
 
-const std::vector<Target>& targets() {
-    static const std::vector<Target> t = {
-        {"impact", bench_impact_report},
-        {"soft", bench_soft_report},
-        {"ed", bench_ed_report},
-        {"dsmc", bench_dsmc_report},
-        {"sweep", bench_sweep_report},
-    };
-    return t;
-}
+const Target kTargets[] = {
+    {"impact", bench_impact_report},
+    {"soft", bench_soft_report},
+    {"ed", bench_ed_report},
+    {"dsmc", bench_dsmc_report},
+    {"sweep", bench_sweep_report},
+};
 
 } // namespace
 
 std::string bench_targets() {
     std::string s;
-    for (const auto& t : targets()) s += (s.empty() ? "" : ", ") + std::string(t.name);
+    for (const auto& t : kTargets) s += (s.empty() ? "" : ", ") + std::string(t.name);
     return s;
 }
 
 int run_bench(const std::string& name, const BenchOptions& opt) {
-    for (const auto& t : targets())
+    for (const auto& t : kTargets)
         if (name == t.name) {
             t.run(opt);
             return 0;

@@ -4,11 +4,10 @@
 // results), 2 bad input, 3 results could not be written (disk full, I/O error; the previous
 // results are untouched), 130/143 interrupted by SIGINT/SIGTERM (core/interrupt.hpp).
 #include <CLI/CLI.hpp>
-#include <cerrno>
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <iostream>
 #include <sstream>
 
 #include "cli/bench.hpp"
@@ -43,12 +42,10 @@ std::string command_line; // argv joined, shell-quoted where needed
 // 18446744073709551615, accepts --checkpoint-interval nan and answers --threads abc with
 // "Value abc not in range". Each refusal is one line naming the flag and what is allowed.
 std::uint64_t parse_seed(const std::string& text) {
-    const std::string allowed = "--seed " + text + ": must be an integer in [0, 18446744073709551615]";
-    if (text.empty() || text.size() > 20 || text.find_first_not_of("0123456789") != std::string::npos)
-        throw InputError(allowed);
-    errno = 0;
-    const unsigned long long v = std::strtoull(text.c_str(), nullptr, 10);
-    if (errno == ERANGE) throw InputError(allowed);
+    std::uint64_t v = 0;
+    const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
+    if (text.empty() || text.size() > 20 || ec != std::errc() || end != text.data() + text.size())
+        throw InputError("--seed " + text + ": must be an integer in [0, 18446744073709551615]");
     return v;
 }
 
@@ -189,11 +186,8 @@ int plot_all_experiments(const std::filesystem::path& out, const std::vector<std
         for (const auto& f : figures)
             if (experiment_of_figure(f) == e.name) mine.push_back(f);
         if (!figures.empty() && mine.empty()) continue;
-        if (!std::filesystem::exists(out / e.name / "tables")) {
-            missing += (missing.empty() ? "" : ", ") + e.name;
-            continue;
-        }
-        rc |= plot_experiment(e.name, out, mine, strict);
+        if (std::filesystem::exists(out / e.name / "tables")) rc |= plot_experiment(e.name, out, mine, strict);
+        else missing += (missing.empty() ? "" : ", ") + e.name;
     }
     if (!missing.empty()) {
         std::fprintf(stderr, "granrepro: plot --all: no results in %s for: %s\n", out.c_str(), missing.c_str());
@@ -214,24 +208,6 @@ std::string version_text() {
 } // namespace
 
 // Everything but MPI's set-up: the command line and the subcommands.
-static int run_main(int argc, char** argv);
-
-int main(int argc, char** argv) {
-    // First, before any thread exists: SIGINT/SIGTERM are then handled by one watcher thread.
-    install_interrupt_handling();
-    // Whole lines on stdout even when it is a file: stderr messages then never split a table row.
-    std::setvbuf(stdout, nullptr, _IOLBF, 0);
-    try {
-        mpi::init(argc, argv);
-    } catch (const InputError& e) {
-        std::fprintf(stderr, "granrepro: %s\n", e.what());
-        return 2;
-    }
-    const int code = run_main(argc, argv);
-    mpi::finalize();
-    return code;
-}
-
 static int run_main(int argc, char** argv) {
     for (int i = 0; i < argc; ++i) {
         std::string a = argv[i];
@@ -312,11 +288,7 @@ static int run_main(int argc, char** argv) {
     check->callback([&] {
         if (check_every == !check_name.empty()) throw InputError("check: give one experiment or --all");
         if (check_opt.missing_ok && !check_every) throw InputError("check: --missing-ok needs --all");
-        if (check_every) {
-            rc = check_all(common.out, check_opt);
-        } else {
-            rc = check_experiment(check_name, common.out, check_opt);
-        }
+        rc = check_every ? check_all(common.out, check_opt) : check_experiment(check_name, common.out, check_opt);
     });
 
     std::string plot_name;
@@ -332,11 +304,8 @@ static int run_main(int argc, char** argv) {
     plot->add_option("--out", common.out, "output directory")->capture_default_str();
     plot->callback([&] {
         if (plot_all == !plot_name.empty()) throw InputError("plot: give one experiment or --all");
-        if (plot_all) {
-            rc = plot_all_experiments(common.out, plot_figures, plot_strict);
-        } else {
-            rc = plot_experiment(plot_name, common.out, plot_figures, plot_strict);
-        }
+        rc = plot_all ? plot_all_experiments(common.out, plot_figures, plot_strict)
+                      : plot_experiment(plot_name, common.out, plot_figures, plot_strict);
     });
 
     std::string export_name;
@@ -413,12 +382,12 @@ static int run_main(int argc, char** argv) {
     // An unknown subcommand gets the list of known ones, in one line.
     if (argc > 1 && argv[1][0] != '-') {
         bool known = false;
-        for (const auto* s : app.get_subcommands([](CLI::App*) { return true; }))
+        std::string names;
+        for (const auto* s : app.get_subcommands([](CLI::App*) { return true; })) {
             known = known || s->get_name() == argv[1];
+            names += (names.empty() ? "" : ", ") + s->get_name();
+        }
         if (!known) {
-            std::string names;
-            for (const auto* s : app.get_subcommands([](CLI::App*) { return true; }))
-                names += (names.empty() ? "" : ", ") + s->get_name();
             std::fprintf(stderr, "granrepro: unknown subcommand '%s'; known: %s\n", argv[1], names.c_str());
             return 2;
         }
@@ -426,11 +395,7 @@ static int run_main(int argc, char** argv) {
 
     try {
         app.parse(argc, argv);
-    } catch (const CLI::CallForHelp& e) {
-        return app.exit(e);
-    } catch (const CLI::CallForAllHelp& e) {
-        return app.exit(e);
-    } catch (const CLI::CallForVersion& e) {
+    } catch (const CLI::Success& e) { // --help, --help-all, --version
         return app.exit(e);
     } catch (const CLI::ParseError& e) {
         std::string msg = e.what();
@@ -456,4 +421,20 @@ static int run_main(int argc, char** argv) {
         return 1;
     }
     return rc;
+}
+
+int main(int argc, char** argv) {
+    // First, before any thread exists: SIGINT/SIGTERM are then handled by one watcher thread.
+    install_interrupt_handling();
+    // Whole lines on stdout even when it is a file: stderr messages then never split a table row.
+    std::setvbuf(stdout, nullptr, _IOLBF, 0);
+    try {
+        mpi::init(argc, argv);
+    } catch (const InputError& e) {
+        std::fprintf(stderr, "granrepro: %s\n", e.what());
+        return 2;
+    }
+    const int code = run_main(argc, argv);
+    mpi::finalize();
+    return code;
 }

@@ -17,21 +17,16 @@ Scale parse_scale(const std::string& s) {
     throw InputError("--scale " + s + ": must be 'quick' or 'paper'");
 }
 
-std::string number_text(double x) {
+std::string number_text(double x, int precision) {
     std::ostringstream os;
-    os.precision(6);
+    os.precision(precision);
     os << x;
     return os.str();
 }
 
 namespace {
 
-std::string fmt(double x) {
-    std::ostringstream os;
-    os.precision(10);
-    os << x;
-    return os.str();
-}
+std::string fmt(double x) { return number_text(x, 10); }
 
 std::string kind_text(Parameter::Kind k) {
     switch (k) {
@@ -50,13 +45,84 @@ std::string toml_text(const toml::value& v) {
     if (v.is_boolean()) return v.as_boolean() ? "true" : "false";
     if (v.is_array()) {
         std::string out;
-        for (const auto& e : v.as_array()) {
-            if (!out.empty()) out += ",";
-            out += toml_text(e);
-        }
+        for (const auto& e : v.as_array()) out += (out.empty() ? "" : ",") + toml_text(e);
         return out;
     }
     return "?";
+}
+
+// A finite number in p's range.
+bool allowed_number(const Parameter& p, const std::string& text, double& x) {
+    return parse_double(text, x) && std::isfinite(x) && (!p.has_range || p.range.contains(x));
+}
+
+// Parses `text` into p according to its kind and checks range/choices; false when not allowed.
+bool assign(Parameter& p, const std::string& text) {
+    switch (p.kind) {
+    case Parameter::Kind::Real: {
+        double x;
+        if (!allowed_number(p, text, x)) return false;
+        p.real = x;
+        return true;
+    }
+    case Parameter::Kind::Integer: {
+        long x;
+        if (!parse_long(text, x)) return false;
+        if (p.has_range && !p.range.contains(double(x))) return false;
+        p.integer = x;
+        return true;
+    }
+    case Parameter::Kind::Text:
+        if (!p.choices.empty() && std::find(p.choices.begin(), p.choices.end(), text) == p.choices.end())
+            return false;
+        p.text = text;
+        return true;
+    case Parameter::Kind::Flag:
+        if (text == "true" || text == "1") p.flag = true;
+        else if (text == "false" || text == "0") p.flag = false;
+        else return false;
+        return true;
+    case Parameter::Kind::RealList: {
+        std::vector<double> xs;
+        std::stringstream ss(text);
+        std::string item;
+        while (std::getline(ss, item, ',')) {
+            double x;
+            if (!allowed_number(p, item, x)) return false;
+            xs.push_back(x);
+        }
+        if (xs.empty()) return false;
+        p.reals = xs;
+        return true;
+    }
+    }
+    return false;
+}
+
+Parameter::Kind kind_of(const toml::value& v) {
+    if (v.is_floating()) return Parameter::Kind::Real;
+    if (v.is_integer()) return Parameter::Kind::Integer;
+    if (v.is_string()) return Parameter::Kind::Text;
+    if (v.is_boolean()) return Parameter::Kind::Flag;
+    if (v.is_array()) return Parameter::Kind::RealList;
+    throw InputError("unsupported parameter type");
+}
+
+// The parameters behind a refusal: those the user changed with --set (they are the likely cause),
+// or all of them when none was changed.
+std::string named_values(const ParameterSet& set, const std::vector<std::string>& names) {
+    std::vector<std::string> shown;
+    for (const auto& n : names)
+        if (set.get(n).overridden) shown.push_back(n);
+    if (shown.empty()) shown = names;
+    std::string out;
+    for (const auto& n : shown) {
+        const Parameter& p = set.get(n);
+        out += (out.empty() ? "" : ", ") + n + " = " + p.value_text();
+        if (p.kind != Parameter::Kind::Text && p.kind != Parameter::Kind::Flag && !p.unit.empty() && p.unit != "1")
+            out += " " + p.unit;
+    }
+    return out;
 }
 
 } // namespace
@@ -85,64 +151,6 @@ std::string Parameter::allowed_text() const {
     if (!unit.empty() && unit != "1" && kind != Kind::Text && kind != Kind::Flag) out += " [" + unit + "]";
     return out;
 }
-
-namespace {
-
-// Parses `text` into p according to its kind and checks range/choices; false when not allowed.
-bool assign(Parameter& p, const std::string& text) {
-    switch (p.kind) {
-    case Parameter::Kind::Real: {
-        double x;
-        if (!parse_double(text, x) || !std::isfinite(x)) return false;
-        if (p.has_range && !p.range.contains(x)) return false;
-        p.real = x;
-        return true;
-    }
-    case Parameter::Kind::Integer: {
-        long x;
-        if (!parse_long(text, x)) return false;
-        if (p.has_range && !p.range.contains(double(x))) return false;
-        p.integer = x;
-        return true;
-    }
-    case Parameter::Kind::Text:
-        if (!p.choices.empty() && std::find(p.choices.begin(), p.choices.end(), text) == p.choices.end())
-            return false;
-        p.text = text;
-        return true;
-    case Parameter::Kind::Flag:
-        if (text == "true" || text == "1") p.flag = true;
-        else if (text == "false" || text == "0") p.flag = false;
-        else return false;
-        return true;
-    case Parameter::Kind::RealList: {
-        std::vector<double> xs;
-        std::stringstream ss(text);
-        std::string item;
-        while (std::getline(ss, item, ',')) {
-            double x;
-            if (!parse_double(item, x) || !std::isfinite(x)) return false;
-            if (p.has_range && !p.range.contains(x)) return false;
-            xs.push_back(x);
-        }
-        if (xs.empty()) return false;
-        p.reals = xs;
-        return true;
-    }
-    }
-    return false;
-}
-
-Parameter::Kind kind_of(const toml::value& v) {
-    if (v.is_floating()) return Parameter::Kind::Real;
-    if (v.is_integer()) return Parameter::Kind::Integer;
-    if (v.is_string()) return Parameter::Kind::Text;
-    if (v.is_boolean()) return Parameter::Kind::Flag;
-    if (v.is_array()) return Parameter::Kind::RealList;
-    throw InputError("unsupported parameter type");
-}
-
-} // namespace
 
 ParameterSet ParameterSet::load(const std::filesystem::path& file, Scale scale) {
     const std::string where = file.string();
@@ -191,8 +199,7 @@ ParameterSet ParameterSet::load(const std::filesystem::path& file, Scale scale) 
             p.has_range = true;
             p.range = Interval::parse(range);
         }
-        if (t.count("choices"))
-            for (const auto& c : toml::find<std::vector<std::string>>(spec, "choices")) p.choices.push_back(c);
+        if (t.count("choices")) p.choices = toml::find<std::vector<std::string>>(spec, "choices");
         const toml::value* quick = nullptr;
         const toml::value* paper = nullptr;
         if (t.count("value")) quick = paper = &t.at("value");
@@ -254,10 +261,6 @@ const Parameter& ParameterSet::get(const std::string& name) const {
     throw InputError(file_ + ": missing [parameters." + name + "] (the experiment needs it)");
 }
 
-bool ParameterSet::has(const std::string& name) const {
-    return std::any_of(params_.begin(), params_.end(), [&](const Parameter& p) { return p.name == name; });
-}
-
 const Parameter& ParameterSet::find(const std::string& name, Parameter::Kind kind) const {
     const Parameter& p = get(name);
     if (p.kind != kind)
@@ -282,25 +285,6 @@ void ParameterSet::reject(const std::string& name, const std::string& requiremen
     throw InputError(name + " = " + get(name).value_text() + ": " + requirement);
 }
 
-namespace {
-// The parameters behind a refusal: those the user changed with --set (they are the likely cause),
-// or all of them when none was changed.
-std::string named_values(const ParameterSet& set, const std::vector<std::string>& names) {
-    std::vector<std::string> shown;
-    for (const auto& n : names)
-        if (set.get(n).overridden) shown.push_back(n);
-    if (shown.empty()) shown = names;
-    std::string out;
-    for (const auto& n : shown) {
-        const Parameter& p = set.get(n);
-        out += (out.empty() ? "" : ", ") + n + " = " + p.value_text();
-        if (p.kind != Parameter::Kind::Text && p.kind != Parameter::Kind::Flag && !p.unit.empty() && p.unit != "1")
-            out += " " + p.unit;
-    }
-    return out;
-}
-} // namespace
-
 void ParameterSet::reject(const std::vector<std::string>& names, const std::string& requirement) const {
     throw InputError(named_values(*this, names) + ": " + requirement);
 }
@@ -315,7 +299,7 @@ void ParameterSet::limit_work(const std::vector<std::string>& names, double esti
 nlohmann::json ParameterSet::to_json() const {
     nlohmann::json j = nlohmann::json::object();
     for (const auto& p : params_) {
-        nlohmann::json e;
+        nlohmann::json e = {{"unit", p.unit}, {"source", p.source}};
         switch (p.kind) {
         case Parameter::Kind::Real: e["value"] = p.real; break;
         case Parameter::Kind::Integer: e["value"] = p.integer; break;
@@ -323,8 +307,6 @@ nlohmann::json ParameterSet::to_json() const {
         case Parameter::Kind::Flag: e["value"] = p.flag; break;
         case Parameter::Kind::RealList: e["value"] = p.reals; break;
         }
-        e["unit"] = p.unit;
-        e["source"] = p.source;
         if (p.overridden) e["overridden"] = true;
         j[p.name] = e;
     }

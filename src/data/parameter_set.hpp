@@ -14,8 +14,8 @@ namespace granrepro {
 
 enum class Scale { Quick, Paper };
 const char* to_string(Scale s);
-// A number in messages: %g-like, never 300 digits ("1e+308", "0.00083").
-std::string number_text(double x);
+// A number in messages: %g-like with `precision` significant digits, never 300 digits ("1e+308", "0.00083").
+std::string number_text(double x, int precision = 6);
 Scale parse_scale(const std::string& s); // throws InputError
 
 struct Parameter {
@@ -55,7 +55,6 @@ public:
     bool flag(const std::string& name) const;
     const std::vector<double>& reals(const std::string& name) const;
     const Parameter& get(const std::string& name) const;
-    bool has(const std::string& name) const;
 
     // Throws InputError("name = value: must be ...") — for checks that relate parameters.
     [[noreturn]] void reject(const std::string& name, const std::string& requirement) const;

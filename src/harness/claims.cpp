@@ -19,16 +19,9 @@ const char* to_string(Verdict v) {
 }
 
 namespace {
-std::string num(double x) {
-    std::ostringstream os;
-    os.precision(4);
-    os << x;
-    return os.str();
-}
+std::string num(double x) { return number_text(x, 4); }
 
 std::string band_text(const Band& b) { return "[" + num(b.lo) + ", " + num(b.hi) + "]"; }
-
-const char* const kScaleNames[] = {"quick", "paper"};
 
 const std::string kClaimKeys[] = {"id",     "statement", "source",           "measured",        "paper",
                                   "rel_tol", "abs_tol",  "min",              "max",             "tolerance_reason",
@@ -169,9 +162,10 @@ std::vector<Claim> load_claims(const std::filesystem::path& file, const std::str
             } else {
                 // A known deviation is a measured result: it needs its own band at every scale
                 // where the claim applies, so that the deviation itself can still fail.
-                for (const char* scale : kScaleNames)
-                    if (k.applies_to(parse_scale(scale)) && !k.band_for(parse_scale(scale)))
-                        throw InputError(claim_where + ": known_deviation needs deviation_band for scale " + scale +
+                for (const Scale scale : {Scale::Quick, Scale::Paper})
+                    if (k.applies_to(scale) && !k.band_for(scale))
+                        throw InputError(claim_where + ": known_deviation needs deviation_band for scale " +
+                                         to_string(scale) +
                                          " (deviation_band = [lo, hi] or { quick = [lo, hi], paper = [lo, hi] })");
                 if (k.deviation_band_reason.empty())
                     throw InputError(claim_where + ": known_deviation needs deviation_band_reason (where the band comes from)");
@@ -262,15 +256,12 @@ std::string format_deviation_explanations(const std::vector<ClaimResult>& result
 nlohmann::json claims_to_json(const std::vector<ClaimResult>& results) {
     nlohmann::json arr = nlohmann::json::array();
     for (const auto& r : results) {
-        nlohmann::json j;
-        j["id"] = r.claim.id;
-        j["statement"] = r.claim.statement;
-        j["source"] = r.claim.source;
-        j["expected"] = r.expected_text;
-        j["tolerance"] = r.tolerance_text;
-        j["tolerance_reason"] = r.claim.tolerance_reason;
-        j["measured"] = r.measured && std::isfinite(*r.measured) ? nlohmann::json(*r.measured) : nlohmann::json();
-        j["verdict"] = to_string(r.verdict);
+        const bool finite = r.measured && std::isfinite(*r.measured);
+        nlohmann::json j = {{"id", r.claim.id}, {"statement", r.claim.statement}, {"source", r.claim.source},
+                            {"expected", r.expected_text}, {"tolerance", r.tolerance_text},
+                            {"tolerance_reason", r.claim.tolerance_reason},
+                            {"measured", finite ? nlohmann::json(*r.measured) : nlohmann::json()},
+                            {"verdict", to_string(r.verdict)}};
         if (!r.claim.known_deviation.empty()) {
             j["known_deviation"] = r.claim.known_deviation;
             j["deviation_band"] = r.band_text; // text: JSON has no infinity

@@ -1,11 +1,10 @@
 #include "harness/plotter.hpp"
 
-#include <cstdint>
-#include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
 
+#include "core/stable_hash.hpp"
 #include "harness/experiment.hpp"
 #include "harness/run_log.hpp"
 #include "io/durable_file.hpp"
@@ -23,15 +22,8 @@ std::string read_file(const std::filesystem::path& p) {
     return ss.str();
 }
 
-// FNV-1a (64 bit) of the text: stable across toolchains (std::hash is not); it detects edits,
-// it does not guard against forgery.
-std::string fnv1a_hex(const std::string& text) {
-    std::uint64_t h = 14695981039346656037ull;
-    for (unsigned char c : text) h = (h ^ c) * 1099511628211ull;
-    char buf[17];
-    std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h));
-    return buf;
-}
+// Stable across toolchains (std::hash is not); it detects edits, it does not guard against forgery.
+std::string fnv1a_hex(const std::string& text) { return hex64(fnv1a64(text)); }
 
 // An emitted script is "<first line with the hash of the rest>\n<rest>". True if the file has
 // that form and the rest is unchanged since it was emitted, or if it was emitted before scripts

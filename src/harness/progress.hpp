@@ -24,7 +24,6 @@ public:
 
     void tick(long n = 1);                       // n units done
     void done(long slot);                        // sweep point `slot` done (one unit)
-    void set_total(long total) { total_ = total; }
     // Engine time t of t_end reached by sweep point `slot` (which counts as t / t_end of a unit
     // towards the estimate), or, with slot < 0, by a run whose units are ticked separately (shown,
     // not counted).

@@ -68,6 +68,9 @@ std::string read_text(const fs::path& p) {
     return ss.str();
 }
 fs::path expected_file(const std::string& name) { return project_root() / "expected" / (name + ".toml"); }
+bool makes(const ExperimentInfo& info, const std::string& figure) {
+    return std::any_of(info.figures.begin(), info.figures.end(), [&](const auto& f) { return f.id == figure; });
+}
 
 // A PNG ends with its IEND chunk; gnuplot does not report a write that ran out of space, so a
 // figure cut short is found here.
@@ -91,12 +94,9 @@ std::string json_kind(const nlohmann::json& j) {
 }
 
 nlohmann::json read_summary(const fs::path& file, const std::string& name) {
-    nlohmann::json j;
-    try {
-        j = nlohmann::json::parse(read_text(file));
-    } catch (const std::exception&) {
+    nlohmann::json j = nlohmann::json::parse(read_text(file), nullptr, false);
+    if (j.is_discarded())
         throw InputError(file.string() + ": not valid JSON (a damaged file? rerun `granrepro " + name + "`)");
-    }
     const std::string where = file.string() + ": ";
     if (!j.is_object())
         throw InputError(where + "not a granrepro summary (a JSON object expected, found " + json_kind(j) + ")");
@@ -149,11 +149,8 @@ int run_experiment(const std::string& name, const RunOptions& opt, VerdictCounts
     const Experiment& exp = find_experiment(name);
     const ExperimentInfo info = experiment_info(name);
     const ParameterSet params = resolve_parameters(name, opt);
-    for (const auto& f : opt.figures) {
-        bool found = false;
-        for (const auto& fi : info.figures) found = found || fi.id == f;
-        if (!found) throw InputError("figure " + f + " is not made by experiment " + name);
-    }
+    for (const auto& f : opt.figures)
+        if (!makes(info, f)) throw InputError("figure " + f + " is not made by experiment " + name);
     // Read the claims before spending time on the run: a broken file is an input error.
     const auto claims = load_claims(expected_file(name), name);
     ensure_writable_directory(opt.out, "--out");
@@ -164,13 +161,16 @@ int run_experiment(const std::string& name, const RunOptions& opt, VerdictCounts
     // Shards of one sweep share the lock (each point is its own file), a whole run or `gather`
     // holds it alone; MPI ranks other than 0 run under rank 0's lock. Only a lone holder may
     // clean leftovers: a shard's in-flight point files look like a dead run's.
-    const bool shard_run = opt.sweep.mode == SweepPlan::Mode::Shard ||
-                           (opt.sweep.mode == SweepPlan::Mode::All && opt.shard_from_slurm && exp.distributed &&
-                            slurm_array_shard().has_value());
+    SweepPlan plan = opt.sweep;
+    if (plan.mode == SweepPlan::Mode::All && opt.shard_from_slurm && exp.distributed)
+        if (const auto shard = slurm_array_shard()) plan = *shard;
+    const bool shard_run = plan.mode == SweepPlan::Mode::Shard;
+    const int ranks = mpi::size();
+    const bool rank0 = mpi::rank() == 0;
     std::optional<OutputLock> lock;
-    if (mpi::rank() == 0) lock.emplace(opt.out, name, shard_run ? OutputLock::Mode::Shared : OutputLock::Mode::Exclusive);
+    if (rank0) lock.emplace(opt.out, name, shard_run ? OutputLock::Mode::Shared : OutputLock::Mode::Exclusive);
     const fs::path work_dir = opt.out / ("." + name + ".checkpoint");
-    if (mpi::rank() == 0 && !shard_run) {
+    if (rank0 && !shard_run) {
         clean_staging_leftovers(final_dir, opt.quiet);
         clean_temporary_leftovers(work_dir);
     }
@@ -183,11 +183,6 @@ int run_experiment(const std::string& name, const RunOptions& opt, VerdictCounts
             fs::exists(final_dir / (f.id + ".png")))
             to_render.push_back(f.id);
 
-    const int ranks = mpi::size();
-    const bool rank0 = mpi::rank() == 0;
-    SweepPlan plan = opt.sweep;
-    if (plan.mode == SweepPlan::Mode::All && opt.shard_from_slurm && exp.distributed)
-        if (const auto shard = slurm_array_shard()) plan = *shard;
     if (plan.mode != SweepPlan::Mode::All) {
         const char* what = plan.mode == SweepPlan::Mode::Gather ? "gather" : "--points";
         if (!exp.distributed)
@@ -200,7 +195,7 @@ int run_experiment(const std::string& name, const RunOptions& opt, VerdictCounts
 
     // Shards and ranks > 0 write only checkpoint files (rank 0 writes them under MPI).
     std::optional<StagedDirectory> stage;
-    if (rank0 && plan.mode != SweepPlan::Mode::Shard) stage.emplace(final_dir);
+    if (rank0 && !shard_run) stage.emplace(final_dir);
     // run.log: opened in the staging folder, so it moves into place with the results (rank 0).
     struct CloseLog {
         ~CloseLog() { run_log().close(); }
@@ -274,11 +269,9 @@ int run_experiment(const std::string& name, const RunOptions& opt, VerdictCounts
             if (fs::exists(png) && !png_complete(png)) throw WriteError(png.string(), "figure cut short (disk full?)");
         }
         const double wall_total = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-        run_log().line("claims: " + [&] {
-            VerdictCounts c;
-            c.add(verdicts);
-            return c.text();
-        }());
+        VerdictCounts counts;
+        counts.add(verdicts);
+        run_log().line("claims: " + counts.text());
         run_log().line("done: wall time " + std::to_string(wall_total) + " s with writing and " +
                        std::to_string(to_render.size()) + " figures");
         run_log().close();
@@ -342,11 +335,8 @@ int check_all(const fs::path& out, const CheckOptions& opt) {
     VerdictCounts totals;
     std::vector<std::string> missing;
     for (const auto& e : experiment_registry()) {
-        if (!has_results(e.name, out)) {
-            missing.push_back(e.name);
-            continue;
-        }
-        rc |= check_experiment(e.name, out, opt, &totals);
+        if (has_results(e.name, out)) rc |= check_experiment(e.name, out, opt, &totals);
+        else missing.push_back(e.name);
     }
     std::printf("totals: %s\n", totals.text().c_str());
     std::fflush(stdout);
@@ -392,11 +382,9 @@ int plot_experiment(const std::string& name, const fs::path& out, const std::vec
     const ExperimentInfo info = experiment_info(name);
     std::string known;
     for (const auto& f : info.figures) known += (known.empty() ? "" : ", ") + f.id;
-    for (const auto& id : figures) {
-        bool found = false;
-        for (const auto& f : info.figures) found = found || f.id == id;
-        if (!found) throw InputError("--figure " + id + " is not made by experiment " + name + "; it makes " + known);
-    }
+    for (const auto& id : figures)
+        if (!makes(info, id))
+            throw InputError("--figure " + id + " is not made by experiment " + name + "; it makes " + known);
     const fs::path dir = out / name;
     if (!fs::exists(dir / "tables"))
         throw InputError("plot " + name + ": no results in " + dir.string() + "; run `granrepro " + name + "` first");

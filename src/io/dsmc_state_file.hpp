@@ -5,16 +5,30 @@
 // wrote it. Layout: docs/schema.md.
 #pragma once
 #include "engines/dsmc/dsmc_state.hpp"
-#include "io/h5_file.hpp"
+#include "io/h5_fields.hpp"
 
 namespace granrepro {
 
 inline constexpr const char* kDsmcStateSchema = "granrepro-dsmc-state";
 inline constexpr long kDsmcStateSchemaVersion = 3;
 
-void write_dsmc_state(const H5Object& group, const DsmcState& s);
+inline void write_dsmc_state(const H5Object& g, const DsmcState& s) {
+    g.stamp_schema(kDsmcStateSchema, kDsmcStateSchemaVersion);
+    write_fields(g, s);
+}
+
 // Throws std::runtime_error when the group is not a DSMC state of this schema version, or names
 // a choice (free_volume, partner) that does not exist.
-DsmcState read_dsmc_state(const H5Object& group);
+inline DsmcState read_dsmc_state(const H5Object& g) {
+    g.require_schema(kDsmcStateSchema, kDsmcStateSchemaVersion);
+    DsmcState s;
+    read_fields(g, s);
+    // The walk reads any integer into an enum; only the named choices are states.
+    const DsmcConfig& c = s.config;
+    if (c.free_volume > DsmcFreeVolume::mean) throw std::runtime_error("DSMC state: unknown free_volume mode");
+    if (c.partner > DsmcPartner::nearest) throw std::runtime_error("DSMC state: unknown partner rule");
+    if (c.free_volume_block < 1) throw std::runtime_error("DSMC state: free_volume_block must be >= 1");
+    return s;
+}
 
 } // namespace granrepro

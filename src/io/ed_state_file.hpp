@@ -4,15 +4,24 @@
 // the one that wrote it (issue 3). Layout: docs/schema.md.
 #pragma once
 #include "engines/ed/ed_state.hpp"
-#include "io/h5_file.hpp"
+#include "io/h5_fields.hpp"
 
 namespace granrepro {
 
 inline constexpr const char* kEdStateSchema = "granrepro-ed-state";
 inline constexpr long kEdStateSchemaVersion = 2;
 
-void write_ed_state(const H5Object& group, const EdState& s);
+inline void write_ed_state(const H5Object& g, const EdState& s) {
+    g.stamp_schema(kEdStateSchema, kEdStateSchemaVersion);
+    write_fields(g, s);
+}
+
 // Throws std::runtime_error when the group is not an ED state of this schema version.
-EdState read_ed_state(const H5Object& group);
+inline EdState read_ed_state(const H5Object& g) {
+    g.require_schema(kEdStateSchema, kEdStateSchemaVersion);
+    EdState s;
+    read_fields(g, s);
+    return s;
+}
 
 } // namespace granrepro

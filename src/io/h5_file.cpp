@@ -52,30 +52,24 @@ std::string file_name(hid_t obj) {
     return s;
 }
 
-// A failed write: WriteError naming the file (from `obj`) and the reason ("no space left on
-// device", or HDF5's own words and what we asked of it).
-[[noreturn]] void write_failed(hid_t obj, const std::string& what) {
-    const Reason r = hdf5_reason();
-    throw WriteError(file_name(obj), r.system ? r.text : "HDF5 could not " + what + " (" + r.text + ")");
+// A failed write: WriteError naming the file (`file`, or else the one `obj` is in) and the reason
+// ("no space left on device", or HDF5's own words and what we asked of it).
+WriteError write_error(const std::string& what, hid_t obj, const std::string& file = {}) {
+    const Reason r = hdf5_reason(); // first: file_name() is an HDF5 call too
+    return WriteError(file.empty() ? file_name(obj) : file,
+                      r.system ? r.text : "HDF5 could not " + what + " (" + r.text + ")");
 }
-hid_t wcheck(hid_t id, hid_t obj, const std::string& what) {
-    if (id < 0) write_failed(obj, what);
+template <class Id> // hid_t or herr_t
+Id wcheck(Id id, hid_t obj, const std::string& what) {
+    if (id < 0) throw write_error(what, obj);
     return id;
 }
-void wcheck(herr_t e, hid_t obj, const std::string& what) {
-    if (e < 0) write_failed(obj, what);
-}
-
-hid_t check(hid_t id, const std::string& what) {
+template <class Id>
+Id check(Id id, const std::string& what) {
     if (id < 0) throw std::runtime_error("HDF5: " + what + ": " + hdf5_reason().text);
     return id;
 }
-void check(herr_t e, const std::string& what) {
-    if (e < 0) throw std::runtime_error("HDF5: " + what + ": " + hdf5_reason().text);
-}
-} // namespace
 
-namespace {
 // Links and attributes keep the order they were created in (tables' columns, the root's
 // provenance), for readers that iterate by creation order (h5py: track_order).
 constexpr unsigned kCreationOrder = H5P_CRT_ORDER_TRACKED | H5P_CRT_ORDER_INDEXED;
@@ -85,16 +79,68 @@ H5Object ordered(hid_t plist_class, bool links) {
     H5Pset_attr_creation_order(p.id(), kCreationOrder);
     return p;
 }
+
+void write_attr(hid_t obj, const std::string& name, hid_t type, hid_t space, const void* data) {
+    const hid_t a = wcheck(H5Acreate2(obj, name.c_str(), type, space, H5P_DEFAULT, H5P_DEFAULT), obj,
+                           "create attribute " + name);
+    const H5Object attr(a, &H5Aclose);
+    wcheck(H5Awrite(a, type, data), obj, "write attribute " + name);
+}
+// Data spaces and types are only memory; their creation fails only when memory runs out.
+H5Object scalar_space() { return {check(H5Screate(H5S_SCALAR), "data space"), &H5Sclose}; }
+H5Object simple_space(hsize_t n) { return {check(H5Screate_simple(1, &n, nullptr), "data space"), &H5Sclose}; }
+
+// A 1-D dataset of n elements of file type `file_type`, written from `data` (memory type `mem_type`).
+H5Object write_dataset(hid_t obj, const std::string& name, hid_t file_type, hid_t mem_type, hsize_t n,
+                       const void* data) {
+    const H5Object s = simple_space(n);
+    H5Object d(wcheck(H5Dcreate2(obj, name.c_str(), file_type, s.id(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), obj,
+                      "create dataset " + name),
+               &H5Dclose);
+    if (n) wcheck(H5Dwrite(d.id(), mem_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data), obj, "write dataset " + name);
+    return d;
+}
+
+template <class T>
+hid_t native_type();
+template <> hid_t native_type<double>() { return H5T_NATIVE_DOUBLE; }
+template <> hid_t native_type<long>() { return H5T_NATIVE_LONG; }
+template <> hid_t native_type<std::int32_t>() { return H5T_NATIVE_INT32; }
+template <> hid_t native_type<std::uint8_t>() { return H5T_NATIVE_UINT8; }
+template <> hid_t native_type<std::uint32_t>() { return H5T_NATIVE_UINT32; }
+template <> hid_t native_type<std::uint64_t>() { return H5T_NATIVE_UINT64; }
+
+template <class T>
+T read_scalar_attr(hid_t obj, const std::string& name) {
+    H5Object a(check(H5Aopen(obj, name.c_str(), H5P_DEFAULT), "open attr " + name), &H5Aclose);
+    T v = 0;
+    check(H5Aread(a.id(), native_type<T>(), &v), "read attr " + name);
+    return v;
+}
+
+// The names of the n links or attributes of obj, in `order`; get_name is H5Lget_name_by_idx or
+// H5Aget_name_by_idx (one signature).
+using NameByIndex = ssize_t (*)(hid_t, const char*, H5_index_t, H5_iter_order_t, hsize_t, char*, size_t, hid_t);
+std::vector<std::string> names_by_index(hid_t obj, hsize_t n, NameByIndex get_name, H5_index_t order,
+                                        const std::string& what) {
+    std::vector<std::string> names;
+    for (hsize_t i = 0; i < n; ++i) {
+        const ssize_t len = get_name(obj, ".", order, H5_ITER_INC, i, nullptr, 0, H5P_DEFAULT);
+        check(herr_t(len < 0 ? -1 : 0), what);
+        std::string name(std::size_t(len) + 1, '\0');
+        get_name(obj, ".", order, H5_ITER_INC, i, name.data(), name.size(), H5P_DEFAULT);
+        name.resize(std::size_t(len));
+        names.push_back(name);
+    }
+    return names;
+}
 } // namespace
 
 H5File H5File::create(const std::string& path) {
     silence_hdf5();
     const H5Object fcpl = ordered(H5P_FILE_CREATE, true); // links and attributes keep their creation order
     const hid_t id = H5Fcreate(path.c_str(), H5F_ACC_TRUNC, fcpl.id(), H5P_DEFAULT);
-    if (id < 0) {
-        const Reason r = hdf5_reason();
-        throw WriteError(path, r.system ? r.text : "HDF5 could not create the file (" + r.text + ")");
-    }
+    if (id < 0) throw write_error("create the file", id, path);
     return H5File(id, &H5Fclose);
 }
 
@@ -108,16 +154,12 @@ void H5File::close() {
     const hid_t id = id_;
     const std::string name = file_name(id);
     id_ = -1; // a failed close is not retried by the destructor
-    auto failed = [&](const char* what) {
-        const Reason r = hdf5_reason();
-        return WriteError(name, r.system ? r.text : std::string("HDF5 could not ") + what + " (" + r.text + ")");
-    };
     if (H5Fflush(id, H5F_SCOPE_GLOBAL) < 0) {
-        const WriteError e = failed("flush the file");
+        const WriteError e = write_error("flush the file", id, name);
         H5Fclose(id);
         throw e;
     }
-    if (H5Fclose(id) < 0) throw failed("close the file");
+    if (H5Fclose(id) < 0) throw write_error("close the file", id, name);
 }
 
 H5Object H5Object::group(const std::string& name) const {
@@ -130,24 +172,16 @@ H5Object H5Object::open_group(const std::string& name) const {
     return {check(H5Gopen2(id_, name.c_str(), H5P_DEFAULT), "open group " + name), &H5Gclose};
 }
 
-namespace {
-void write_attr(hid_t obj, const std::string& name, hid_t type, hid_t space, const void* data) {
-    const hid_t a = wcheck(H5Acreate2(obj, name.c_str(), type, space, H5P_DEFAULT, H5P_DEFAULT), obj,
-                           "create attribute " + name);
-    const H5Object attr(a, &H5Aclose);
-    wcheck(H5Awrite(a, type, data), obj, "write attribute " + name);
-}
-// Data spaces and types are only memory; their creation fails only when memory runs out.
-H5Object scalar_space() { return {check(H5Screate(H5S_SCALAR), "data space"), &H5Sclose}; }
-H5Object simple_space(hsize_t n) { return {check(H5Screate_simple(1, &n, nullptr), "data space"), &H5Sclose}; }
-} // namespace
-
 void H5Object::attr(const std::string& name, double v) const {
     write_attr(id_, name, H5T_NATIVE_DOUBLE, scalar_space().id(), &v);
 }
 
 void H5Object::attr(const std::string& name, long v) const {
     write_attr(id_, name, H5T_NATIVE_LONG, scalar_space().id(), &v);
+}
+
+void H5Object::attr_u64(const std::string& name, std::uint64_t v) const {
+    write_attr(id_, name, H5T_NATIVE_UINT64, scalar_space().id(), &v);
 }
 
 void H5Object::attr(const std::string& name, const std::string& v) const {
@@ -162,39 +196,12 @@ void H5Object::attr(const std::string& name, const std::vector<double>& v) const
     write_attr(id_, name, H5T_NATIVE_DOUBLE, simple_space(v.size()).id(), v.data());
 }
 
-namespace {
-// A 1-D dataset of n elements of file type `file_type`, written from `data` (memory type `mem_type`).
-H5Object write_dataset(hid_t obj, const std::string& name, hid_t file_type, hid_t mem_type, hsize_t n,
-                       const void* data) {
-    const H5Object s = simple_space(n);
-    H5Object d(wcheck(H5Dcreate2(obj, name.c_str(), file_type, s.id(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), obj,
-                      "create dataset " + name),
-               &H5Dclose);
-    if (n) wcheck(H5Dwrite(d.id(), mem_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data), obj, "write dataset " + name);
-    return d;
-}
-} // namespace
-
 void H5Object::dataset(const std::string& name, const std::vector<double>& v,
                        const std::string& unit, const std::string& description) const {
     const H5Object ds = write_dataset(id_, name, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, v.size(), v.data());
     ds.attr("unit", unit);
     if (!description.empty()) ds.attr("description", description);
 }
-
-void H5Object::bytes(const std::string& name, const std::vector<unsigned char>& v) const {
-    write_dataset(id_, name, H5T_NATIVE_UCHAR, H5T_NATIVE_UCHAR, v.size(), v.data());
-}
-
-namespace {
-template <class T>
-hid_t native_type();
-template <> hid_t native_type<double>() { return H5T_NATIVE_DOUBLE; }
-template <> hid_t native_type<std::int32_t>() { return H5T_NATIVE_INT32; }
-template <> hid_t native_type<std::uint8_t>() { return H5T_NATIVE_UINT8; }
-template <> hid_t native_type<std::uint32_t>() { return H5T_NATIVE_UINT32; }
-template <> hid_t native_type<std::uint64_t>() { return H5T_NATIVE_UINT64; }
-} // namespace
 
 template <class T>
 void H5Object::array(const std::string& name, const std::vector<T>& v) const {
@@ -222,54 +229,33 @@ template std::vector<std::uint8_t> H5Object::read_array(const std::string&) cons
 template std::vector<std::uint32_t> H5Object::read_array(const std::string&) const;
 template std::vector<std::uint64_t> H5Object::read_array(const std::string&) const;
 
-void H5Object::attr_u64(const std::string& name, std::uint64_t v) const {
-    write_attr(id_, name, H5T_NATIVE_UINT64, scalar_space().id(), &v);
-}
-
-long H5Object::read_long_attr(const std::string& name) const {
-    H5Object a(check(H5Aopen(id_, name.c_str(), H5P_DEFAULT), "open attr " + name), &H5Aclose);
-    long v = 0;
-    check(H5Aread(a.id(), H5T_NATIVE_LONG, &v), "read attr " + name);
-    return v;
-}
-
+long H5Object::read_long_attr(const std::string& name) const { return read_scalar_attr<long>(id_, name); }
 std::uint64_t H5Object::read_u64_attr(const std::string& name) const {
+    return read_scalar_attr<std::uint64_t>(id_, name);
+}
+double H5Object::read_double_attr(const std::string& name) const { return read_scalar_attr<double>(id_, name); }
+
+std::string H5Object::read_string_attr(const std::string& name) const {
     H5Object a(check(H5Aopen(id_, name.c_str(), H5P_DEFAULT), "open attr " + name), &H5Aclose);
-    std::uint64_t v = 0;
-    check(H5Aread(a.id(), H5T_NATIVE_UINT64, &v), "read attr " + name);
-    return v;
+    H5Object t(H5Aget_type(a.id()), &H5Tclose);
+    std::string s(H5Tget_size(t.id()), '\0');
+    check(H5Aread(a.id(), t.id(), s.data()), "read attr " + name);
+    while (!s.empty() && s.back() == '\0') s.pop_back();
+    return s;
 }
 
 bool H5Object::has(const std::string& name) const { return H5Lexists(id_, name.c_str(), H5P_DEFAULT) > 0; }
 
-std::vector<std::string> H5Object::children() const {
+std::vector<std::string> H5Object::children(H5_index_t order) const {
     H5G_info_t info;
     check(H5Gget_info(id_, &info), "group info");
-    std::vector<std::string> names;
-    for (hsize_t i = 0; i < info.nlinks; ++i) {
-        const ssize_t n = H5Lget_name_by_idx(id_, ".", H5_INDEX_NAME, H5_ITER_INC, i, nullptr, 0, H5P_DEFAULT);
-        check(herr_t(n < 0 ? -1 : 0), "link name");
-        std::string name(std::size_t(n) + 1, '\0');
-        H5Lget_name_by_idx(id_, ".", H5_INDEX_NAME, H5_ITER_INC, i, name.data(), name.size(), H5P_DEFAULT);
-        name.resize(std::size_t(n));
-        names.push_back(name);
-    }
-    return names;
+    return names_by_index(id_, info.nlinks, &H5Lget_name_by_idx, order, "link name");
 }
 
 std::vector<std::string> H5Object::attribute_names() const {
     H5O_info_t info;
     check(H5Oget_info2(id_, &info, H5O_INFO_NUM_ATTRS), "object info");
-    std::vector<std::string> names;
-    for (hsize_t i = 0; i < info.num_attrs; ++i) {
-        const ssize_t n = H5Aget_name_by_idx(id_, ".", H5_INDEX_NAME, H5_ITER_INC, i, nullptr, 0, H5P_DEFAULT);
-        check(herr_t(n < 0 ? -1 : 0), "attribute name");
-        std::string name(std::size_t(n) + 1, '\0');
-        H5Aget_name_by_idx(id_, ".", H5_INDEX_NAME, H5_ITER_INC, i, name.data(), name.size(), H5P_DEFAULT);
-        name.resize(std::size_t(n));
-        names.push_back(name);
-    }
-    return names;
+    return names_by_index(id_, info.num_attrs, &H5Aget_name_by_idx, H5_INDEX_NAME, "attribute name");
 }
 
 std::size_t H5Object::dataset_size(const std::string& name) const {
@@ -335,40 +321,6 @@ void H5Object::require_schema(const std::string& schema, long version) const {
     if (found != schema) throw std::runtime_error("not a " + schema + " group (schema attribute: '" + found + "')");
     if (read_long_attr("schema_version") != version)
         throw std::runtime_error(schema + ": unsupported schema_version (this build reads " + std::to_string(version) + ")");
-}
-
-std::vector<double> H5Object::read_dataset(const std::string& name) const {
-    H5Object d(check(H5Dopen2(id_, name.c_str(), H5P_DEFAULT), "open " + name), &H5Dclose);
-    H5Object s(H5Dget_space(d.id()), &H5Sclose);
-    const hssize_t n = H5Sget_simple_extent_npoints(s.id());
-    std::vector<double> v(static_cast<std::size_t>(n));
-    if (n) check(H5Dread(d.id(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data()), "read " + name);
-    return v;
-}
-
-std::vector<unsigned char> H5Object::read_bytes(const std::string& name) const {
-    H5Object d(check(H5Dopen2(id_, name.c_str(), H5P_DEFAULT), "open " + name), &H5Dclose);
-    H5Object s(H5Dget_space(d.id()), &H5Sclose);
-    const hssize_t n = H5Sget_simple_extent_npoints(s.id());
-    std::vector<unsigned char> v(static_cast<std::size_t>(n));
-    if (n) check(H5Dread(d.id(), H5T_NATIVE_UCHAR, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data()), "read " + name);
-    return v;
-}
-
-std::string H5Object::read_string_attr(const std::string& name) const {
-    H5Object a(check(H5Aopen(id_, name.c_str(), H5P_DEFAULT), "open attr " + name), &H5Aclose);
-    H5Object t(H5Aget_type(a.id()), &H5Tclose);
-    std::string s(H5Tget_size(t.id()), '\0');
-    check(H5Aread(a.id(), t.id(), s.data()), "read attr " + name);
-    while (!s.empty() && s.back() == '\0') s.pop_back();
-    return s;
-}
-
-double H5Object::read_double_attr(const std::string& name) const {
-    H5Object a(check(H5Aopen(id_, name.c_str(), H5P_DEFAULT), "open attr " + name), &H5Aclose);
-    double v = 0;
-    check(H5Aread(a.id(), H5T_NATIVE_DOUBLE, &v), "read attr " + name);
-    return v;
 }
 
 } // namespace granrepro

@@ -32,14 +32,14 @@ public:
     // A 1-D double dataset with a "unit" attribute (and optional description).
     void dataset(const std::string& name, const std::vector<double>& v, const std::string& unit,
                  const std::string& description = {}) const;
-    void bytes(const std::string& name, const std::vector<unsigned char>& v) const;
+    void bytes(const std::string& name, const std::vector<unsigned char>& v) const { array(name, v); }
     // A 1-D dataset stored bit for bit (checkpoints). T: double, int32, uint8, uint32, uint64.
     template <class T>
     void array(const std::string& name, const std::vector<T>& v) const;
     void attr_u64(const std::string& name, std::uint64_t v) const;
 
-    std::vector<double> read_dataset(const std::string& name) const;
-    std::vector<unsigned char> read_bytes(const std::string& name) const;
+    std::vector<double> read_dataset(const std::string& name) const { return read_array<double>(name); }
+    std::vector<unsigned char> read_bytes(const std::string& name) const { return read_array<unsigned char>(name); }
     std::string read_string_attr(const std::string& name) const;
     double read_double_attr(const std::string& name) const;
     long read_long_attr(const std::string& name) const;
@@ -47,7 +47,8 @@ public:
     template <class T>
     std::vector<T> read_array(const std::string& name) const;
     bool has(const std::string& name) const; // a link (group or dataset) of that name exists
-    std::vector<std::string> children() const;        // names of the links in this group
+    // Names of the links in this group (H5_INDEX_CRT_ORDER: in creation order, where it was tracked).
+    std::vector<std::string> children(H5_index_t order = H5_INDEX_NAME) const;
     std::vector<std::string> attribute_names() const;
     std::size_t dataset_size(const std::string& name) const; // number of elements
     // Copies the object `name` (group or dataset, with its attributes) into `dst` under the same name.

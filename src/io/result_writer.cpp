@@ -48,20 +48,11 @@ void attach_x_scale(const H5Object& table, const Table& t) {
 
 // The links of a group in creation order where it was tracked (files before 2026-12: by name).
 std::vector<std::string> links_in_creation_order(const H5Object& g) {
-    std::vector<std::string> names;
-    H5G_info_t info;
-    if (H5Gget_info(g.id(), &info) < 0) throw std::runtime_error("HDF5: group info");
-    H5E_BEGIN_TRY {
-        for (hsize_t i = 0; i < info.nlinks; ++i) {
-            const ssize_t n = H5Lget_name_by_idx(g.id(), ".", H5_INDEX_CRT_ORDER, H5_ITER_INC, i, nullptr, 0, H5P_DEFAULT);
-            if (n < 0) break;
-            std::string name(std::size_t(n) + 1, '\0');
-            H5Lget_name_by_idx(g.id(), ".", H5_INDEX_CRT_ORDER, H5_ITER_INC, i, name.data(), name.size(), H5P_DEFAULT);
-            name.resize(std::size_t(n));
-            names.push_back(name);
-        }
-    } H5E_END_TRY;
-    return names.size() == info.nlinks ? names : g.children();
+    try {
+        return g.children(H5_INDEX_CRT_ORDER);
+    } catch (const std::runtime_error&) {
+        return g.children();
+    }
 }
 
 // Copies one table to another file: H5Ocopy would carry the dimension-scale attributes, whose
@@ -206,25 +197,15 @@ nlohmann::json scalars_json(const Result& result) {
 }
 
 nlohmann::json summary_json(const Provenance& prov, const ParameterSet& params, const Result& result) {
-    nlohmann::json j;
-    j["schema"] = "granrepro-summary";
-    j["schema_version"] = 1;
-    j["experiment"] = prov.experiment;
-    j["scale"] = to_string(prov.scale);
-    j["seed"] = prov.seed;
-    j["code_version"] = code_version();
-    j["wall_time_s"] = prov.wall_time_s;
-    j["command_line"] = prov.command_line;
-    nlohmann::json sets = nlohmann::json::object();
+    nlohmann::json sets = nlohmann::json::object(), units = nlohmann::json::object();
     for (const auto& p : params.all())
         if (p.overridden) sets[p.name] = p.value_text();
-    j["overridden_parameters"] = sets;
-    j["scalars"] = scalars_json(result);
-    nlohmann::json units = nlohmann::json::object();
     for (const auto& s : result.scalars) units[s.name] = s.unit;
-    j["units"] = units;
-    j["parameters"] = params.to_json();
-    return j;
+    return {{"schema", "granrepro-summary"}, {"schema_version", 1}, {"experiment", prov.experiment},
+            {"scale", to_string(prov.scale)}, {"seed", prov.seed}, {"code_version", code_version()},
+            {"wall_time_s", prov.wall_time_s}, {"command_line", prov.command_line},
+            {"overridden_parameters", sets}, {"scalars", scalars_json(result)}, {"units", units},
+            {"parameters", params.to_json()}};
 }
 
 std::vector<std::string> write_compact_result_h5(const std::filesystem::path& src, const std::filesystem::path& dst,

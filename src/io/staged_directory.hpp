@@ -26,7 +26,6 @@ public:
     StagedDirectory& operator=(const StagedDirectory&) = delete;
 
     const std::filesystem::path& path() const { return staging_; }
-    const std::filesystem::path& final_path() const { return final_; }
     // Where a path inside the staging folder will be after the commit (for messages).
     std::filesystem::path shown(const std::filesystem::path& staged) const;
     // Makes the staged directory the final one (see above); throws WriteError if the staged
