@@ -2,7 +2,7 @@
 // probability, impact parameter, conservation, restitution of the normal component only, the TC
 // model and the two dense-gas corrections. Every collision is checked against the velocities the
 // pair had just before it, kept independently of the engine's report.
-#include "engines/dsmc/dsmc_engine.hpp"
+#include "gas.hpp"
 
 #include <gsl/gsl_cdf.h>
 #include <gtest/gtest.h>
@@ -13,13 +13,9 @@
 #include <numbers>
 
 using namespace granrepro;
+using namespace granrepro::test;
 
 namespace {
-
-constexpr double kD = 1e-3; // diameter [m]
-constexpr double kM = 1e-6; // mass [kg]
-
-double box_for(std::size_t n, double rho) { return kD * std::sqrt(static_cast<double>(n) * std::numbers::pi / (4.0 * rho)); }
 
 // Random positions, Gaussian velocities (T/m = 1 m^2/s^2); masses alternate between kM and
 // mass_ratio * kM, radii between d/2 and radius_ratio * d/2 when asked for.

@@ -1,0 +1,57 @@
+// For tests of save and restore: a temporary folder for state files, and two states compared
+// field by field.
+#pragma once
+#include "data/fields.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <filesystem>
+#include <string>
+#include <type_traits>
+#include <unistd.h>
+#include <vector>
+
+namespace granrepro::test {
+
+// A folder of its own for the running test, removed with its contents at the end.
+struct TempDir {
+    std::filesystem::path path;
+    explicit TempDir(const std::string& tag = "")
+        : path(std::filesystem::temp_directory_path() /
+               ("granrepro-test-" + std::to_string(::getpid()) + "-" +
+                ::testing::UnitTest::GetInstance()->current_test_info()->name() + tag)) {
+        std::filesystem::remove_all(path);
+        std::filesystem::create_directories(path);
+    }
+    ~TempDir() { std::filesystem::remove_all(path); }
+};
+
+// Every field of two values of a type that lists its fields (data/fields.hpp) holds the same bits
+// (NaN and the sign of zero included): nested structs and lists of them field by field, vectors
+// and strings element by element.
+template <HasFields T>
+void expect_same_fields(T a, T b, const std::string& at = "") {
+    std::vector<void*> in_b;
+    b.fields([&](const char*, auto& f) { in_b.push_back(&f); });
+    std::size_t k = 0;
+    a.fields([&](const char* name, auto& f) {
+        using F = std::remove_cvref_t<decltype(f)>;
+        F& g = *static_cast<F*>(in_b[k++]);
+        const std::string field = at + name;
+        if constexpr (HasFields<F>) {
+            expect_same_fields(f, g, field + "/");
+        } else if constexpr (requires { requires HasFields<typename F::value_type>; }) {
+            ASSERT_EQ(f.size(), g.size()) << field;
+            for (std::size_t i = 0; i < f.size(); ++i) expect_same_fields(f[i], g[i], field + "/" + std::to_string(i) + "/");
+        } else if constexpr (requires { f.data(); f.size(); }) {
+            EXPECT_TRUE(f.size() == g.size() && std::memcmp(f.data(), g.data(), f.size() * sizeof(*f.data())) == 0)
+                << field << ": " << ::testing::PrintToString(f) << " vs " << ::testing::PrintToString(g);
+        } else {
+            EXPECT_EQ(std::memcmp(&f, &g, sizeof f), 0)
+                << field << ": " << ::testing::PrintToString(f) << " vs " << ::testing::PrintToString(g);
+        }
+    });
+}
+
+} // namespace granrepro::test
