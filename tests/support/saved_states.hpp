@@ -45,8 +45,11 @@ void expect_same_fields(T a, T b, const std::string& at = "") {
             ASSERT_EQ(f.size(), g.size()) << field;
             for (std::size_t i = 0; i < f.size(); ++i) expect_same_fields(f[i], g[i], field + "/" + std::to_string(i) + "/");
         } else if constexpr (requires { f.data(); f.size(); }) {
-            EXPECT_TRUE(f.size() == g.size() && std::memcmp(f.data(), g.data(), f.size() * sizeof(*f.data())) == 0)
-                << field << ": " << ::testing::PrintToString(f) << " vs " << ::testing::PrintToString(g);
+            ASSERT_EQ(f.size(), g.size()) << field;
+            std::size_t i = 0;
+            while (i < f.size() && std::memcmp(&f[i], &g[i], sizeof f[i]) == 0) ++i;
+            EXPECT_EQ(i, f.size()) << field << " differs first at " << i << ": " << ::testing::PrintToString(f[i])
+                                   << " vs " << ::testing::PrintToString(g[i]);
         } else {
             EXPECT_EQ(std::memcmp(&f, &g, sizeof f), 0)
                 << field << ": " << ::testing::PrintToString(f) << " vs " << ::testing::PrintToString(g);
