@@ -23,7 +23,7 @@
 // of the printed sqrt(pi) (vbar = sqrt(2K_0/(N m))): the paper's own number, t_0^-1 = 23.24 1/s
 // for d = 1 mm, vbar = 0.2047 m/s, rho = 0.25, r = 0.8, follows from sqrt(2 pi) (23.27 1/s);
 // the printed formula would give 32.9 1/s.
-#include "engines/dsmc/dsmc_engine.hpp"
+#include "gas.hpp"
 #include "theory/kinetic_theory.hpp"
 
 #include <gsl/gsl_statistics_double.h>
@@ -35,13 +35,9 @@
 #include <numbers>
 
 using namespace granrepro;
+using namespace granrepro::test;
 
 namespace {
-
-constexpr double kD = 1e-3; // [m]
-constexpr double kM = 1e-6; // [kg]
-
-double box_for(std::size_t n, double rho) { return kD * std::sqrt(static_cast<double>(n) * std::numbers::pi / (4.0 * rho)); }
 
 // equal_speeds: every particle has speed 1 m/s in a random direction (far from Maxwellian);
 // otherwise Gaussian components. Zero total momentum either way for the Maxwellian.
@@ -69,13 +65,11 @@ DsmcEngine gas(std::size_t n, double rho, DsmcConfig cfg, bool equal_speeds = fa
 
 double temperature_over_m(const DsmcEngine& e) { return e.kinetic_energy() / (static_cast<double>(e.size()) * kM); }
 
-// Dilute Boltzmann rate per particle, 2 n' d sqrt(pi T/m) [1/s].
+// Dilute Boltzmann rate per particle, 2 n' d sqrt(pi T/m) [1/s] (Enskog's with g = 1).
 double boltzmann_rate(const DsmcEngine& e) {
-    const double area = e.config().lx * e.config().ly;
-    return 2.0 * (static_cast<double>(e.size()) - 1.0) / area * kD * std::sqrt(std::numbers::pi * temperature_over_m(e));
+    const double n_prime = (static_cast<double>(e.size()) - 1.0) / (e.config().lx * e.config().ly);
+    return theory::enskog_collision_rate(n_prime, kD, temperature_over_m(e), 1.0);
 }
-
-double henderson_g(double rho) { return (1.0 - 7.0 * rho / 16.0) / ((1.0 - rho) * (1.0 - rho)); }
 
 struct Rate {
     double omega = 0.0;     // measured collisions per particle and time [1/s]
@@ -116,7 +110,7 @@ TEST(DsmcKineticTheory, PlainRateIsTheDiluteBoltzmannRate) {
 
 TEST(DsmcKineticTheory, FreeVolumeRateAgainstEnskog) {
     const double rho = 0.25;
-    const double chi_fv = 1.0 / (1.0 - rho / 0.82), g = henderson_g(rho);
+    const double chi_fv = theory::free_volume_factor(rho, 0.82), g = theory::henderson_contact_value(rho);
     // Mean mode: exactly the factor 1/(1 - rho/0.82).
     {
         DsmcConfig cfg;
@@ -350,7 +344,8 @@ TEST(DsmcKineticTheory, DisplacementRateLiesWithinTheCorrelationHoleBounds) {
 // The table is the evidence behind expected/cooling.toml; asserted are what theory says of each
 // variant (below), not the variants' own numbers.
 TEST(DsmcKineticTheory, VariantsAgainstKineticTheory) {
-    auto v = [](double cells, DsmcFreeVolume fv, bool disp, DsmcPartner partner, bool norep, std::uint32_t block = 1) {
+    auto v = [](double cells, DsmcFreeVolume fv, bool disp, DsmcPartner partner, bool norep, std::uint32_t block = 1,
+                double mft_fraction = 0.0) {
         DsmcConfig c;
         c.min_cell_diameters = cells;
         c.free_volume = fv;
@@ -358,6 +353,7 @@ TEST(DsmcKineticTheory, VariantsAgainstKineticTheory) {
         c.partner = partner;
         c.no_repeat_partner = norep;
         c.free_volume_block = block;
+        c.mft_fraction = mft_fraction;
         return c;
     };
     using F = DsmcFreeVolume;
@@ -375,11 +371,7 @@ TEST(DsmcKineticTheory, VariantsAgainstKineticTheory) {
         {"norepeat", v(2, F::mean, true, P::uniform, true)},
         {"nearest", v(2, F::mean, true, P::nearest, true)},
         {"nearest-block3", v(2, F::cell, true, P::nearest, true, 3)},
-        {"nearest-step", [&] {
-             DsmcConfig c = v(2, F::mean, true, P::nearest, true);
-             c.mft_fraction = 0.05;
-             return c;
-         }()},
+        {"nearest-step", v(2, F::mean, true, P::nearest, true, 1, 0.05)},
         {"cells10", v(10, F::mean, true, P::uniform, false)},
         {"cells10-cell", v(10, F::cell, true, P::uniform, false)},
     };
