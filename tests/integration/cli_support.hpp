@@ -13,6 +13,7 @@
 #include <string>
 #include <sys/wait.h>
 #include <unistd.h>
+#include <vector>
 
 #include "io/h5_file.hpp"
 
@@ -31,6 +32,14 @@ inline std::string slurp(const std::filesystem::path& p) {
 }
 
 inline int lines(const std::string& s) { return int(std::count(s.begin(), s.end(), '\n')); }
+
+// An exit as the user meets it (a refusal, a failed write, a signal): exit `code` and one line on
+// stderr that contains every part.
+inline void expect_one_line_exit(const Outcome& o, int code, const std::vector<std::string>& parts) {
+    EXPECT_EQ(o.code, code) << o.err;
+    EXPECT_EQ(lines(o.err), 1) << o.err;
+    for (const std::string& part : parts) EXPECT_NE(o.err.find(part), std::string::npos) << part << " not in: " << o.err;
+}
 
 // Runs a shell command with its stdout and stderr captured.
 inline Outcome shell(const std::string& cmd) {

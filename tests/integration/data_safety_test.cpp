@@ -230,16 +230,13 @@ TEST(DataSafety, FailedWriteExitsThreeAndKeepsThePreviousResults) {
         {"GRANREPRO_SHIM_FAIL_FSYNC=summary.json", "summary.json", "input/output error"},
     };
     for (const auto& c : cases) {
+        SCOPED_TRACE(c.env);
         const Outcome o = run(kSmallRun + "--seed 2 --out " + out.string(), shim_env(c.env));
-        EXPECT_EQ(o.code, 3) << c.env << ": " << o.err;
-        EXPECT_EQ(lines(o.err), 1) << c.env << ": " << o.err;
-        EXPECT_NE(o.err.find("granrepro: error: " + c.reason + " writing " + dir.string() + "/"), std::string::npos)
-            << c.env << ": " << o.err;
-        EXPECT_NE(o.err.find(c.file), std::string::npos) << c.env << ": " << o.err;
+        expect_one_line_exit(o, 3, {"granrepro: error: " + c.reason + " writing " + dir.string() + "/", c.file});
         EXPECT_EQ(o.err.find("HDF5-DIAG"), std::string::npos) << o.err;
-        EXPECT_EQ(slurp(dir / "summary.json"), summary) << c.env;
-        EXPECT_EQ(slurp(dir / "data.h5"), data) << c.env;
-        EXPECT_TRUE(leftovers(out, kExp).empty()) << c.env;
+        EXPECT_EQ(slurp(dir / "summary.json"), summary);
+        EXPECT_EQ(slurp(dir / "data.h5"), data);
+        EXPECT_TRUE(leftovers(out, kExp).empty());
     }
 }
 
@@ -250,10 +247,7 @@ TEST(DataSafety, FailedCheckpointWriteNeverReplacesTheLastGoodOne) {
     // The first checkpoints fit, a later one does not.
     const Outcome o = run(args + "--out " + out.string(),
                           shim_env("GRANREPRO_SHIM_FAIL_WRITE=.cooling.checkpoint GRANREPRO_SHIM_FAIL_AFTER=2000000"));
-    EXPECT_EQ(o.code, 3) << o.err;
-    EXPECT_EQ(lines(o.err), 1) << o.err;
-    EXPECT_NE(o.err.find("no space left on device writing " + (out / ".cooling.checkpoint").string()), std::string::npos)
-        << o.err;
+    expect_one_line_exit(o, 3, {"no space left on device writing " + (out / ".cooling.checkpoint").string()});
     EXPECT_EQ(o.err.find(".partial-"), std::string::npos) << "names the temporary, not the checkpoint: " << o.err;
     int good = 0;
     for (const auto& e : fs::directory_iterator(out / ".cooling.checkpoint")) {
@@ -282,16 +276,13 @@ TEST(DataSafety, FullTmpfsKeepsThePreviousResults) {
         "echo $? > '" + (base / "rc").string() + "'\n" +
         "cp '" + (dir / "summary.json").string() + "' '" + (base / "after.json").string() + "'\n" +
         "ls -A '" + mnt + "' > '" + (base / "listing").string() + "'\n");
-    const int status = std::system(("unshare -rm sh '" + (base / "full.sh").string() + "' 2> /dev/null").c_str());
-    const int code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    const int code = shell("unshare -rm sh '" + (base / "full.sh").string() + "'").code;
     if (code == 77 || !fs::exists(base / "rc")) {
         GTEST_SKIP() << "cannot mount a tmpfs here (unshare -rm / mount -t tmpfs)";
     }
     ASSERT_NE(code, 78) << "the first run did not fit in the tmpfs";
-    const std::string err = slurp(base / "err");
-    EXPECT_EQ(std::stoi(slurp(base / "rc")), 3) << err;
-    EXPECT_EQ(lines(err), 1) << err;
-    EXPECT_NE(err.find("no space left on device writing " + dir.string() + "/"), std::string::npos) << err;
+    expect_one_line_exit({std::stoi(slurp(base / "rc")), slurp(base / "err"), ""}, 3,
+                   {"no space left on device writing " + dir.string() + "/"});
     EXPECT_EQ(slurp(base / "after.json"), slurp(base / "before.json"));
     const std::string listing = slurp(base / "listing");
     EXPECT_EQ(listing.find(".partial-"), std::string::npos) << listing;
@@ -347,11 +338,7 @@ TEST(DataSafety, ConcurrentRunOnTheSameOutIsRefused) {
     kill(first, SIGSTOP); // holds the lock for as long as the second needs, whatever the machine's speed
     const Outcome second = run("cooling --scale quick --set n_side=30 --quiet --seed 8 --out " + out.string());
     kill(first, SIGCONT);
-    EXPECT_EQ(second.code, 2) << second.err;
-    EXPECT_EQ(lines(second.err), 1) << second.err;
-    EXPECT_NE(second.err.find((out / "cooling").string() + " is being written by pid " + std::to_string(first)),
-              std::string::npos)
-        << second.err;
+    expect_one_line_exit(second, 2, {(out / "cooling").string() + " is being written by pid " + std::to_string(first)});
     EXPECT_LE(wait_for(first), 1) << slurp(err);
     EXPECT_TRUE(fs::exists(out / "cooling" / "summary.json"));
     EXPECT_EQ(nlohmann::json::parse(slurp(out / "cooling" / "summary.json")).at("seed"), 1);
@@ -374,12 +361,9 @@ TEST(DataSafety, SigtermWritesAFinalCheckpointAndTheRerunIsIdentical) {
     ASSERT_GT(pid, 0);
     ASSERT_TRUE(wait_until([&] { return h5_files(b / ".cooling.checkpoint") > 0; }, 120)) << slurp(err);
     kill(pid, SIGTERM);
-    const int code = wait_for(pid);
-    const std::string text = slurp(err);
-    ASSERT_FALSE(fs::exists(b / "cooling")) << "the run ended before the signal; rc " << code << ": " << text;
-    EXPECT_EQ(code, 143) << text;
-    EXPECT_EQ(lines(text), 1) << text;
-    EXPECT_NE(text.find("interrupted by SIGTERM; final checkpoint written"), std::string::npos) << text;
+    const Outcome term{wait_for(pid), slurp(err), ""};
+    ASSERT_FALSE(fs::exists(b / "cooling")) << "the run ended before the signal; rc " << term.code << ": " << term.err;
+    expect_one_line_exit(term, 143, {"interrupted by SIGTERM; final checkpoint written"});
     EXPECT_TRUE(leftovers(b, "cooling").empty()) << "staging folder left";
     EXPECT_GE(h5_files(b / ".cooling.checkpoint"), 1);
 
@@ -416,19 +400,15 @@ TEST(DataSafety, CheckRefusesDamagedResultsFiles) {
     for (const auto& c : cases) {
         put(dir / "summary.json", c.text);
         const Outcome o = run("check " + kExp + " --out " + out.string());
-        EXPECT_EQ(o.code, 2) << c.text << ": " << o.err;
-        EXPECT_EQ(lines(o.err), 1) << o.err;
-        EXPECT_NE(o.err.find((dir / "summary.json").string() + ": "), std::string::npos) << o.err;
-        EXPECT_NE(o.err.find(c.must_mention), std::string::npos) << o.err;
+        SCOPED_TRACE(c.text);
+        expect_one_line_exit(o, 2, {(dir / "summary.json").string() + ": ", c.must_mention});
         EXPECT_EQ(o.err.find("--scale"), std::string::npos) << "blames a flag nobody passed: " << o.err;
     }
     put(dir / "summary.json", summary);
     for (const std::size_t keep : {data.size() / 2, data.size() - 100}) {
         put(dir / "data.h5", data.substr(0, keep));
-        const Outcome o = run("check " + kExp + " --out " + out.string());
-        EXPECT_EQ(o.code, 2) << keep << ": " << o.err;
-        EXPECT_EQ(lines(o.err), 1) << o.err;
-        EXPECT_NE(o.err.find((dir / "data.h5").string() + ": damaged"), std::string::npos) << o.err;
+        SCOPED_TRACE(keep);
+        expect_one_line_exit(run("check " + kExp + " --out " + out.string()), 2, {(dir / "data.h5").string() + ": damaged"});
     }
     put(dir / "data.h5", data);
     EXPECT_EQ(run("check " + kExp + " --out " + out.string()).code, 0);
