@@ -1,7 +1,8 @@
-// For tests of save and restore: a temporary folder for state files, and two states compared
-// field by field.
+// For tests of save and restore: a temporary folder for state files, an engine state through a
+// file, and two states compared field by field.
 #pragma once
 #include "data/fields.hpp"
+#include "io/engine_state_file.hpp"
 
 #include <gtest/gtest.h>
 
@@ -26,6 +27,17 @@ struct TempDir {
     }
     ~TempDir() { std::filesystem::remove_all(path); }
 };
+
+// An ED or DSMC state written to an HDF5 file and read back.
+template <class State>
+State through_file(const State& s) {
+    const TempDir dir("-state");
+    const std::string file = (dir.path / "state.h5").string();
+    write_engine_state(H5File::create(file).group("state"), s);
+    State read;
+    read_engine_state(H5File::open(file).open_group("state"), read);
+    return read;
+}
 
 // Every field of two values of a type that lists its fields (data/fields.hpp) holds the same bits
 // (NaN and the sign of zero included): nested structs and lists of them field by field, vectors

@@ -3,7 +3,6 @@
 // against bookkeeping kept outside the engine. Their physics (rates against Enskog, Haff, a2) is in
 // tests/validation/dsmc_kinetic_theory_test.cpp.
 #include "gas.hpp"
-#include "io/dsmc_state_file.hpp"
 #include "saved_states.hpp"
 
 #include <gtest/gtest.h>
@@ -183,17 +182,8 @@ TEST(DsmcRemedies, StateWithRemediesResumesBitIdenticalFromFile) {
     cfg.resample_interval = 7;
     auto whole = gas(1500, 0.25, cfg, 9);
     whole.run_steps(93); // not a multiple of the resampling interval
-    const TempDir dir;
-    const auto file = dir.path / "dsmc.h5";
-    {
-        const H5File f = H5File::create(file.string());
-        write_dsmc_state(f, whole.save_state());
-    }
+    DsmcEngine resumed(through_file(whole.save_state()));
     whole.run_steps(107);
-    DsmcEngine resumed([&] {
-        const H5File f = H5File::open(file.string());
-        return read_dsmc_state(f);
-    }());
     resumed.run_steps(107);
     EXPECT_EQ(resumed.config().partner, DsmcPartner::nearest);
     EXPECT_EQ(resumed.config().free_volume_block, 3u);

@@ -37,22 +37,11 @@ EdEngine rough_pipe() {
 } // namespace
 
 TEST(EdStateFile, ResumedFromFileIsBitIdentical) {
-    TempDir dir;
-    const fs::path file = dir.path / "ed.h5";
     EdEngine whole = rough_pipe();
     whole.run_until(0.01);
-    {
-        const H5File f = H5File::create(file.string());
-        write_ed_state(f.group("state"), whole.save_state());
-    }
+    const EdState read = through_file(whole.save_state());
     whole.set_wall_enabled(0, false); // a run-time change after the checkpoint, replayed below
     whole.run_until(0.03);
-
-    EdState read;
-    {
-        const H5File f = H5File::open(file.string());
-        read = read_ed_state(f.open_group("state"));
-    }
     EXPECT_EQ(read.config.walls.size(), 2u);
     EXPECT_EQ(read.config.walls[0].mu, 0.4);
     EXPECT_EQ(read.config.gravity.x, 0.3);
@@ -117,18 +106,8 @@ TEST(DsmcStateFile, ResumedFromFileIsBitIdentical) {
     cfg.min_cell_diameters = 3.0;
     DsmcEngine whole = uniform_dsmc_gas(1500, 0.25, cfg, 5, 5);
     whole.run_steps(93); // not a multiple of the re-sampling interval
-
-    TempDir dir;
-    const fs::path file = dir.path / "dsmc.h5";
-    {
-        const H5File f = H5File::create(file.string());
-        write_dsmc_state(f, whole.save_state());
-    }
+    DsmcEngine resumed(through_file(whole.save_state()));
     whole.run_steps(107);
-    DsmcEngine resumed([&] {
-        const H5File f = H5File::open(file.string());
-        return read_dsmc_state(f);
-    }());
     resumed.run_steps(107);
     EXPECT_GT(whole.elastic_collisions(), 0u);
     expect_same_fields(whole.save_state(), resumed.save_state());
