@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <gsl/gsl_statistics_double.h>
 #include <cstdio>
 #include <utility>
 #include <gtest/gtest.h>
@@ -29,12 +30,16 @@ EdEngine lattice_gas(std::size_t n, double rho, const std::vector<Vec2>& vel, do
     return e;
 }
 
-// Elastic gas of n disks at area fraction rho, Maxwellian start (RNG stream `seed`, substream
-// from rho), equilibrated for 30 collisions per particle.
+// The same from Maxwellian velocities with Luding's vbar, drawn from RngStream(seed, stream).
+EdEngine maxwellian_gas(std::size_t n, double rho, double vbar, std::uint64_t seed, std::uint64_t stream, double eq,
+                        EdConfig cfg = {}) {
+    RngStream rng(seed, stream);
+    return lattice_gas(n, rho, maxwellian_velocities(std::vector<double>(n, kM), vbar, rng), eq, cfg);
+}
+
+// Elastic gas equilibrated for 30 collisions per particle from vbar = 1 m/s (substream from rho).
 EdEngine equilibrium_gas(std::size_t n, double rho, std::uint64_t seed) {
-    RngStream rng(seed, static_cast<std::uint64_t>(rho * 1000));
-    const std::vector<double> mass(n, kM);
-    return lattice_gas(n, rho, maxwellian_velocities(mass, 1.0, rng), 30.0);
+    return maxwellian_gas(n, rho, 1.0, seed, static_cast<std::uint64_t>(rho * 1000), 30.0);
 }
 
 // Enskog collision frequency at contact value g, omega_E = 2 n d g sqrt(pi T/m) [1/s], T = K/N
@@ -46,11 +51,7 @@ double enskog_rate(const EdEngine& e, double g) {
 
 // Mean of block averages and its standard error.
 std::pair<double, double> mean_and_error(const std::vector<double>& x) {
-    const double k = static_cast<double>(x.size());
-    double m = 0, v = 0;
-    for (double y : x) m += y / k;
-    for (double y : x) v += (y - m) * (y - m) / (k - 1);
-    return {m, std::sqrt(v / k)};
+    return {gsl_stats_mean(x.data(), 1, x.size()), gsl_stats_sd(x.data(), 1, x.size()) / std::sqrt(double(x.size()))};
 }
 
 // Test names such as rho_0_25.
@@ -193,9 +194,7 @@ TEST(EdHomogeneousCooling, EarlyCoolingFollowsEq18) {
     const int runs = 8;
     std::vector<double> ratio(xs.size(), 0.0);
     for (int run = 0; run < runs; ++run) {
-        RngStream rng(5, static_cast<std::uint64_t>(run));
-        const std::vector<double> mass(n, kM);
-        auto e = lattice_gas(n, rho, maxwellian_velocities(mass, 0.2047, rng), 10.0);
+        auto e = maxwellian_gas(n, rho, 0.2047, 5, static_cast<std::uint64_t>(run), 10.0);
         e.set_law(RoughDiskCollision{r, 0.0, -1.0, 0.5});
         const double k0 = e.kinetic_energy().total();
         const double omega0 = enskog_rate(e, henderson_contact_value(rho));
@@ -251,9 +250,7 @@ TEST(EdCheckpoint, ResumedRunIsBitIdentical) {
     cfg.t_c = 1e-5;
     const double l = box_for(n, 0.3);
     cfg.walls = {EdWall{1, 0.0, +1, 0.9, 0.5, 0.2}, EdWall{1, l, -1}};
-    RngStream rng(3, 3);
-    const std::vector<double> mass(n, kM);
-    auto a = lattice_gas(n, 0.3, maxwellian_velocities(mass, 0.3, rng), 2.0, cfg);
+    auto a = maxwellian_gas(n, 0.3, 0.3, 3, 3, 2.0, cfg);
     a.run_until(a.time() + 0.05);
     EdEngine b(a.save_state());
     a.run_until(a.time() + 0.1);
@@ -266,9 +263,7 @@ TEST(EdCheckpoint, ResumedRunIsBitIdentical) {
 // 2e5 collisions, each within 4.5 binomial sigma of 1/10.
 TEST(EdImpactParameter, UniformInElasticGas) {
     const std::size_t n = 4096;
-    RngStream rng(9, 9);
-    const std::vector<double> mass(n, kM);
-    auto e = lattice_gas(n, 0.25, maxwellian_velocities(mass, 1.0, rng), 10.0);
+    auto e = maxwellian_gas(n, 0.25, 1.0, 9, 9, 10.0);
     std::vector<double> hist(10, 0.0);
     const std::uint64_t m = 200000;
     e.run_collisions(m, [&](const CollisionRecord& r) { hist[std::min<std::size_t>(9, static_cast<std::size_t>(r.b_over_d * 10))] += 1; });
