@@ -23,8 +23,7 @@ struct Inner {
     std::vector<std::uint32_t> counts;
     template <class V>
     void fields(V&& v) {
-        v("a", a);
-        v("counts", counts);
+        v("a", a), v("counts", counts);
     }
 };
 
