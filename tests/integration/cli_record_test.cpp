@@ -7,41 +7,24 @@
 #include <chrono>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 #include <thread>
 
 #include "cli_support.hpp"
 #include "harness/progress.hpp"
 #include "harness/run_log.hpp"
-#include "io/h5_file.hpp"
 
 namespace fs = std::filesystem;
-using cli_support::fresh;
-using cli_support::run;
+using namespace cli_support;
 
 namespace {
-
-std::string slurp(const fs::path& p) {
-    std::ifstream in(p);
-    std::stringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
-}
-
-std::string output_of(const std::string& cmd) {
-    const fs::path out = fresh("stdout");
-    const int rc = std::system((cmd + " > " + out.string() + " 2>&1").c_str());
-    std::string text = slurp(out);
-    fs::remove(out);
-    return rc == 0 ? text : "exit " + std::to_string(rc) + ": " + text;
-}
 
 bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
 
 TEST(Record, VersionNamesCompilerLibrariesAndDataFiles) {
-    const std::string v = output_of(std::string(GRANREPRO_BINARY) + " --version");
+    const Outcome v = run("--version");
+    EXPECT_EQ(v.code, 0) << v.err;
     for (const char* part : {"granrepro 0.", "\ncompiler: ", "\nhdf5: 1.", "\nfftw: fftw-3", "\ngsl: 2.", "\ndata: "})
-        EXPECT_TRUE(contains(v, part)) << part << " missing from:\n" << v;
+        EXPECT_TRUE(contains(v.out, part)) << part << " missing from:\n" << v.out;
 }
 
 // One brake-failure run (a second at quick scale) with an override, checked for everything it
@@ -61,12 +44,9 @@ fs::path RecordedRun::out_, RecordedRun::dir_;
 
 TEST_F(RecordedRun, RunLogHasCommandParametersAndWallTimes) {
     const std::string log = slurp(dir_ / "run.log");
-    EXPECT_TRUE(contains(log, "command: ")) << log;
-    EXPECT_TRUE(contains(log, "--set n_vy=20")) << log;
-    EXPECT_TRUE(contains(log, "parameter n_vy = 20 [1] (--set)")) << log;
-    EXPECT_TRUE(contains(log, "parameter k_N = ")) << log;
-    EXPECT_TRUE(contains(log, "run finished: wall time ")) << log;
-    EXPECT_TRUE(contains(log, "done: wall time ")) << log;
+    for (const char* part : {"command: ", "--set n_vy=20", "parameter n_vy = 20 [1] (--set)", "parameter k_N = ",
+                             "run finished: wall time ", "done: wall time "})
+        EXPECT_TRUE(contains(log, part)) << part << " missing from:\n" << log;
 }
 
 TEST_F(RecordedRun, DataFileKeepsTypesAndProvenance) {
@@ -102,7 +82,9 @@ TEST_F(RecordedRun, TsvSecondLineCarriesTheUnits) {
 TEST_F(RecordedRun, EmittedScriptRunsFromAnotherDirectory) {
     const fs::path png = dir_ / "schaefer95-fig3.png";
     fs::remove(png);
-    EXPECT_EQ(output_of("cd / && gnuplot " + (dir_ / "schaefer95-fig3.gp").string()), "");
+    const Outcome o = shell("cd / && gnuplot " + (dir_ / "schaefer95-fig3.gp").string());
+    EXPECT_EQ(o.code, 0);
+    EXPECT_EQ(o.out + o.err, "");
     EXPECT_TRUE(fs::exists(png));
 }
 
@@ -125,7 +107,7 @@ TEST_F(RecordedRun, PlotRendersAnEditedScriptInsteadOfOverwritingIt) {
 // The timer redraws without any tick: a run whose only news is its engine time gets a progress
 // line into run.log after about a second, besides the final one.
 TEST(Progress, TimerReportsEngineTimeWithoutTicks) {
-    const fs::path dir = fresh("progress");
+    const TempPath dir("progress");
     fs::create_directories(dir);
     granrepro::run_log().open(dir / "run.log");
     {
@@ -147,7 +129,6 @@ TEST(Progress, TimerReportsEngineTimeWithoutTicks) {
     for (std::size_t at = 0; (at = log.find("progress: [demo]", at)) != std::string::npos; ++at) ++lines;
     EXPECT_EQ(lines, 2u) << log;
     EXPECT_TRUE(contains(log, "progress: [demo] 0/2 done; engine time t = 0.5 of 2 s")) << log;
-    fs::remove_all(dir);
 }
 
 } // namespace

@@ -3,33 +3,22 @@
 // again resumes from it, and its results equal an uninterrupted run's bit for bit.
 #include <gtest/gtest.h>
 
-#include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <nlohmann/json.hpp>
-#include <sys/wait.h>
 
 #include "cli_support.hpp"
-#include "io/h5_file.hpp"
 
 namespace fs = std::filesystem;
-using granrepro::H5File;
-
-using cli_support::fresh;
-using cli_support::Outcome;
-using cli_support::run;
+using namespace cli_support;
 
 namespace {
 
-nlohmann::json scalars(const fs::path& summary) {
-    std::ifstream in(summary);
-    return nlohmann::json::parse(in).at("scalars");
-}
+nlohmann::json scalars(const fs::path& dir) { return nlohmann::json::parse(slurp(dir / "summary.json")).at("scalars"); }
 
 } // namespace
 
 TEST(CliResume, ClusterGrowthResumesBitIdentical) {
-    const fs::path a = fresh("cg-a"), b = fresh("cg-b");
+    const TempPath a("cg-a"), b("cg-b");
     const std::string args = "cluster-growth --set n_side=32 --set cn_end=300 --seed 3 ";
     // A reduced run: some of its claims fail (exit 1); the datasets are what is compared.
     ASSERT_LE(run(args + "--quiet --out " + a.string()).code, 1);
@@ -47,7 +36,7 @@ TEST(CliResume, ClusterGrowthResumesBitIdentical) {
     EXPECT_FALSE(fs::exists(b / ".cluster-growth.checkpoint")); // removed once the results are written
 
     // Every scalar except the wall-clock ones.
-    const auto sa = scalars(a / "cluster-growth" / "summary.json"), sb = scalars(b / "cluster-growth" / "summary.json");
+    const auto sa = scalars(a / "cluster-growth"), sb = scalars(b / "cluster-growth");
     ASSERT_EQ(sa.size(), sb.size());
     int compared = 0;
     for (auto it = sa.begin(); it != sa.end(); ++it) {
@@ -58,16 +47,9 @@ TEST(CliResume, ClusterGrowthResumesBitIdentical) {
     }
     EXPECT_GT(compared, 20);
     // Tables from before and after the interruption.
-    const H5File fa = H5File::open((a / "cluster-growth" / "data.h5").string());
-    const H5File fb = H5File::open((b / "cluster-growth" / "data.h5").string());
-    for (const char* ds : {"tables/energy/t", "tables/energy/K_over_K0", "tables/energy/elastic_C_over_N",
-                           "tables/instants/C_over_N", "tables/instants/chi", "tables/instants/B",
-                           "tables/instants/tail_fraction", "tables/pnc_0/P"}) {
-        const auto va = fa.read_dataset(ds), vb = fb.read_dataset(ds);
-        ASSERT_EQ(va.size(), vb.size()) << ds;
-        EXPECT_GT(va.size(), 3u) << ds;
-        EXPECT_EQ(0, std::memcmp(va.data(), vb.data(), va.size() * sizeof(double))) << ds;
-    }
-    fs::remove_all(a);
-    fs::remove_all(b);
+    expect_same_datasets(a / "cluster-growth" / "data.h5", b / "cluster-growth" / "data.h5",
+                         {"tables/energy/t", "tables/energy/K_over_K0", "tables/energy/elastic_C_over_N",
+                          "tables/instants/C_over_N", "tables/instants/chi", "tables/instants/B",
+                          "tables/instants/tail_fraction", "tables/pnc_0/P"},
+                         3);
 }

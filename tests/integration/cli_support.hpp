@@ -1,30 +1,60 @@
-// Running the granrepro binary from tests (GRANREPRO_BINARY is set by tests/CMakeLists.txt).
+// Running the granrepro binary from tests (GRANREPRO_BINARY is set by tests/CMakeLists.txt), and
+// reading back what it wrote.
 #pragma once
+#include <gtest/gtest.h>
+
+#include <algorithm>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <initializer_list>
 #include <iterator>
 #include <string>
 #include <sys/wait.h>
 #include <unistd.h>
+#include <vector>
+
+#include "io/h5_file.hpp"
 
 namespace cli_support {
 
 struct Outcome {
     int code;        // exit code, -1 if killed
     std::string err; // everything written to stderr
+    std::string out; // everything written to stdout
 };
 
-// Runs granrepro with `args` (and an environment prefix such as "VAR=1"); stdout is discarded.
+// The whole file, byte for byte ("" if it cannot be read).
+inline std::string slurp(const std::filesystem::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+}
+
+inline int lines(const std::string& s) { return int(std::count(s.begin(), s.end(), '\n')); }
+
+// An exit as the user meets it (a refusal, a failed write, a signal): exit `code` and one line on
+// stderr that contains every part.
+inline void expect_one_line_exit(const Outcome& o, int code, const std::vector<std::string>& parts) {
+    EXPECT_EQ(o.code, code) << o.err;
+    EXPECT_EQ(lines(o.err), 1) << o.err;
+    for (const std::string& part : parts) EXPECT_NE(o.err.find(part), std::string::npos) << part << " not in: " << o.err;
+}
+
+// Runs a shell command with its stdout and stderr captured.
+inline Outcome shell(const std::string& cmd) {
+    const std::string base =
+        (std::filesystem::temp_directory_path() / ("granrepro-cli-" + std::to_string(::getpid()))).string();
+    const int status = std::system((cmd + " > " + base + "-out 2> " + base + "-err").c_str());
+    Outcome o{WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(base + "-err"), slurp(base + "-out")};
+    std::filesystem::remove(base + "-out");
+    std::filesystem::remove(base + "-err");
+    return o;
+}
+
+// Runs granrepro with `args` (and an environment prefix such as "VAR=1").
 inline Outcome run(const std::string& args, const std::string& env = "") {
-    const std::filesystem::path err =
-        std::filesystem::temp_directory_path() / ("granrepro-cli-err-" + std::to_string(::getpid()));
-    const std::string cmd = env + " " + GRANREPRO_BINARY + " " + args + " > /dev/null 2> " + err.string();
-    const int status = std::system(cmd.c_str());
-    std::ifstream in(err);
-    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    std::filesystem::remove(err);
-    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, text};
+    return shell(env + " " + GRANREPRO_BINARY + " " + args);
 }
 
 // A path in the temporary directory, unique to this process, removed if it exists.
@@ -33,6 +63,34 @@ inline std::filesystem::path fresh(const std::string& name) {
         std::filesystem::temp_directory_path() / ("granrepro-cli-" + name + "-" + std::to_string(::getpid()));
     std::filesystem::remove_all(p);
     return p;
+}
+
+// A fresh() path that is removed again when the test leaves its scope (also on a failed ASSERT).
+struct TempPath : std::filesystem::path {
+    explicit TempPath(const std::string& name) : std::filesystem::path(fresh(name)) {}
+    TempPath(const TempPath&) = delete;
+    TempPath& operator=(const TempPath&) = delete;
+    ~TempPath() { std::filesystem::remove_all(*this); }
+};
+
+// How many .h5 files (checkpoints) a folder holds; 0 if it does not exist.
+inline int h5_files(const std::filesystem::path& dir) {
+    std::error_code ec;
+    int n = 0;
+    for (const auto& e : std::filesystem::directory_iterator(dir, ec)) n += e.path().extension() == ".h5";
+    return n;
+}
+
+// The named datasets of two data.h5 files hold the same bits, each more than `more_than` values.
+inline void expect_same_datasets(const std::filesystem::path& a, const std::filesystem::path& b,
+                                 std::initializer_list<const char*> datasets, std::size_t more_than = 0) {
+    const granrepro::H5File fa = granrepro::H5File::open(a.string()), fb = granrepro::H5File::open(b.string());
+    for (const char* ds : datasets) {
+        const auto va = fa.read_dataset(ds), vb = fb.read_dataset(ds);
+        ASSERT_EQ(va.size(), vb.size()) << ds;
+        EXPECT_GT(va.size(), more_than) << ds;
+        EXPECT_EQ(0, std::memcmp(va.data(), vb.data(), va.size() * sizeof(double))) << ds;
+    }
 }
 
 } // namespace cli_support

@@ -2,28 +2,17 @@
 // allowed, exit code 2, and nothing written; the same seed gives bit-identical datasets.
 #include <gtest/gtest.h>
 
-#include <algorithm>
-#include <array>
-#include <cstring>
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
-#include <sys/wait.h>
 
 #include "cli_support.hpp"
-#include "io/h5_file.hpp"
 
 namespace fs = std::filesystem;
 using granrepro::H5File;
-
-using cli_support::fresh;
-using cli_support::Outcome;
-using cli_support::run;
+using namespace cli_support;
 
 namespace {
-
-int lines(const std::string& s) { return int(std::count(s.begin(), s.end(), '\n')); }
 
 struct BadInput {
     const char* name; // the test's name, e.g. Cli/BadInputTest.OneLineExitTwoNothingWritten/kN_negative
@@ -37,13 +26,10 @@ void PrintTo(const BadInput& b, std::ostream* os) { *os << "granrepro " << b.arg
 class BadInputTest : public ::testing::TestWithParam<BadInput> {};
 
 TEST_P(BadInputTest, OneLineExitTwoNothingWritten) {
-    const fs::path out = fresh("bad");
+    const TempPath out("bad");
     const Outcome o = run(std::string(GetParam().args) + " --out " + out.string());
-    EXPECT_EQ(o.code, 2) << o.err;
-    EXPECT_EQ(lines(o.err), 1) << o.err;
-    EXPECT_NE(o.err.find(GetParam().must_mention), std::string::npos) << o.err;
+    expect_one_line_exit(o, 2, {GetParam().must_mention});
     EXPECT_TRUE(!fs::exists(out) || fs::is_empty(out)) << "output written for bad input";
-    fs::remove_all(out);
 }
 
 INSTANTIATE_TEST_SUITE_P(
@@ -93,50 +79,37 @@ INSTANTIATE_TEST_SUITE_P(
     [](const ::testing::TestParamInfo<BadInput>& info) { return std::string(info.param.name); });
 
 TEST(Cli, UnknownSubcommandIsOneLineExitTwo) {
-    const Outcome o = run("frobnicate");
-    EXPECT_EQ(o.code, 2);
-    EXPECT_EQ(lines(o.err), 1);
-    EXPECT_NE(o.err.find("unknown subcommand 'frobnicate'"), std::string::npos);
+    expect_one_line_exit(run("frobnicate"), 2, {"unknown subcommand 'frobnicate'"});
 }
 
 TEST(Cli, UnwritableOutIsRefused) {
-    const Outcome o = run("brake-failure --out /proc/granrepro-cannot-write");
-    EXPECT_EQ(o.code, 2) << o.err;
-    EXPECT_EQ(lines(o.err), 1) << o.err;
-    EXPECT_NE(o.err.find("--out"), std::string::npos);
+    expect_one_line_exit(run("brake-failure --out /proc/granrepro-cannot-write"), 2, {"--out"});
 }
 
-// A copy of the project data with one expected file broken or removed.
-fs::path project_copy(const std::string& name) {
-    const fs::path home = fresh(name);
-    fs::create_directories(home);
-    for (const char* d : {"experiments", "expected", "plots"})
-        fs::copy(fs::path(GRANREPRO_SOURCE_DIR) / d, home / d, fs::copy_options::recursive);
-    return home;
-}
+// A copy of the project data, for a test to break one of its files.
+struct ProjectCopy : TempPath {
+    explicit ProjectCopy(const std::string& name) : TempPath(name) {
+        fs::create_directories(*this);
+        for (const char* d : {"experiments", "expected", "plots"})
+            fs::copy(fs::path(GRANREPRO_SOURCE_DIR) / d, *this / d, fs::copy_options::recursive);
+    }
+};
 
 TEST(Cli, CorruptOrMissingExpectedFileIsAnInputError) {
-    const fs::path home = project_copy("home");
+    const ProjectCopy home("home");
     std::ofstream(home / "expected" / "brake-failure.toml") << "experiment = \"brake-failure\"\n[[claim]\nid=";
     fs::remove(home / "expected" / "emergency-brake.toml");
-    const fs::path out = fresh("exp-out");
-    Outcome o = run("brake-failure --out " + out.string(), "GRANREPRO_HOME=" + home.string());
-    EXPECT_EQ(o.code, 2) << o.err;
-    EXPECT_EQ(lines(o.err), 1) << o.err;
-    EXPECT_NE(o.err.find("brake-failure.toml"), std::string::npos) << o.err;
-    o = run("emergency-brake --out " + out.string(), "GRANREPRO_HOME=" + home.string());
-    EXPECT_EQ(o.code, 2) << o.err;
-    EXPECT_NE(o.err.find("missing"), std::string::npos) << o.err;
+    const TempPath out("exp-out");
+    const std::string env = "GRANREPRO_HOME=" + home.string();
+    expect_one_line_exit(run("brake-failure --out " + out.string(), env), 2, {"brake-failure.toml"});
+    expect_one_line_exit(run("emergency-brake --out " + out.string(), env), 2, {"missing"});
     EXPECT_FALSE(fs::exists(out / "brake-failure"));
     EXPECT_FALSE(fs::exists(out / "emergency-brake"));
-    fs::remove_all(home);
-    fs::remove_all(out);
 }
 
 // Replaces the first `from` in a file of the copy; the test fails if it is absent.
 void replace_in(const fs::path& file, const std::string& from, const std::string& to) {
-    std::ifstream in(file);
-    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    std::string text = slurp(file);
     const auto at = text.find(from);
     ASSERT_NE(at, std::string::npos) << from << " not in " << file;
     text.replace(at, from.size(), to);
@@ -150,7 +123,7 @@ TEST(Cli, WrongDataFilesAreInputErrorsNamingFileAndKey) {
         const char* file;  // under the project copy
         const char* from;  // first occurrence replaced ...
         const char* to;    // ... by this
-        std::vector<const char*> must_mention;
+        std::vector<std::string> must_mention;
     };
     const std::vector<Case> cases{
         {"expected/emergency-brake.toml", "rel_tol = ", "rel_tol = -1 #", {"emergency-brake.toml", "claim ", "rel_tol", "line"}},
@@ -168,46 +141,28 @@ TEST(Cli, WrongDataFilesAreInputErrorsNamingFileAndKey) {
         {"experiments/emergency-brake.toml", "[parameters.k_N]", "[parameters.k_N]\nrnage = 1", {"unknown key 'rnage'", "k_N"}},
     };
     for (const Case& c : cases) {
-        const fs::path home = project_copy("data-home");
+        SCOPED_TRACE(std::string(c.file) + ": " + c.to);
+        const ProjectCopy home("data-home");
         replace_in(home / c.file, c.from, c.to);
-        const fs::path out = fresh("data-out");
+        const TempPath out("data-out");
         for (const char* mode : {"--dry-run", ""}) {
             const Outcome o = run(std::string("emergency-brake --quiet ") + mode + " --out " + out.string(),
                                   "GRANREPRO_HOME=" + home.string());
-            EXPECT_EQ(o.code, 2) << c.file << ": " << c.to << ": " << o.err;
-            EXPECT_EQ(lines(o.err), 1) << o.err;
-            for (const char* m : c.must_mention) EXPECT_NE(o.err.find(m), std::string::npos) << m << " not in: " << o.err;
-            EXPECT_FALSE(fs::exists(out / "emergency-brake")) << c.to;
-            EXPECT_FALSE(fs::exists(out / ".emergency-brake.checkpoint")) << c.to;
+            expect_one_line_exit(o, 2, c.must_mention);
+            EXPECT_FALSE(fs::exists(out / "emergency-brake"));
+            EXPECT_FALSE(fs::exists(out / ".emergency-brake.checkpoint"));
         }
-        fs::remove_all(home);
-        fs::remove_all(out);
     }
 }
 
 // --dry-run accepts every experiment's defaults at both scales and writes nothing.
 TEST(Cli, DryRunAcceptsTheDefaultsAndWritesNothing) {
-    const fs::path out = fresh("dry-out");
+    const TempPath out("dry-out");
     for (const char* scale : {"quick", "paper"}) {
         const Outcome o = run(std::string("all --dry-run --scale ") + scale + " --out " + out.string());
         EXPECT_EQ(o.code, 0) << o.err;
     }
     EXPECT_FALSE(fs::exists(out));
-}
-
-// Runs granrepro and returns its exit code and stdout (stderr goes to err if given).
-Outcome run_capture(const std::string& args, std::string& out_text, const std::string& env = "") {
-    const fs::path out_file = fresh("stdout");
-    const fs::path err_file = fresh("stderr");
-    const std::string cmd = env + " " + std::string(GRANREPRO_BINARY) + " " + args + " > " + out_file.string() +
-                            " 2> " + err_file.string();
-    const int status = std::system(cmd.c_str());
-    std::ifstream in(out_file), err(err_file);
-    out_text.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-    std::string err_text((std::istreambuf_iterator<char>(err)), std::istreambuf_iterator<char>());
-    fs::remove(out_file);
-    fs::remove(err_file);
-    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, err_text};
 }
 
 // emergency-brake in about a second, every claim still passing (with n_vy = 7 two fail).
@@ -217,21 +172,13 @@ const std::string kSmallEmergencyBrake = "emergency-brake " + kSmall;
 // A run, `figure` and `check` whose claims FAIL exit 1 (a trap for CI otherwise); so does a known
 // deviation without a band: exit 2 naming the key.
 TEST(Cli, FailingClaimExitsOneAndBandlessDeviationIsBadInput) {
-    const fs::path home = project_copy("fail-home");
-    {
-        std::ifstream in(home / "expected" / "emergency-brake.toml");
-        std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-        const auto at = text.find("paper = 7.07e-5");
-        ASSERT_NE(at, std::string::npos);
-        text.replace(at, 15, "paper = 1.0e-5 ");
-        std::ofstream(home / "expected" / "emergency-brake.toml") << text;
-    }
-    const fs::path out = fresh("fail-out");
+    const ProjectCopy home("fail-home");
+    replace_in(home / "expected" / "emergency-brake.toml", "paper = 7.07e-5", "paper = 1.0e-5 ");
+    const TempPath out("fail-out");
     const std::string env = "GRANREPRO_HOME=" + home.string();
-    std::string table;
-    Outcome o = run_capture(kSmallEmergencyBrake + "--out " + out.string(), table, env);
+    Outcome o = run(kSmallEmergencyBrake + "--out " + out.string(), env);
     EXPECT_EQ(o.code, 1) << o.err;
-    EXPECT_NE(table.find("FAIL"), std::string::npos) << table;
+    EXPECT_NE(o.out.find("FAIL"), std::string::npos) << o.out;
     EXPECT_TRUE(fs::exists(out / "emergency-brake" / "summary.json")); // the results are kept
     EXPECT_EQ(run("check emergency-brake --out " + out.string(), env).code, 1);
     EXPECT_EQ(run("figure schaefer95-fig5 " + kSmall + "--out " + out.string(), env).code, 1);
@@ -239,40 +186,35 @@ TEST(Cli, FailingClaimExitsOneAndBandlessDeviationIsBadInput) {
 
     // A known deviation whose band was removed: input error naming file, claim and key.
     {
-        std::ifstream in(home / "expected" / "brake-failure.toml");
-        std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>()), kept, line;
-        std::istringstream lines_in(text);
+        std::istringstream lines_in(slurp(home / "expected" / "brake-failure.toml"));
+        std::string kept, line;
         while (std::getline(lines_in, line))
             if (line.rfind("deviation_band =", 0) != 0) kept += line + "\n";
         std::ofstream(home / "expected" / "brake-failure.toml") << kept;
     }
     o = run("brake-failure --quiet --out " + out.string(), env);
-    EXPECT_EQ(o.code, 2) << o.err;
-    EXPECT_EQ(lines(o.err), 1) << o.err;
-    EXPECT_NE(o.err.find("brake-failure.toml: claim "), std::string::npos) << o.err;
-    EXPECT_NE(o.err.find("needs deviation_band"), std::string::npos) << o.err;
-    fs::remove_all(home);
-    fs::remove_all(out);
+    expect_one_line_exit(o, 2, {"brake-failure.toml: claim ", "needs deviation_band"});
 }
 
 TEST(Cli, HelpDocumentsTheExitCodes) {
     for (const char* sub : {"", "all ", "figure ", "check ", "brake-failure "}) {
-        std::string text;
-        EXPECT_EQ(run_capture(std::string(sub) + "--help", text).code, 0);
-        EXPECT_NE(text.find("Exit codes: 0 every claim PASS"), std::string::npos) << sub;
-        EXPECT_NE(text.find("1 a claim FAILed"), std::string::npos) << sub;
-        EXPECT_NE(text.find("2 bad input"), std::string::npos) << sub;
+        const Outcome o = run(std::string(sub) + "--help");
+        EXPECT_EQ(o.code, 0);
+        for (const char* part : {"Exit codes: 0 every claim PASS", "1 a claim FAILed", "2 bad input"})
+            EXPECT_NE(o.out.find(part), std::string::npos) << sub << ": " << part;
     }
 }
 
 // check --all checks every experiment that has results, names the missing ones and exits 1
 // unless --missing-ok; one table each and a totals line.
 TEST(Cli, CheckAllChecksWhatIsThereAndNamesTheMissing) {
-    const fs::path out = fresh("checkall");
+    const TempPath out("checkall");
     ASSERT_EQ(run(kSmallEmergencyBrake + "--out " + out.string()).code, 0);
-    std::string table;
-    Outcome o = run_capture("check --all --out " + out.string(), table);
-    EXPECT_EQ(o.code, 1) << o.err;
+    Outcome o = run("check --all --out " + out.string());
+    const std::string table = o.out;
+    // The missing experiments, named on one line of stderr.
+    expect_one_line_exit(o, 1, {"brake-failure", "bistable-pipe", "cooling", "cluster-growth", "impact-parameter",
+                                "parameter-study", "pipe-arching"});
     EXPECT_NE(table.find("check emergency-brake (quick scale)"), std::string::npos) << table;
     // The totals line counts the table's rows (every quick-scale emergency-brake claim passes).
     std::size_t passes = 0;
@@ -280,20 +222,15 @@ TEST(Cli, CheckAllChecksWhatIsThereAndNamesTheMissing) {
     EXPECT_GE(passes, 12u) << table;
     EXPECT_NE(table.find("totals: " + std::to_string(passes) + " PASS, 0 FAIL, 0 DEVIATION, 0 skipped"), std::string::npos)
         << table;
-    EXPECT_EQ(lines(o.err), 1) << o.err;
-    for (const char* missing : {"brake-failure", "bistable-pipe", "cooling", "cluster-growth", "impact-parameter",
-                                "parameter-study", "pipe-arching"})
-        EXPECT_NE(o.err.find(missing), std::string::npos) << missing << ": " << o.err;
     EXPECT_EQ(o.err.find("emergency-brake"), std::string::npos) << o.err;
-    o = run_capture("check --all --missing-ok --out " + out.string(), table);
+    o = run("check --all --missing-ok --out " + out.string());
     EXPECT_EQ(o.code, 0) << o.err;
     EXPECT_NE(o.err.find("brake-failure"), std::string::npos) << o.err; // still listed
-    fs::remove_all(out);
 }
 
 // `figure` replaces the experiment's directory but keeps (re-renders) the figures it had.
 TEST(Cli, FigureKeepsTheExperimentsOtherFigures) {
-    const fs::path out = fresh("figkeep");
+    const TempPath out("figkeep");
     ASSERT_EQ(run(kSmallEmergencyBrake + "--out " + out.string()).code, 0);
     const fs::path dir = out / "emergency-brake";
     ASSERT_TRUE(fs::exists(dir / "schaefer95-fig5.png"));
@@ -308,32 +245,25 @@ TEST(Cli, FigureKeepsTheExperimentsOtherFigures) {
     EXPECT_TRUE(fs::exists(dir / "schaefer95-fig5.pdf"));
     EXPECT_GE(fs::last_write_time(dir / "schaefer95-fig5.png"), fs::last_write_time(dir / "data.h5"))
         << "schaefer95-fig5 was kept from the old data instead of re-rendered from the new";
-    fs::remove_all(out);
 }
 
 TEST(Cli, SameSeedGivesBitIdenticalDatasets) {
-    const fs::path a = fresh("det-a"), b = fresh("det-b");
+    const TempPath a("det-a"), b("det-b");
     const std::string args = "emergency-brake --quiet --set n_vy=7 --set n_positions=3 --seed 7 ";
     // This coarse grid fails two claims (exit 1); the datasets are what is compared.
     ASSERT_LE(run(args + "--threads 1 --out " + a.string()).code, 1);
     ASSERT_LE(run(args + "--threads 2 --out " + b.string()).code, 1);
+    expect_same_datasets(a / "emergency-brake" / "data.h5", b / "emergency-brake" / "data.h5",
+                         {"tables/impacts_vx0.1/dvy", "tables/impacts_vx0.5/contacts", "scalars/v_crit_vx0.3"});
     const H5File fa = H5File::open((a / "emergency-brake" / "data.h5").string());
-    const H5File fb = H5File::open((b / "emergency-brake" / "data.h5").string());
-    for (const char* ds : {"tables/impacts_vx0.1/dvy", "tables/impacts_vx0.5/contacts", "scalars/v_crit_vx0.3"}) {
-        const auto va = fa.read_dataset(ds), vb = fb.read_dataset(ds);
-        ASSERT_EQ(va.size(), vb.size());
-        EXPECT_EQ(0, std::memcmp(va.data(), vb.data(), va.size() * sizeof(double))) << ds;
-    }
     EXPECT_EQ(fa.read_u64_attr("seed"), 7u);
     EXPECT_EQ(fa.read_string_attr("schema"), "granrepro-result");
-    fs::remove_all(a);
-    fs::remove_all(b);
 }
 
 // A cooling run killed after its third mid-run checkpoint (both methods, on two threads) and
 // rerun resumes from the checkpoints; its datasets equal an uninterrupted run's bit for bit.
 TEST(Cli, CoolingResumesBitIdentical) {
-    const fs::path a = fresh("cool-a"), b = fresh("cool-b");
+    const TempPath a("cool-a"), b("cool-b");
     const std::string args = "cooling --scale quick --set n_side=30 ";
     // A reduced run: some of its claims fail (exit 1); the datasets are what is compared.
     ASSERT_LE(run(args + "--quiet --out " + a.string()).code, 1);
@@ -342,39 +272,24 @@ TEST(Cli, CoolingResumesBitIdentical) {
             "GRANREPRO_INTERRUPT_AFTER_CHECKPOINTS=3");
     EXPECT_NE(killed.code, 0) << killed.err;
     EXPECT_FALSE(fs::exists(b / "cooling"));
-    int checkpoints = 0;
-    for (const auto& e : fs::directory_iterator(b / ".cooling.checkpoint"))
-        checkpoints += e.path().extension() == ".h5";
-    EXPECT_EQ(checkpoints, 2) << "one per method";
+    EXPECT_EQ(h5_files(b / ".cooling.checkpoint"), 2) << "one per method";
     const Outcome resumed = run(args + "--checkpoint-interval 0 --out " + b.string());
     ASSERT_LE(resumed.code, 1) << resumed.err;
     EXPECT_NE(resumed.err.find("resuming"), std::string::npos) << resumed.err;
     EXPECT_FALSE(fs::exists(b / ".cooling.checkpoint"));
-    const H5File fa = H5File::open((a / "cooling" / "data.h5").string());
-    const H5File fb = H5File::open((b / "cooling" / "data.h5").string());
-    for (const char* ds :
-         {"tables/energy_ed/K_over_K0", "tables/energy_ed/C_over_N", "tables/energy_dsmc/K_over_K0",
-          "tables/energy_dsmc/C_over_N", "tables/impact_parameter_ed/P_t0",
-          "tables/impact_parameter_ed/P_t2", "tables/gr_ed/g_t0", "tables/gr_ed/g_t5",
-          "tables/sk_dsmc/S_t5", "scalars/ed_C_over_N_end", "scalars/pbd_collisions_first",
-          "scalars/dsmc_over_ed_end", "scalars/omega_equilibration_over_enskog"}) {
-        const auto va = fa.read_dataset(ds), vb = fb.read_dataset(ds);
-        ASSERT_EQ(va.size(), vb.size()) << ds;
-        EXPECT_EQ(0, std::memcmp(va.data(), vb.data(), va.size() * sizeof(double))) << ds;
-    }
-    fs::remove_all(a);
-    fs::remove_all(b);
+    expect_same_datasets(a / "cooling" / "data.h5", b / "cooling" / "data.h5",
+                         {"tables/energy_ed/K_over_K0", "tables/energy_ed/C_over_N", "tables/energy_dsmc/K_over_K0",
+                          "tables/energy_dsmc/C_over_N", "tables/impact_parameter_ed/P_t0",
+                          "tables/impact_parameter_ed/P_t2", "tables/gr_ed/g_t0", "tables/gr_ed/g_t5",
+                          "tables/sk_dsmc/S_t5", "scalars/ed_C_over_N_end", "scalars/pbd_collisions_first",
+                          "scalars/dsmc_over_ed_end", "scalars/omega_equilibration_over_enskog"});
 }
 
 TEST(Cli, ListNamesEveryFigure) {
-    const fs::path out = fresh("list");
-    const std::string cmd = std::string(GRANREPRO_BINARY) + " list > " + out.string();
-    ASSERT_EQ(std::system(cmd.c_str()), 0);
-    std::ifstream in(out);
-    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const Outcome o = run("list");
+    ASSERT_EQ(o.code, 0) << o.err;
     for (const char* id : {"schaefer95-fig3", "schaefer95-fig4", "schaefer95-fig5"})
-        EXPECT_NE(text.find(id), std::string::npos) << id;
-    fs::remove(out);
+        EXPECT_NE(o.out.find(id), std::string::npos) << id;
 }
 
 } // namespace

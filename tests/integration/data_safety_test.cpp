@@ -8,10 +8,8 @@
 #include <chrono>
 #include <csignal>
 #include <cstdlib>
-#include <cstring>
 #include <filesystem>
 #include <fstream>
-#include <iterator>
 #include <nlohmann/json.hpp>
 #include <spawn.h>
 #include <sys/wait.h>
@@ -23,7 +21,6 @@
 #include "core/stable_hash.hpp"
 #include "harness/experiment.hpp"
 #include "harness/sweep_checkpoint.hpp"
-#include "io/h5_file.hpp"
 #include "io/output_lock.hpp"
 #include "io/staged_directory.hpp"
 #include "io/write_error.hpp"
@@ -32,18 +29,9 @@ extern char** environ;
 
 namespace fs = std::filesystem;
 using namespace granrepro;
-using cli_support::fresh;
-using cli_support::Outcome;
-using cli_support::run;
+using namespace cli_support;
 
 namespace {
-
-int lines(const std::string& s) { return int(std::count(s.begin(), s.end(), '\n')); }
-
-std::string slurp(const fs::path& p) {
-    std::ifstream in(p, std::ios::binary);
-    return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-}
 
 void put(const fs::path& p, const std::string& text) { std::ofstream(p, std::ios::binary) << text; }
 
@@ -108,7 +96,7 @@ TEST(StableHash, Fnv1a64MatchesThePublishedVectors) {
 // ---- sweep-point files ------------------------------------------------------------------------
 
 TEST(SweepCheckpoint, DamagedPointFilesAreRecomputedNotTrusted) {
-    const fs::path work = fresh("sweep-points");
+    const TempPath work("sweep-points");
     const ParameterSet params = ParameterSet::load(fs::path(GRANREPRO_SOURCE_DIR) / "experiments" / "pipe-arching.toml",
                                                    Scale::Quick);
     const RunContext ctx{params, Scale::Quick, 7, 1, true, work, 60.0};
@@ -139,13 +127,12 @@ TEST(SweepCheckpoint, DamagedPointFilesAreRecomputedNotTrusted) {
     }
     put(dir / "0.json", good0);
     EXPECT_EQ(SweepCheckpoint(ctx).load(0), value);
-    fs::remove_all(work);
 }
 
 // ---- the commit ---------------------------------------------------------------------------
 
 TEST(StagedDirectory, FallbackCommitReplacesAndLeavesNothing) {
-    const fs::path dir = fresh("fallback");
+    const TempPath dir("fallback");
     fs::create_directories(dir / "exp");
     put(dir / "exp" / "data.txt", "old");
     setenv("GRANREPRO_TEST_COMMIT_NO_EXCHANGE", "1", 1);
@@ -164,11 +151,10 @@ TEST(StagedDirectory, FallbackCommitReplacesAndLeavesNothing) {
     }
     EXPECT_EQ(slurp(dir / "exp" / "data.txt"), "newer");
     EXPECT_TRUE(leftovers(dir, "exp").empty());
-    fs::remove_all(dir);
 }
 
 TEST(StagedDirectory, LeftoversOfKilledRunsAreCleanedAndAnOnlyOldCopyRestored) {
-    const fs::path dir = fresh("leftovers");
+    const TempPath dir("leftovers");
     // A kill between the two renames of a fallback commit: only the old copy and the new staging.
     fs::create_directories(dir / ".exp.old-999991");
     put(dir / ".exp.old-999991" / "data.txt", "old results");
@@ -193,13 +179,12 @@ TEST(StagedDirectory, LeftoversOfKilledRunsAreCleanedAndAnOnlyOldCopyRestored) {
     EXPECT_FALSE(fs::exists(dir / "ck" / "sweep-1" / ".3.json.tmp-999995"));
     EXPECT_FALSE(fs::exists(dir / "ck" / "run-1-ed.h5.partial-999996"));
     EXPECT_TRUE(fs::exists(dir / "ck" / "sweep-1" / "2.json"));
-    fs::remove_all(dir);
 }
 
 // ---- the lock ---------------------------------------------------------------------------------
 
 TEST(OutputLock, ExclusiveRefusesAnyOtherSharedCoexist) {
-    const fs::path dir = fresh("lock");
+    const TempPath dir("lock");
     fs::create_directories(dir);
     {
         const OutputLock a(dir, "exp");
@@ -221,7 +206,6 @@ TEST(OutputLock, ExclusiveRefusesAnyOtherSharedCoexist) {
         EXPECT_THROW(OutputLock(dir, "exp"), InputError);                 // but never beside a whole run
     }
     EXPECT_NO_THROW(OutputLock(dir, "exp")); // released with its holder
-    fs::remove_all(dir);
 }
 
 // ---- the command line -------------------------------------------------------------------------
@@ -229,7 +213,7 @@ TEST(OutputLock, ExclusiveRefusesAnyOtherSharedCoexist) {
 // Writes that fail as on a full disk (an LD_PRELOAD shim): exit 3, one line naming the file as the
 // user knows it, the previous results byte for byte as they were, nothing hidden left behind.
 TEST(DataSafety, FailedWriteExitsThreeAndKeepsThePreviousResults) {
-    const fs::path out = fresh("enospc");
+    const TempPath out("enospc");
     ASSERT_EQ(run(kSmallRun + "--seed 1 --out " + out.string()).code, 0);
     const fs::path dir = out / kExp;
     const std::string summary = slurp(dir / "summary.json"), data = slurp(dir / "data.h5");
@@ -246,31 +230,24 @@ TEST(DataSafety, FailedWriteExitsThreeAndKeepsThePreviousResults) {
         {"GRANREPRO_SHIM_FAIL_FSYNC=summary.json", "summary.json", "input/output error"},
     };
     for (const auto& c : cases) {
+        SCOPED_TRACE(c.env);
         const Outcome o = run(kSmallRun + "--seed 2 --out " + out.string(), shim_env(c.env));
-        EXPECT_EQ(o.code, 3) << c.env << ": " << o.err;
-        EXPECT_EQ(lines(o.err), 1) << c.env << ": " << o.err;
-        EXPECT_NE(o.err.find("granrepro: error: " + c.reason + " writing " + dir.string() + "/"), std::string::npos)
-            << c.env << ": " << o.err;
-        EXPECT_NE(o.err.find(c.file), std::string::npos) << c.env << ": " << o.err;
+        expect_one_line_exit(o, 3, {"granrepro: error: " + c.reason + " writing " + dir.string() + "/", c.file});
         EXPECT_EQ(o.err.find("HDF5-DIAG"), std::string::npos) << o.err;
-        EXPECT_EQ(slurp(dir / "summary.json"), summary) << c.env;
-        EXPECT_EQ(slurp(dir / "data.h5"), data) << c.env;
-        EXPECT_TRUE(leftovers(out, kExp).empty()) << c.env;
+        EXPECT_EQ(slurp(dir / "summary.json"), summary);
+        EXPECT_EQ(slurp(dir / "data.h5"), data);
+        EXPECT_TRUE(leftovers(out, kExp).empty());
     }
-    fs::remove_all(out);
 }
 
 // A checkpoint that cannot be written whole is never renamed into place: the last good one stays.
 TEST(DataSafety, FailedCheckpointWriteNeverReplacesTheLastGoodOne) {
-    const fs::path out = fresh("enospc-ck");
+    const TempPath out("enospc-ck");
     const std::string args = "cooling --scale quick --set n_side=30 --quiet --threads 1 --checkpoint-interval 0 ";
     // The first checkpoints fit, a later one does not.
     const Outcome o = run(args + "--out " + out.string(),
                           shim_env("GRANREPRO_SHIM_FAIL_WRITE=.cooling.checkpoint GRANREPRO_SHIM_FAIL_AFTER=2000000"));
-    EXPECT_EQ(o.code, 3) << o.err;
-    EXPECT_EQ(lines(o.err), 1) << o.err;
-    EXPECT_NE(o.err.find("no space left on device writing " + (out / ".cooling.checkpoint").string()), std::string::npos)
-        << o.err;
+    expect_one_line_exit(o, 3, {"no space left on device writing " + (out / ".cooling.checkpoint").string()});
     EXPECT_EQ(o.err.find(".partial-"), std::string::npos) << "names the temporary, not the checkpoint: " << o.err;
     int good = 0;
     for (const auto& e : fs::directory_iterator(out / ".cooling.checkpoint")) {
@@ -281,12 +258,11 @@ TEST(DataSafety, FailedCheckpointWriteNeverReplacesTheLastGoodOne) {
     }
     EXPECT_GE(good, 1) << "the test needs a checkpoint that fitted";
     EXPECT_FALSE(fs::exists(out / "cooling"));
-    fs::remove_all(out);
 }
 
 // A real full disk where this machine allows a small tmpfs (user and mount namespaces).
 TEST(DataSafety, FullTmpfsKeepsThePreviousResults) {
-    const fs::path base = fresh("tmpfs");
+    const TempPath base("tmpfs");
     fs::create_directories(base / "mnt");
     const fs::path dir = base / "mnt" / kExp;
     // One run's results fit in 256 KiB; a second copy beside them (staged, then exchanged) does not.
@@ -300,28 +276,23 @@ TEST(DataSafety, FullTmpfsKeepsThePreviousResults) {
         "echo $? > '" + (base / "rc").string() + "'\n" +
         "cp '" + (dir / "summary.json").string() + "' '" + (base / "after.json").string() + "'\n" +
         "ls -A '" + mnt + "' > '" + (base / "listing").string() + "'\n");
-    const int status = std::system(("unshare -rm sh '" + (base / "full.sh").string() + "' 2> /dev/null").c_str());
-    const int code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    const int code = shell("unshare -rm sh '" + (base / "full.sh").string() + "'").code;
     if (code == 77 || !fs::exists(base / "rc")) {
-        fs::remove_all(base);
         GTEST_SKIP() << "cannot mount a tmpfs here (unshare -rm / mount -t tmpfs)";
     }
     ASSERT_NE(code, 78) << "the first run did not fit in the tmpfs";
-    const std::string err = slurp(base / "err");
-    EXPECT_EQ(std::stoi(slurp(base / "rc")), 3) << err;
-    EXPECT_EQ(lines(err), 1) << err;
-    EXPECT_NE(err.find("no space left on device writing " + dir.string() + "/"), std::string::npos) << err;
+    expect_one_line_exit({std::stoi(slurp(base / "rc")), slurp(base / "err"), ""}, 3,
+                   {"no space left on device writing " + dir.string() + "/"});
     EXPECT_EQ(slurp(base / "after.json"), slurp(base / "before.json"));
     const std::string listing = slurp(base / "listing");
     EXPECT_EQ(listing.find(".partial-"), std::string::npos) << listing;
-    fs::remove_all(base);
 }
 
 // A kill inside the commit: after the exchange the new results are complete in place; with the
 // two-rename fallback, between the renames, the next run restores the old copy. Either way the
 // next run leaves no hidden folder.
 TEST(DataSafety, KillInTheCommitWindowLosesNoResults) {
-    const fs::path out = fresh("commit-kill");
+    const TempPath out("commit-kill");
     const fs::path dir = out / kExp;
     ASSERT_EQ(run(kSmallRun + "--seed 1 --out " + out.string()).code, 0);
     const std::string first = slurp(dir / "summary.json");
@@ -354,31 +325,24 @@ TEST(DataSafety, KillInTheCommitWindowLosesNoResults) {
     EXPECT_NE(o.err.find("restored " + dir.string()), std::string::npos) << o.err;
     EXPECT_EQ(nlohmann::json::parse(slurp(dir / "summary.json")).at("seed"), 4);
     EXPECT_TRUE(leftovers(out, kExp).empty());
-    fs::remove_all(out);
 }
 
 // Two runs on one --out: the second is refused at once (exit 2, one line naming the first's
 // pid) and the first completes undisturbed.
 TEST(DataSafety, ConcurrentRunOnTheSameOutIsRefused) {
-    const fs::path out = fresh("concurrent");
-    const fs::path err = out.string() + "-err";
+    const TempPath out("concurrent");
+    const TempPath err("concurrent-err");
     const pid_t first = spawn("cooling --scale quick --set n_side=30 --quiet --out " + out.string(), err);
     ASSERT_GT(first, 0);
     ASSERT_TRUE(wait_until([&] { return !leftovers(out, "cooling").empty(); }, 60)) << slurp(err);
     kill(first, SIGSTOP); // holds the lock for as long as the second needs, whatever the machine's speed
     const Outcome second = run("cooling --scale quick --set n_side=30 --quiet --seed 8 --out " + out.string());
     kill(first, SIGCONT);
-    EXPECT_EQ(second.code, 2) << second.err;
-    EXPECT_EQ(lines(second.err), 1) << second.err;
-    EXPECT_NE(second.err.find((out / "cooling").string() + " is being written by pid " + std::to_string(first)),
-              std::string::npos)
-        << second.err;
+    expect_one_line_exit(second, 2, {(out / "cooling").string() + " is being written by pid " + std::to_string(first)});
     EXPECT_LE(wait_for(first), 1) << slurp(err);
     EXPECT_TRUE(fs::exists(out / "cooling" / "summary.json"));
     EXPECT_EQ(nlohmann::json::parse(slurp(out / "cooling" / "summary.json")).at("seed"), 1);
     EXPECT_TRUE(leftovers(out, "cooling").empty());
-    fs::remove_all(out);
-    fs::remove(err);
 }
 
 // SIGTERM during a quick cooling run: the running jobs save a final checkpoint at their next
@@ -386,8 +350,8 @@ TEST(DataSafety, ConcurrentRunOnTheSameOutIsRefused) {
 // left, exit 143 with one line; the rerun resumes and its datasets equal an uninterrupted run's
 // bit for bit.
 TEST(DataSafety, SigtermWritesAFinalCheckpointAndTheRerunIsIdentical) {
-    const fs::path a = fresh("term-a"), b = fresh("term-b");
-    const fs::path err = b.string() + "-err";
+    const TempPath a("term-a"), b("term-b");
+    const TempPath err("term-err");
     const std::string args = "cooling --scale quick --set n_side=40 --quiet --threads 2 ";
     ASSERT_LE(run(args + "--out " + a.string()).code, 1);
 
@@ -395,48 +359,28 @@ TEST(DataSafety, SigtermWritesAFinalCheckpointAndTheRerunIsIdentical) {
     // cooling prepares its initial states, which no checkpoint covers.
     const pid_t pid = spawn(args + "--checkpoint-interval 0 --out " + b.string(), err);
     ASSERT_GT(pid, 0);
-    const auto has_checkpoint = [&] {
-        std::error_code ec;
-        for (const auto& e : fs::directory_iterator(b / ".cooling.checkpoint", ec))
-            if (e.path().extension() == ".h5") return true;
-        return false;
-    };
-    ASSERT_TRUE(wait_until(has_checkpoint, 120)) << slurp(err);
+    ASSERT_TRUE(wait_until([&] { return h5_files(b / ".cooling.checkpoint") > 0; }, 120)) << slurp(err);
     kill(pid, SIGTERM);
-    const int code = wait_for(pid);
-    const std::string text = slurp(err);
-    ASSERT_FALSE(fs::exists(b / "cooling")) << "the run ended before the signal; rc " << code << ": " << text;
-    EXPECT_EQ(code, 143) << text;
-    EXPECT_EQ(lines(text), 1) << text;
-    EXPECT_NE(text.find("interrupted by SIGTERM; final checkpoint written"), std::string::npos) << text;
+    const Outcome term{wait_for(pid), slurp(err), ""};
+    ASSERT_FALSE(fs::exists(b / "cooling")) << "the run ended before the signal; rc " << term.code << ": " << term.err;
+    expect_one_line_exit(term, 143, {"interrupted by SIGTERM; final checkpoint written"});
     EXPECT_TRUE(leftovers(b, "cooling").empty()) << "staging folder left";
-    int checkpoints = 0;
-    for (const auto& e : fs::directory_iterator(b / ".cooling.checkpoint"))
-        checkpoints += e.path().extension() == ".h5";
-    EXPECT_GE(checkpoints, 1);
+    EXPECT_GE(h5_files(b / ".cooling.checkpoint"), 1);
 
     const Outcome resumed = run("cooling --scale quick --set n_side=40 --threads 2 --checkpoint-interval 0 --out " + b.string());
     ASSERT_LE(resumed.code, 1) << resumed.err;
     EXPECT_NE(resumed.err.find("resuming"), std::string::npos) << resumed.err;
     EXPECT_FALSE(fs::exists(b / ".cooling.checkpoint"));
     EXPECT_TRUE(leftovers(b, "cooling").empty());
-    const H5File fa = H5File::open((a / "cooling" / "data.h5").string());
-    const H5File fb = H5File::open((b / "cooling" / "data.h5").string());
-    for (const char* ds : {"tables/energy_ed/K_over_K0", "tables/energy_ed/C_over_N", "tables/energy_dsmc/K_over_K0",
-                           "tables/impact_parameter_ed/P_t2", "tables/gr_ed/g_t5", "tables/sk_dsmc/S_t5",
-                           "scalars/ed_C_over_N_end", "scalars/dsmc_over_ed_end"}) {
-        const auto va = fa.read_dataset(ds), vb = fb.read_dataset(ds);
-        ASSERT_EQ(va.size(), vb.size()) << ds;
-        EXPECT_EQ(0, std::memcmp(va.data(), vb.data(), va.size() * sizeof(double))) << ds;
-    }
-    fs::remove_all(a);
-    fs::remove_all(b);
-    fs::remove(err);
+    expect_same_datasets(a / "cooling" / "data.h5", b / "cooling" / "data.h5",
+                         {"tables/energy_ed/K_over_K0", "tables/energy_ed/C_over_N", "tables/energy_dsmc/K_over_K0",
+                          "tables/impact_parameter_ed/P_t2", "tables/gr_ed/g_t5", "tables/sk_dsmc/S_t5",
+                          "scalars/ed_C_over_N_end", "scalars/dsmc_over_ed_end"});
 }
 
 // `check` validates what it reads: exit 2 and one line naming the file and what is wrong.
 TEST(DataSafety, CheckRefusesDamagedResultsFiles) {
-    const fs::path out = fresh("check-damaged");
+    const TempPath out("check-damaged");
     ASSERT_EQ(run(kSmallRun + "--out " + out.string()).code, 0);
     const fs::path dir = out / kExp;
     const std::string summary = slurp(dir / "summary.json"), data = slurp(dir / "data.h5");
@@ -456,21 +400,16 @@ TEST(DataSafety, CheckRefusesDamagedResultsFiles) {
     for (const auto& c : cases) {
         put(dir / "summary.json", c.text);
         const Outcome o = run("check " + kExp + " --out " + out.string());
-        EXPECT_EQ(o.code, 2) << c.text << ": " << o.err;
-        EXPECT_EQ(lines(o.err), 1) << o.err;
-        EXPECT_NE(o.err.find((dir / "summary.json").string() + ": "), std::string::npos) << o.err;
-        EXPECT_NE(o.err.find(c.must_mention), std::string::npos) << o.err;
+        SCOPED_TRACE(c.text);
+        expect_one_line_exit(o, 2, {(dir / "summary.json").string() + ": ", c.must_mention});
         EXPECT_EQ(o.err.find("--scale"), std::string::npos) << "blames a flag nobody passed: " << o.err;
     }
     put(dir / "summary.json", summary);
     for (const std::size_t keep : {data.size() / 2, data.size() - 100}) {
         put(dir / "data.h5", data.substr(0, keep));
-        const Outcome o = run("check " + kExp + " --out " + out.string());
-        EXPECT_EQ(o.code, 2) << keep << ": " << o.err;
-        EXPECT_EQ(lines(o.err), 1) << o.err;
-        EXPECT_NE(o.err.find((dir / "data.h5").string() + ": damaged"), std::string::npos) << o.err;
+        SCOPED_TRACE(keep);
+        expect_one_line_exit(run("check " + kExp + " --out " + out.string()), 2, {(dir / "data.h5").string() + ": damaged"});
     }
     put(dir / "data.h5", data);
     EXPECT_EQ(run("check " + kExp + " --out " + out.string()).code, 0);
-    fs::remove_all(out);
 }

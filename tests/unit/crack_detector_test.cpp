@@ -27,13 +27,7 @@ std::vector<Vec2> lattice(std::size_t rows) {
 }
 
 CrackSearch search(std::size_t below = 40, std::size_t above = 40) {
-    CrackSearch s;
-    s.diameter = kD;
-    s.width = kL;
-    s.min_below = below;
-    s.min_above = above;
-    s.max_opening = 3 * kD;
-    return s;
+    return {.diameter = kD, .width = kL, .min_below = below, .min_above = above, .max_opening = 3 * kD};
 }
 
 // Smallest surface gap between a disk with above(r) and one without.

@@ -2,24 +2,19 @@
 // probability, impact parameter, conservation, restitution of the normal component only, the TC
 // model and the two dense-gas corrections. Every collision is checked against the velocities the
 // pair had just before it, kept independently of the engine's report.
-#include "engines/dsmc/dsmc_engine.hpp"
+#include "gas.hpp"
 
 #include <gsl/gsl_cdf.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <numbers>
 
 using namespace granrepro;
+using namespace granrepro::test;
 
 namespace {
-
-constexpr double kD = 1e-3; // diameter [m]
-constexpr double kM = 1e-6; // mass [kg]
-
-double box_for(std::size_t n, double rho) { return kD * std::sqrt(static_cast<double>(n) * std::numbers::pi / (4.0 * rho)); }
 
 // Random positions, Gaussian velocities (T/m = 1 m^2/s^2); masses alternate between kM and
 // mass_ratio * kM, radii between d/2 and radius_ratio * d/2 when asked for.
@@ -107,18 +102,22 @@ struct Tracker {
     }
 };
 
-void run_tracked(DsmcEngine& e, Tracker& tr, int steps) {
+// `steps` steps of e with every collision checked; r and tc_huge as in Tracker.
+Tracker run_tracked(DsmcEngine& e, int steps, double r = 1.0, bool tc_huge = false) {
+    Tracker tr;
     tr.e = &e;
+    tr.r = r;
+    tr.tc_huge = tc_huge;
     tr.start();
     for (int k = 0; k < steps; ++k) e.step(tr);
+    return tr;
 }
 
 } // namespace
 
 TEST(DsmcCollision, ElasticCollisionsConserveMomentumAndEnergyExactly) {
     auto e = gas(3000, 0.1, {}, 3.0); // unequal masses: the split of dP must still be exact
-    Tracker tr;
-    run_tracked(e, tr, 150);
+    const Tracker tr = run_tracked(e, 150);
     ASSERT_GT(tr.seen, 2000u);
     EXPECT_EQ(tr.not_approaching, 0u);
     EXPECT_LT(tr.err_unit, 1e-15);
@@ -135,9 +134,7 @@ TEST(DsmcCollision, RestitutionActsOnTheNormalComponentOnly) {
     DsmcConfig cfg;
     cfg.r = 0.7;
     auto e = gas(3000, 0.1, cfg, 2.0, 1.5); // polydisperse: sigma_ij, d_ij per pair
-    Tracker tr;
-    tr.r = 0.7;
-    run_tracked(e, tr, 150);
+    const Tracker tr = run_tracked(e, 150, 0.7);
     ASSERT_GT(tr.seen, 1000u);
     EXPECT_EQ(tr.elastic, 0u);
     EXPECT_EQ(tr.not_approaching, 0u);
@@ -154,10 +151,7 @@ TEST(DsmcCollision, TcModelMakesRepeatedCollisionsElastic) {
     cfg.r = 0.5;
     cfg.t_c = 1e9; // [s]: every particle's second collision comes within t_c
     auto e = gas(2000, 0.1, cfg);
-    Tracker tr;
-    tr.r = 0.5;
-    tr.tc_huge = true;
-    run_tracked(e, tr, 200);
+    const Tracker tr = run_tracked(e, 200, 0.5, true);
     ASSERT_GT(tr.elastic, 100u);
     EXPECT_LT(tr.elastic, tr.seen);
     EXPECT_EQ(tr.tc_mismatch, 0u);
@@ -167,8 +161,7 @@ TEST(DsmcCollision, TcModelMakesRepeatedCollisionsElastic) {
 
 TEST(DsmcCollision, ImpactParameterIsUniform) {
     auto e = gas(4000, 0.1, {});
-    Tracker tr;
-    run_tracked(e, tr, 400);
+    const Tracker tr = run_tracked(e, 400);
     ASSERT_GT(tr.b.size(), 20000u);
     constexpr int kBins = 20;
     std::vector<double> h(kBins, 0.0);
@@ -234,9 +227,7 @@ TEST(DsmcCollision, DisplacementMovesThePairApartByTheContactDistanceAlongDp) {
     cfg.displacement = true;
     cfg.r = 0.9;
     auto e = gas(3000, 0.2, cfg, 2.0);
-    Tracker tr;
-    tr.r = 0.9;
-    run_tracked(e, tr, 100);
+    const Tracker tr = run_tracked(e, 100, 0.9);
     ASSERT_GT(tr.seen, 1000u);
     EXPECT_LT(tr.err_displacement, 1e-9);
     EXPECT_LT(tr.err_momentum_total, 1e-14);

@@ -1,8 +1,8 @@
 // DSMC sizing rules of Luding 1998 Sec. 2.4: cells of side max(lambda/2, 2d) tiling the box, and
 // the time step that lets the fastest particle cross a cell in step_factor steps.
 #include "core/input_error.hpp"
-#include "engines/dsmc/dsmc_engine.hpp"
 #include "engines/dsmc/dsmc_rules.hpp"
+#include "gas.hpp"
 
 #include <gtest/gtest.h>
 
@@ -11,23 +11,11 @@
 #include <numbers>
 
 using namespace granrepro;
+using namespace granrepro::test;
 
 namespace {
 
-constexpr double kD = 1e-3; // diameter [m]
-constexpr double kM = 1e-6; // mass [kg]
-
-double box_for(std::size_t n, double rho) { return kD * std::sqrt(static_cast<double>(n) * std::numbers::pi / (4.0 * rho)); }
-
-DsmcEngine gas(std::size_t n, double rho, DsmcConfig cfg, std::uint64_t seed = 7) {
-    const double l = box_for(n, rho);
-    cfg.lx = cfg.ly = l;
-    RngStream rng(seed, 99);
-    std::vector<Vec2> pos(n), vel(n);
-    for (auto& p : pos) p = {rng.uniform(0.0, l), rng.uniform(0.0, l)};
-    for (auto& v : vel) v = {rng.normal(), rng.normal()};
-    return DsmcEngine(cfg, pos, vel, std::vector<double>(n, 0.5 * kD), std::vector<double>(n, kM));
-}
+DsmcEngine gas(std::size_t n, double rho, DsmcConfig cfg) { return uniform_dsmc_gas(n, rho, cfg, 7, 99); }
 
 double max_speed(const DsmcEngine& e) {
     double v2 = 0.0;

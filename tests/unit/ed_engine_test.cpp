@@ -1,33 +1,17 @@
 // ED engine: event search against brute force, conservation laws, TC model, walls, gravity,
 // collapse detection and checkpoint/restart.
-#include "engines/ed/ed_engine.hpp"
-#include "engines/ed/ed_initial_states.hpp"
 #include "engines/ed/flight_roots.hpp"
+#include "gas.hpp"
+#include "saved_states.hpp"
 
 #include <cmath>
 #include <gtest/gtest.h>
-#include <limits>
 #include <string>
 
 using namespace granrepro;
+using namespace granrepro::test;
 
 namespace {
-
-constexpr double kD = 1e-3; // diameter [m]
-constexpr double kM = 1e-6; // mass [kg]
-
-double box_for(std::size_t n, double rho) { return kD * std::sqrt(static_cast<double>(n) * M_PI / (4.0 * rho)); }
-
-template <class Engine>
-Engine random_gas(std::size_t n, double rho, std::uint64_t seed, EdConfig cfg = {}) {
-    const double l = box_for(n, rho);
-    cfg.lx = cfg.ly = l;
-    RngStream rng(seed, 0);
-    const std::vector<double> rad(n, 0.5 * kD), mass(n, kM);
-    const auto pos = random_positions(rad, l, l, cfg.periodic_x, cfg.periodic_y, rng);
-    const auto vel = maxwellian_velocities(mass, 1.0, rng);
-    return Engine(cfg, pos, vel, rad, mass);
-}
 
 // Brute-force O(N^2) earliest pair collision from time(), using the engine's public state and
 // the same "last partners do not re-collide" rule.
@@ -49,6 +33,27 @@ typename Engine::PairEvent brute_force_next(const Engine& e) {
     return best;
 }
 
+// The engine's next executed particle-particle collision is the brute-force one.
+template <class Engine>
+void expect_next_collision_is(Engine& e, const typename Engine::PairEvent& ref) {
+    CollisionRecord got;
+    e.run_collisions(1, [&](const CollisionRecord& r) { if (r.j >= 0) got = r; });
+    EXPECT_NEAR(got.t, ref.t, 1e-12 * (1 + ref.t));
+    EXPECT_EQ(std::min(got.i, got.j), ref.i);
+    EXPECT_EQ(std::max(got.i, got.j), ref.j);
+}
+
+// The run stops with an exception that names the inelastic collapse (instead of hanging).
+template <class Run>
+void expect_collapse(Run run) {
+    try {
+        run();
+        FAIL() << "no exception";
+    } catch (const std::runtime_error& ex) {
+        EXPECT_NE(std::string(ex.what()).find("collapse"), std::string::npos) << ex.what();
+    }
+}
+
 } // namespace
 
 // The same test body runs against every engine implementation (event-queue variants) and
@@ -66,7 +71,7 @@ TYPED_TEST(EdEngineImpl, CellSearchMatchesBruteForceAndEngineExecutesIt) {
         if (!periodic) {
             cfg.walls = {EdWall{0, 0.0, +1}, EdWall{0, l, -1}, EdWall{1, 0.0, +1}, EdWall{1, l, -1}};
         }
-        auto e = random_gas<TypeParam>(600, 0.35, 42, cfg);
+        auto e = random_ed_gas<TypeParam>(600, 0.35, 42, cfg);
         int adjacent = 0;
         for (int round = 0; round < 40; ++round) {
             e.synchronize();
@@ -89,12 +94,7 @@ TYPED_TEST(EdEngineImpl, CellSearchMatchesBruteForceAndEngineExecutesIt) {
                 ASSERT_EQ(cells.i, ref.i);
                 ASSERT_EQ(cells.j, ref.j);
             }
-            // The engine's next executed particle-particle collision is that very pair.
-            CollisionRecord got;
-            e.run_collisions(1, [&](const CollisionRecord& r) { if (r.j >= 0) got = r; });
-            EXPECT_NEAR(got.t, ref.t, 1e-12 * (1 + ref.t));
-            EXPECT_EQ(std::min(got.i, got.j), ref.i);
-            EXPECT_EQ(std::max(got.i, got.j), ref.j);
+            expect_next_collision_is(e, ref);
             e.run_collisions(37); // move on to a different state
         }
         EXPECT_GT(adjacent, 20);
@@ -102,7 +102,7 @@ TYPED_TEST(EdEngineImpl, CellSearchMatchesBruteForceAndEngineExecutesIt) {
 }
 
 TYPED_TEST(EdEngineImpl, ElasticGasConservesEnergyAndMomentum) {
-    auto e = random_gas<TypeParam>(2000, 0.25, 7);
+    auto e = random_ed_gas<TypeParam>(2000, 0.25, 7);
     const double k0 = e.kinetic_energy().total();
     const Vec2 p0 = e.total_momentum();
     const double pscale = kM * 1.0 * std::sqrt(2000.0);
@@ -125,7 +125,7 @@ TEST(EdEngine, RoughElasticDisksConserveEnergyWithRotation) {
     // translational + rotational energy while exchanging them.
     EdConfig cfg;
     cfg.law = RoughDiskCollision{1.0, 1e6, 1.0, 0.5};
-    auto e = random_gas<EdEngine>(1000, 0.3, 3, cfg);
+    auto e = random_ed_gas(1000, 0.3, 3, cfg);
     const double k0 = e.kinetic_energy().total();
     e.run_collisions(20000);
     const auto k = e.kinetic_energy();
@@ -138,7 +138,7 @@ TEST(EdEngine, InelasticPairLossMatchesOperator) {
     // Sum of analytic per-collision losses (smooth: (1-r^2)/2 m12 v_n^2) equals K0 - K.
     EdConfig cfg;
     cfg.law.r = 0.7;
-    auto e = random_gas<EdEngine>(500, 0.2, 5, cfg);
+    auto e = random_ed_gas(500, 0.2, 5, cfg);
     const double k0 = e.kinetic_energy().total();
     double loss = 0.0;
     e.run_collisions(3000, [&](const CollisionRecord& r) {
@@ -153,7 +153,7 @@ TEST(EdEngine, TcModelMakesQuickRepeatCollisionsElastic) {
     EdConfig cfg;
     cfg.law.r = 0.5;
     cfg.t_c = 1e30; // every collision after a particle's first one is elastic (Eq. 7)
-    auto e = random_gas<EdEngine>(400, 0.3, 9, cfg);
+    auto e = random_ed_gas(400, 0.3, 9, cfg);
     std::vector<int> seen(400, 0);
     std::uint64_t expected_elastic = 0;
     double inelastic_loss = 0.0;
@@ -179,7 +179,7 @@ TEST(EdEngine, TcModelMakesQuickRepeatCollisionsElastic) {
     // t_c = 0 is plain ED: no elastic collisions.
     EdConfig plain;
     plain.law.r = 0.5;
-    auto f = random_gas<EdEngine>(400, 0.3, 9, plain);
+    auto f = random_ed_gas(400, 0.3, 9, plain);
     f.run_collisions(2000);
     EXPECT_EQ(f.elastic_collisions(), 0u);
 }
@@ -194,12 +194,7 @@ TEST(EdEngine, InelasticCollapseThrowsClearMessage) {
     cfg.gravity = {0.0, -9.81};
     cfg.walls = {EdWall{1, 0.0, +1, 0.5}};
     EdEngine e(cfg, {{5 * kD, 10 * kD}}, {{0.0, 0.0}}, {0.5 * kD}, {kM});
-    try {
-        e.run_until(10.0);
-        FAIL() << "no exception";
-    } catch (const std::runtime_error& ex) {
-        EXPECT_NE(std::string(ex.what()).find("collapse"), std::string::npos) << ex.what();
-    }
+    expect_collapse([&] { e.run_until(10.0); });
     // With the TC model the same setup runs on.
     cfg.t_c = 1e-4;
     EdEngine f(cfg, {{5 * kD, 10 * kD}}, {{0.0, 0.0}}, {0.5 * kD}, {kM});
@@ -210,13 +205,8 @@ TEST(EdEngine, InelasticCollapseThrowsClearMessage) {
 TEST(EdEngine, DenseInelasticGasCollapseThrows) {
     EdConfig cfg;
     cfg.law.r = 0.1;
-    auto e = random_gas<EdEngine>(300, 0.45, 21, cfg);
-    try {
-        e.run_collisions(50'000'000);
-        FAIL() << "no exception";
-    } catch (const std::runtime_error& ex) {
-        EXPECT_NE(std::string(ex.what()).find("collapse"), std::string::npos) << ex.what();
-    }
+    auto e = random_ed_gas(300, 0.45, 21, cfg);
+    expect_collapse([&] { e.run_collisions(50'000'000); });
 }
 
 TEST(EdEngine, RemovingTheFloorLetsDisksFall) {
@@ -249,7 +239,7 @@ TYPED_TEST(EdEngineImpl, CheckpointRestartIsBitIdentical) {
     cfg.t_c = 1e-5;
     const double l = box_for(400, 0.3);
     cfg.walls = {EdWall{1, 0.0, +1, 0.9, 0.5, 0.2}, EdWall{1, l, -1}};
-    auto a = random_gas<TypeParam>(400, 0.3, 11, cfg);
+    auto a = random_ed_gas<TypeParam>(400, 0.3, 11, cfg);
     a.run_until(0.01);
     const EdState mid = a.save_state();
     a.run_until(0.03);
@@ -257,18 +247,8 @@ TYPED_TEST(EdEngineImpl, CheckpointRestartIsBitIdentical) {
     TypeParam b(mid);
     b.run_until(0.03);
     b.synchronize();
-    const EdState sa = a.save_state(), sb = b.save_state();
-    EXPECT_GT(sa.pair_collisions, mid.pair_collisions + 1000);
-    EXPECT_EQ(sa.x, sb.x);
-    EXPECT_EQ(sa.y, sb.y);
-    EXPECT_EQ(sa.vx, sb.vx);
-    EXPECT_EQ(sa.vy, sb.vy);
-    EXPECT_EQ(sa.spin, sb.spin);
-    EXPECT_EQ(sa.collision_count, sb.collision_count);
-    EXPECT_EQ(sa.predicted_time, sb.predicted_time);
-    EXPECT_EQ(sa.pair_collisions, sb.pair_collisions);
-    EXPECT_EQ(sa.elastic_collisions, sb.elastic_collisions);
-    EXPECT_EQ(sa.time, sb.time);
+    EXPECT_GT(a.save_state().pair_collisions, mid.pair_collisions + 1000);
+    expect_same_fields(a.save_state(), b.save_state());
 }
 
 TEST(EdEngine, InitialStatesAndVelocityScaling) {
@@ -320,11 +300,7 @@ TEST(EdEngine, PolydisperseGasMatchesBruteForceAndConserves) {
     for (int round = 0; round < 10; ++round) {
         e.synchronize();
         const auto ref = brute_force_next(e);
-        CollisionRecord got;
-        e.run_collisions(1, [&](const CollisionRecord& r) { if (r.j >= 0) got = r; });
-        EXPECT_NEAR(got.t, ref.t, 1e-12 * (1 + ref.t));
-        EXPECT_EQ(std::min(got.i, got.j), ref.i);
-        EXPECT_EQ(std::max(got.i, got.j), ref.j);
+        expect_next_collision_is(e, ref);
         e.run_collisions(500);
     }
     EXPECT_NEAR(e.kinetic_energy().total() / k0, 1.0, 1e-11);
@@ -339,7 +315,7 @@ TEST(EdEngine, TcElasticMeansEnergyConservingUnlessFrictionKept) {
         cfg.law = RoughDiskCollision{0.5, 0.5, 0.3, 0.5};
         cfg.t_c = 1e30;
         cfg.tc_keep_friction = keep;
-        auto e = random_gas<EdEngine>(100, 0.3, 13, cfg);
+        auto e = random_ed_gas(100, 0.3, 13, cfg);
         double k_prev = e.kinetic_energy().total();
         int elastic = 0, lossy_elastic = 0;
         e.run_collisions(300, [&](const CollisionRecord& r) {
@@ -364,13 +340,13 @@ TEST(EdEngine, TcRuleEitherOrBothPartners) {
     for (bool both : {false, true}) {
         EdConfig cfg;
         cfg.law = RoughDiskCollision{0.5, 0.0, -1.0, 0.5};
-        auto probe = random_gas<EdEngine>(200, 0.3, 21, cfg);
+        auto probe = random_ed_gas(200, 0.3, 21, cfg);
         probe.run_collisions(2000);
         // t_c = the mean time between a particle's collisions, so that both outcomes are common.
         const double tc = probe.time() / 2000.0 * 100.0;
         cfg.tc_both = both;
         cfg.t_c = tc;
-        auto f = random_gas<EdEngine>(200, 0.3, 21, cfg);
+        auto f = random_ed_gas(200, 0.3, 21, cfg);
         std::vector<double> last(200, -1.0);
         int checked = 0, elastic = 0, mixed = 0;
         f.run_collisions(20000, [&](const CollisionRecord& r) {
@@ -394,7 +370,7 @@ TEST(EdEngine, TcRuleEitherOrBothPartners) {
 TEST(EdEngine, CollisionRecordGeometry) {
     EdConfig cfg;
     cfg.law = RoughDiskCollision{0.9, 0.3, 0.2, 0.5};
-    auto e = random_gas<EdEngine>(400, 0.3, 17, cfg);
+    auto e = random_ed_gas(400, 0.3, 17, cfg);
     int n = 0;
     e.run_collisions(2000, [&](const CollisionRecord& r) {
         ASSERT_GE(r.j, 0);

@@ -1,21 +1,14 @@
 // The engine interface (HardParticleEngine): ED and DSMC run through one generic function, and
 // the ED engine uses the collision operator it is instantiated with.
-#include "engines/dsmc/dsmc_engine.hpp"
-#include "engines/ed/ed_engine.hpp"
-#include "engines/ed/ed_initial_states.hpp"
 #include "engines/hard_particle_engine.hpp"
+#include "gas.hpp"
 
 #include <gtest/gtest.h>
 
-#include <cmath>
-#include <numbers>
-
 using namespace granrepro;
+using namespace granrepro::test;
 
 namespace {
-
-constexpr double kD = 1e-3; // diameter [m]
-constexpr double kM = 1e-6; // mass [kg]
 
 static_assert(HardParticleEngine<EdEngine>);
 static_assert(HardParticleEngine<DsmcEngine>);
@@ -42,20 +35,6 @@ void check_contract(E& e, double dt) {
     EXPECT_EQ(total_kinetic_energy(e), k2);
 }
 
-struct Gas {
-    double l;
-    std::vector<Vec2> pos, vel;
-    std::vector<double> rad, mass;
-};
-Gas gas(std::size_t n, double rho) {
-    Gas g{kD * std::sqrt(static_cast<double>(n) * std::numbers::pi / (4.0 * rho)), {}, {}, std::vector<double>(n, 0.5 * kD),
-          std::vector<double>(n, kM)};
-    RngStream rng(7, 0);
-    g.pos = random_positions(g.rad, g.l, g.l, true, true, rng);
-    g.vel = maxwellian_velocities(g.mass, 1.0, rng);
-    return g;
-}
-
 // Perfectly plastic in the normal direction, whatever restitution the configuration names.
 struct PlasticCollision {
     RoughDiskCollision wb;
@@ -72,13 +51,14 @@ struct PlasticCollision {
 } // namespace
 
 TEST(EngineInterface, EdAndDsmcMeetTheContract) {
-    const Gas g = gas(400, 0.25);
+    const double l = box_for(400, 0.25);
+    const Disks g = random_disks(400, l, true, true, 7);
     EdConfig ed;
-    ed.lx = ed.ly = g.l;
+    ed.lx = ed.ly = l;
     EdEngine e(ed, g.pos, g.vel, g.rad, g.mass);
     check_contract(e, 5e-3);
     DsmcConfig ds;
-    ds.lx = ds.ly = g.l;
+    ds.lx = ds.ly = l;
     DsmcEngine d(ds, g.pos, g.vel, g.rad, g.mass);
     check_contract(d, 5e-3);
 }

@@ -1,44 +1,26 @@
 // Engine states through HDF5 files (schemas granrepro-ed-state / granrepro-dsmc-state) and the
 // mid-run RunCheckpoint: a run resumed from a file is bit-identical to an uninterrupted one.
-#include "engines/dsmc/dsmc_engine.hpp"
-#include "engines/ed/ed_engine.hpp"
-#include "engines/ed/ed_initial_states.hpp"
+#include "gas.hpp"
 #include "harness/run_checkpoint.hpp"
 #include "io/dsmc_state_file.hpp"
 #include "io/ed_state_file.hpp"
+#include "saved_states.hpp"
 
-#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 using namespace granrepro;
+using namespace granrepro::test;
 namespace fs = std::filesystem;
 
 namespace {
 
-constexpr double kD = 1e-3; // diameter [m]
-constexpr double kM = 1e-6; // mass [kg]
-
-struct TempDir {
-    fs::path path;
-    TempDir() {
-        path = fs::temp_directory_path() / ("granrepro-state-test-" + std::to_string(::getpid()) + "-" +
-                                            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-        fs::remove_all(path);
-        fs::create_directories(path);
-    }
-    ~TempDir() { fs::remove_all(path); }
-};
-
 // Rough, inelastic with TC, gravity, two walls (one disabled later): every EdConfig field differs
 // from its default, so a field the file forgets changes the resumed run.
 EdEngine rough_pipe() {
-    const std::size_t n = 300;
-    const double l = kD * std::sqrt(n * M_PI / (4.0 * 0.3));
+    const double l = box_for(300, 0.3);
     EdConfig cfg;
-    cfg.lx = cfg.ly = l;
     cfg.periodic_y = false;
     cfg.gravity = {0.3, -9.81};
     cfg.law = RoughDiskCollision{0.8, 0.5, 0.2, 0.5};
@@ -49,52 +31,17 @@ EdEngine rough_pipe() {
     cfg.collapse_limit = 5000;
     cfg.collapse_window = 1e-9;
     cfg.walls = {EdWall{1, 0.0, +1, 0.9, 0.4, 0.1, true}, EdWall{1, l, -1, 0.7, 0.0, -1.0, true}};
-    RngStream rng(3, 0);
-    const std::vector<double> rad(n, 0.5 * kD), mass(n, kM);
-    const auto pos = random_positions(rad, l, l, cfg.periodic_x, cfg.periodic_y, rng);
-    const auto vel = maxwellian_velocities(mass, 0.5, rng);
-    return EdEngine(cfg, pos, vel, rad, mass);
-}
-
-void expect_same(const EdState& a, const EdState& b) {
-    EXPECT_EQ(a.time, b.time);
-    EXPECT_EQ(a.x, b.x);
-    EXPECT_EQ(a.y, b.y);
-    EXPECT_EQ(a.vx, b.vx);
-    EXPECT_EQ(a.vy, b.vy);
-    EXPECT_EQ(a.spin, b.spin);
-    EXPECT_EQ(a.local_time, b.local_time);
-    EXPECT_EQ(a.last_collision_time, b.last_collision_time);
-    EXPECT_EQ(a.predicted_time, b.predicted_time);
-    EXPECT_EQ(a.collision_count, b.collision_count);
-    EXPECT_EQ(a.partner, b.partner);
-    EXPECT_EQ(a.cell_head, b.cell_head);
-    EXPECT_EQ(a.pair_collisions, b.pair_collisions);
-    EXPECT_EQ(a.wall_collisions, b.wall_collisions);
-    EXPECT_EQ(a.elastic_collisions, b.elastic_collisions);
-    EXPECT_EQ(a.events, b.events);
-    EXPECT_EQ(a.max_overlap, b.max_overlap);
+    return random_ed_gas(300, 0.3, 3, cfg, 0.5);
 }
 
 } // namespace
 
 TEST(EdStateFile, ResumedFromFileIsBitIdentical) {
-    TempDir dir;
-    const fs::path file = dir.path / "ed.h5";
     EdEngine whole = rough_pipe();
     whole.run_until(0.01);
-    {
-        const H5File f = H5File::create(file.string());
-        write_ed_state(f.group("state"), whole.save_state());
-    }
+    const EdState read = through_file(whole.save_state());
     whole.set_wall_enabled(0, false); // a run-time change after the checkpoint, replayed below
     whole.run_until(0.03);
-
-    EdState read;
-    {
-        const H5File f = H5File::open(file.string());
-        read = read_ed_state(f.open_group("state"));
-    }
     EXPECT_EQ(read.config.walls.size(), 2u);
     EXPECT_EQ(read.config.walls[0].mu, 0.4);
     EXPECT_EQ(read.config.gravity.x, 0.3);
@@ -106,7 +53,7 @@ TEST(EdStateFile, ResumedFromFileIsBitIdentical) {
     resumed.run_until(0.03);
     EXPECT_GT(whole.total_collisions(), 1000u);
     EXPECT_GT(whole.elastic_collisions(), 0u);
-    expect_same(whole.save_state(), resumed.save_state());
+    expect_same_fields(whole.save_state(), resumed.save_state());
 }
 
 TEST(EdStateFile, RejectsOtherGroups) {
@@ -148,10 +95,7 @@ TEST(DsmcStateFile, RejectsUnknownChoices) {
 }
 
 TEST(DsmcStateFile, ResumedFromFileIsBitIdentical) {
-    const std::size_t n = 1500;
-    const double l = kD * std::sqrt(n * M_PI / (4.0 * 0.25));
     DsmcConfig cfg;
-    cfg.lx = cfg.ly = l;
     cfg.r = 0.8;
     cfg.t_c = 2e-4;
     cfg.seed = 77;
@@ -160,34 +104,13 @@ TEST(DsmcStateFile, ResumedFromFileIsBitIdentical) {
     cfg.displacement = true;
     cfg.resample_interval = 7;
     cfg.min_cell_diameters = 3.0;
-    RngStream rng(5, 5);
-    std::vector<Vec2> pos(n), vel(n);
-    for (auto& p : pos) p = {rng.uniform(0.0, l), rng.uniform(0.0, l)};
-    for (auto& v : vel) v = {rng.normal(), rng.normal()};
-    DsmcEngine whole(cfg, pos, vel, std::vector<double>(n, 0.5 * kD), std::vector<double>(n, kM));
+    DsmcEngine whole = uniform_dsmc_gas(1500, 0.25, cfg, 5, 5);
     whole.run_steps(93); // not a multiple of the re-sampling interval
-
-    TempDir dir;
-    const fs::path file = dir.path / "dsmc.h5";
-    {
-        const H5File f = H5File::create(file.string());
-        write_dsmc_state(f, whole.save_state());
-    }
+    DsmcEngine resumed(through_file(whole.save_state()));
     whole.run_steps(107);
-    DsmcEngine resumed([&] {
-        const H5File f = H5File::open(file.string());
-        return read_dsmc_state(f);
-    }());
     resumed.run_steps(107);
     EXPECT_GT(whole.elastic_collisions(), 0u);
-    EXPECT_EQ(whole.time(), resumed.time());
-    EXPECT_EQ(whole.steps(), resumed.steps());
-    EXPECT_EQ(whole.v_max(), resumed.v_max());
-    EXPECT_EQ(whole.total_collisions(), resumed.total_collisions());
-    EXPECT_EQ(whole.exposure(), resumed.exposure());
-    EXPECT_TRUE(whole.positions() == resumed.positions());
-    EXPECT_TRUE(whole.velocities() == resumed.velocities());
-    EXPECT_TRUE(whole.collision_counts() == resumed.collision_counts());
+    expect_same_fields(whole.save_state(), resumed.save_state());
 }
 
 TEST(RunCheckpoint, SavesLoadsAndIgnoresTornFiles) {

@@ -32,6 +32,19 @@ int poisson(RngStream& rng, double mean) {
     }
     return k;
 }
+
+// The fit of `model` over each range converges on `value` within 3 of its standard errors, each
+// below max_error, with a reduced chi^2 below 2.
+void expect_fit_recovers(const RateHistogram& h, Model model, double value,
+                         std::initializer_list<std::pair<double, double>> ranges, double max_error = INFINITY) {
+    for (auto [lo, hi] : ranges) {
+        const auto f = CollisionRateFit::fit(h, model, lo, hi);
+        EXPECT_TRUE(f.converged);
+        EXPECT_NEAR(f.value, value, 3.0 * f.error) << "range " << lo << ".." << hi;
+        EXPECT_LT(f.error, max_error);
+        EXPECT_LT(f.chi2_reduced, 2.0);
+    }
+}
 } // namespace
 
 TEST(ObsCollisionCounter, TrailingWindowCounts) {
@@ -75,13 +88,7 @@ TEST(ObsCollisionRateFit, RecoversExponentialEq21) {
     std::vector<double> r(20000);
     for (auto& x : r) x = -A * std::log(1.0 - rng.uniform());
     const auto h = RateHistogram::make(r, 0.1, RateHistogram::Binning::Linear, 60, 0.0, 150.0);
-    for (auto [lo, hi] : {std::pair{0.0, 150.0}, std::pair{25.0, 125.0}}) {
-        const auto f = CollisionRateFit::fit(h, Model::Exponential, lo, hi);
-        EXPECT_TRUE(f.converged);
-        EXPECT_NEAR(f.value, A, 3.0 * f.error) << "range " << lo << ".." << hi;
-        EXPECT_LT(f.error, 0.05 * A);
-        EXPECT_LT(f.chi2_reduced, 2.0);
-    }
+    expect_fit_recovers(h, Model::Exponential, A, {{0.0, 150.0}, {25.0, 125.0}}, 0.05 * A);
     // The wrong model must be visibly worse.
     const auto bad = CollisionRateFit::fit(h, Model::PowerLaw, 0.0, 150.0);
     EXPECT_GT(bad.chi2_reduced, 10.0);
@@ -96,12 +103,7 @@ TEST(ObsCollisionRateFit, RecoversPowerLawEq22) {
         x = B * u / (1.0 - u); // inverse of the CDF x / (B + x)
     }
     const auto h = RateHistogram::make(r, 0.1, RateHistogram::Binning::Log, 40, 0.1, 1e4);
-    for (auto [lo, hi] : {std::pair{0.1, 1e4}, std::pair{10.0, 1e4}}) {
-        const auto f = CollisionRateFit::fit(h, Model::PowerLaw, lo, hi);
-        EXPECT_TRUE(f.converged);
-        EXPECT_NEAR(f.value, B, 3.0 * f.error) << "range " << lo << ".." << hi;
-        EXPECT_LT(f.chi2_reduced, 2.0);
-    }
+    expect_fit_recovers(h, Model::PowerLaw, B, {{0.1, 1e4}, {10.0, 1e4}});
     const auto bad = CollisionRateFit::fit(h, Model::Exponential, 0.1, 1e4);
     EXPECT_GT(bad.chi2_reduced, 10.0);
 }
@@ -115,12 +117,7 @@ TEST(ObsCollisionRateFit, RecoversPoissonEq20) {
     // P here is the paper's P_o(N_c dt, chi) dt, bin by bin.
     EXPECT_NEAR(CollisionRateFit::density(Model::Poisson, chi, 5.0 / dt, dt),
                 std::exp(-chi) * std::pow(chi, 5) / 120.0 * dt, 1e-15);
-    for (auto [lo, hi] : {std::pair{-25.0, 1525.0}, std::pair{275.0, 625.0}}) {
-        const auto f = CollisionRateFit::fit(h, Model::Poisson, lo, hi);
-        EXPECT_TRUE(f.converged);
-        EXPECT_NEAR(f.value, chi, 3.0 * f.error) << "range " << lo << ".." << hi;
-        EXPECT_LT(f.chi2_reduced, 2.0);
-    }
+    expect_fit_recovers(h, Model::Poisson, chi, {{-25.0, 1525.0}, {275.0, 625.0}});
     // Full range: the ML estimate of a Poisson mean is the sample mean, SE sqrt(chi/N).
     double mean = 0.0;
     for (double x : r) mean += x * dt;

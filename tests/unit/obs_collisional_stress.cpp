@@ -10,15 +10,7 @@ using namespace granrepro;
 
 namespace {
 CollisionRecord rec(double t, int i, int j, Vec2 ri, Vec2 rj, Vec2 n, Vec2 dP) {
-    CollisionRecord c;
-    c.t = t;
-    c.i = i;
-    c.j = j;
-    c.ri = ri;
-    c.rj = rj;
-    c.n = n;
-    c.dP = dP;
-    return c;
+    return {.t = t, .i = i, .j = j, .ri = ri, .rj = rj, .n = n, .dP = dP};
 }
 } // namespace
 

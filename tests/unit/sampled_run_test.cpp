@@ -1,20 +1,17 @@
 // The one serialization (io/h5_fields.hpp) and the one sampling loop (harness/sampled_run.hpp):
 // every field type round-trips bit for bit, and a sampled run killed after a checkpoint and
 // resumed equals an uninterrupted one, for ED and DSMC alike (one test body, two engines).
-#include "engines/dsmc/dsmc_engine.hpp"
-#include "engines/ed/ed_engine.hpp"
-#include "engines/ed/ed_initial_states.hpp"
+#include "gas.hpp"
 #include "harness/sampled_run.hpp"
+#include "saved_states.hpp"
 
-#include <bit>
 #include <cmath>
-#include <cstdlib>
 #include <filesystem>
 #include <gtest/gtest.h>
 #include <limits>
-#include <unistd.h>
 
 using namespace granrepro;
+using namespace granrepro::test;
 namespace fs = std::filesystem;
 
 namespace {
@@ -26,8 +23,7 @@ struct Inner {
     std::vector<std::uint32_t> counts;
     template <class V>
     void fields(V&& v) {
-        v("a", a);
-        v("counts", counts);
+        v("a", a), v("counts", counts);
     }
 };
 
@@ -64,23 +60,6 @@ struct NarrowN {
     }
 };
 
-std::vector<std::uint64_t> bits(const std::vector<double>& v) {
-    std::vector<std::uint64_t> b;
-    for (double x : v) b.push_back(std::bit_cast<std::uint64_t>(x));
-    return b;
-}
-
-struct TempDir {
-    fs::path path;
-    explicit TempDir(const std::string& tag = "") {
-        path = fs::temp_directory_path() / ("granrepro-sampled-" + std::to_string(::getpid()) + "-" +
-                                            ::testing::UnitTest::GetInstance()->current_test_info()->name() + tag);
-        fs::remove_all(path);
-        fs::create_directories(path);
-    }
-    ~TempDir() { fs::remove_all(path); }
-};
-
 } // namespace
 
 TEST(H5Fields, EveryFieldTypeRoundTripsBitForBit) {
@@ -111,27 +90,7 @@ TEST(H5Fields, EveryFieldTypeRoundTripsBitForBit) {
         const H5File f = H5File::open(file.string());
         read_fields(f.open_group("e"), r);
     }
-    EXPECT_EQ(std::bit_cast<std::uint64_t>(r.x), std::bit_cast<std::uint64_t>(e.x)); // the sign of -0
-    EXPECT_EQ(r.n, e.n);
-    EXPECT_EQ(r.i, e.i);
-    EXPECT_EQ(r.big, e.big);
-    EXPECT_EQ(r.flag, e.flag);
-    EXPECT_EQ(r.colour, e.colour);
-    EXPECT_EQ(r.text, e.text);
-    EXPECT_EQ(r.g.x, e.g.x);
-    EXPECT_EQ(r.g.y, e.g.y);
-    EXPECT_EQ(bits(r.values), bits(e.values)); // NaN included
-    EXPECT_EQ(r.ints, e.ints);
-    EXPECT_EQ(r.bytes, e.bytes);
-    EXPECT_EQ(r.u64, e.u64);
-    ASSERT_EQ(r.points.size(), 2u);
-    EXPECT_EQ(r.points[1].x, 3e300);
-    EXPECT_EQ(r.points[1].y, 4e-300);
-    EXPECT_EQ(r.inner.a, 2.5);
-    EXPECT_EQ(r.inner.counts, e.inner.counts);
-    ASSERT_EQ(r.list.size(), 2u);
-    EXPECT_EQ(r.list[1].a, e.list[1].a);
-    EXPECT_EQ(r.list[1].counts, e.list[1].counts);
+    expect_same_fields(r, e); // bit for bit: the sign of -0 and NaN included
 }
 
 TEST(H5Fields, AMissingFieldThrows) {
@@ -179,27 +138,18 @@ struct Carry {
 };
 
 EdEngine small_ed_gas() {
-    const std::size_t n = 200;
-    const double l = 1e-3 * std::sqrt(n * M_PI / (4.0 * 0.25));
     EdConfig cfg;
-    cfg.lx = cfg.ly = l;
     cfg.law = RoughDiskCollision{0.9, 0.0, -1.0, 0.5};
-    RngStream rng(5, 0);
-    const std::vector<double> rad(n, 0.5e-3), mass(n, 1e-6);
-    const auto pos = random_positions(rad, l, l, true, true, rng);
-    return EdEngine(cfg, pos, maxwellian_velocities(mass, 1.0, rng), rad, mass);
+    return random_ed_gas(200, 0.25, 5, cfg);
 }
 
 DsmcEngine small_dsmc_gas() {
-    const std::size_t n = 400;
     DsmcConfig cfg;
-    cfg.lx = cfg.ly = 1e-3 * std::sqrt(n * M_PI / (4.0 * 0.25));
+    cfg.lx = cfg.ly = box_for(400, 0.25);
     cfg.r = 0.9;
     cfg.seed = 5;
-    RngStream rng(5, 0);
-    const std::vector<double> rad(n, 0.5e-3), mass(n, 1e-6);
-    const auto pos = random_positions(rad, cfg.lx, cfg.ly, true, true, rng);
-    return DsmcEngine(cfg, pos, maxwellian_velocities(mass, 1.0, rng), rad, mass);
+    const Disks d = random_disks(400, cfg.lx, true, true, 5);
+    return DsmcEngine(cfg, d.pos, d.vel, d.rad, d.mass);
 }
 
 // Samples K at 40 times; `stop_after_saves` > 0 kills the run (as a SIGKILL would) once that many
@@ -234,9 +184,7 @@ void expect_resume_is_bit_identical(Make make) {
     const Carry resumed = sampled(make, parts_dir.path, 0);
     ASSERT_EQ(whole.t.size(), 36u); // stopped by the sampler after sample 35
     EXPECT_GT(whole.observed, 1000u);
-    EXPECT_EQ(bits(resumed.t), bits(whole.t));
-    EXPECT_EQ(bits(resumed.k), bits(whole.k));
-    EXPECT_EQ(resumed.observed, whole.observed);
+    expect_same_fields(resumed, whole);
     EXPECT_LT(whole.k.back(), 0.5 * whole.k.front()); // it cooled: the samples are not all one value
 }
 

@@ -1,12 +1,10 @@
 // `granrepro bench sweep`'s projection: the makespan of handing points out longest first, and
 // the run.log lines it reads the point costs from.
 #include "bench/sweep_bench.hpp"
+#include "saved_states.hpp"
 
-#include <cstdio>
-#include <filesystem>
 #include <fstream>
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 using namespace granrepro;
 
@@ -19,7 +17,8 @@ TEST(SweepBench, MakespanOfLongestFirst) {
 }
 
 TEST(SweepBench, ReadsPointCostsAndWallTimeFromRunLog) {
-    const auto file = std::filesystem::temp_directory_path() / ("granrepro-sweep-bench-" + std::to_string(::getpid()) + ".log");
+    const test::TempDir dir;
+    const auto file = dir.path / "run.log";
     {
         std::ofstream out(file);
         out << "[      0.0 s] parameter k_N = 2000 [N/m]\n"
@@ -39,7 +38,6 @@ TEST(SweepBench, ReadsPointCostsAndWallTimeFromRunLog) {
     EXPECT_ANY_THROW(read_sweep_costs(file)); // gone: an input error naming it
     // No sweep: all of it serial, from the CPU time where the log has it (the rest was other processes).
     const SweepCosts s = read_sweep_costs(file.string() + "2");
-    std::filesystem::remove(file.string() + "2");
     EXPECT_TRUE(s.cost.empty());
     EXPECT_EQ(s.serial(), 2.5);
     EXPECT_EQ(s.projected(64), 2.5);

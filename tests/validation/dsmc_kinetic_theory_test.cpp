@@ -23,7 +23,7 @@
 // of the printed sqrt(pi) (vbar = sqrt(2K_0/(N m))): the paper's own number, t_0^-1 = 23.24 1/s
 // for d = 1 mm, vbar = 0.2047 m/s, rho = 0.25, r = 0.8, follows from sqrt(2 pi) (23.27 1/s);
 // the printed formula would give 32.9 1/s.
-#include "engines/dsmc/dsmc_engine.hpp"
+#include "gas.hpp"
 #include "theory/kinetic_theory.hpp"
 
 #include <gsl/gsl_statistics_double.h>
@@ -35,13 +35,9 @@
 #include <numbers>
 
 using namespace granrepro;
+using namespace granrepro::test;
 
 namespace {
-
-constexpr double kD = 1e-3; // [m]
-constexpr double kM = 1e-6; // [kg]
-
-double box_for(std::size_t n, double rho) { return kD * std::sqrt(static_cast<double>(n) * std::numbers::pi / (4.0 * rho)); }
 
 // equal_speeds: every particle has speed 1 m/s in a random direction (far from Maxwellian);
 // otherwise Gaussian components. Zero total momentum either way for the Maxwellian.
@@ -69,18 +65,18 @@ DsmcEngine gas(std::size_t n, double rho, DsmcConfig cfg, bool equal_speeds = fa
 
 double temperature_over_m(const DsmcEngine& e) { return e.kinetic_energy() / (static_cast<double>(e.size()) * kM); }
 
-// Dilute Boltzmann rate per particle, 2 n' d sqrt(pi T/m) [1/s].
+// Dilute Boltzmann rate per particle, 2 n' d sqrt(pi T/m) [1/s] (Enskog's with g = 1).
 double boltzmann_rate(const DsmcEngine& e) {
-    const double area = e.config().lx * e.config().ly;
-    return 2.0 * (static_cast<double>(e.size()) - 1.0) / area * kD * std::sqrt(std::numbers::pi * temperature_over_m(e));
+    const double n_prime = (static_cast<double>(e.size()) - 1.0) / (e.config().lx * e.config().ly);
+    return theory::enskog_collision_rate(n_prime, kD, temperature_over_m(e), 1.0);
 }
-
-double henderson_g(double rho) { return (1.0 - 7.0 * rho / 16.0) / ((1.0 - rho) * (1.0 - rho)); }
 
 struct Rate {
     double omega = 0.0;     // measured collisions per particle and time [1/s]
     double predicted = 0.0; // what Eqs. (15)-(16) promise for the cells actually seen [1/s]
+    double boltzmann = 0.0; // boltzmann_rate() at the start [1/s]
     double collisions = 0.0;
+    double tol = 0.0;       // 5 sigma of omega/omega_B: collision counts are Poisson-like, 1/sqrt(C)
 };
 
 // Elastic run of `per_particle` collisions per particle.
@@ -89,9 +85,11 @@ Rate measure_rate(DsmcEngine& e, double per_particle) {
     const auto target = static_cast<std::uint64_t>(per_particle * n / 2.0);
     const double t0 = e.time(), x0 = e.exposure();
     const std::uint64_t c0 = e.total_collisions();
-    while (e.total_collisions() - c0 < target) e.step();
     Rate r;
+    r.boltzmann = boltzmann_rate(e);
+    while (e.total_collisions() - c0 < target) e.step();
     r.collisions = static_cast<double>(e.total_collisions() - c0);
+    r.tol = 5.0 / std::sqrt(r.collisions);
     const double t = e.time() - t0;
     r.omega = 2.0 * r.collisions / (n * t);
     r.predicted = 2.0 * (e.exposure() - x0) * e.cross_section() * std::sqrt(std::numbers::pi * temperature_over_m(e)) / (n * t);
@@ -103,33 +101,28 @@ Rate measure_rate(DsmcEngine& e, double per_particle) {
 TEST(DsmcKineticTheory, PlainRateIsTheDiluteBoltzmannRate) {
     for (double rho : {0.05, 0.25}) {
         auto e = gas(40000, rho, {});
-        const double omega_b = boltzmann_rate(e);
         const Rate r = measure_rate(e, 30.0);
-        // Collision counts are Poisson-like: relative error 1/sqrt(C).
-        const double tol = 5.0 / std::sqrt(r.collisions);
         std::printf("rho = %.2f: omega/omega_B = %.5f (tolerance %.4f), cells %zux%zu of %.2f d\n", rho,
-                    r.omega / omega_b, tol, e.cells_x(), e.cells_y(), e.cell_width() / kD);
-        EXPECT_NEAR(r.omega / omega_b, 1.0, tol);
-        EXPECT_NEAR(r.omega / r.predicted, 1.0, tol);
+                    r.omega / r.boltzmann, r.tol, e.cells_x(), e.cells_y(), e.cell_width() / kD);
+        EXPECT_NEAR(r.omega / r.boltzmann, 1.0, r.tol);
+        EXPECT_NEAR(r.omega / r.predicted, 1.0, r.tol);
     }
 }
 
 TEST(DsmcKineticTheory, FreeVolumeRateAgainstEnskog) {
     const double rho = 0.25;
-    const double chi_fv = 1.0 / (1.0 - rho / 0.82), g = henderson_g(rho);
+    const double chi_fv = theory::free_volume_factor(rho, 0.82), g = theory::henderson_contact_value(rho);
     // Mean mode: exactly the factor 1/(1 - rho/0.82).
     {
         DsmcConfig cfg;
         cfg.free_volume = DsmcFreeVolume::mean;
         auto e = gas(40000, rho, cfg);
-        const double omega_b = boltzmann_rate(e);
         const Rate r = measure_rate(e, 30.0);
-        const double tol = 5.0 / std::sqrt(r.collisions);
-        const double omega_e = omega_b * g;
+        const double omega_e = r.boltzmann * g;
         std::printf("mean mode: omega/omega_B = %.4f (1/(1-rho/0.82) = %.4f), omega/omega_E = %.4f (analytic %.4f)\n",
-                    r.omega / omega_b, chi_fv, r.omega / omega_e, chi_fv / g);
-        EXPECT_NEAR(r.omega / omega_b / chi_fv, 1.0, tol);
-        EXPECT_NEAR(r.omega / omega_e, chi_fv / g, 2.0 * tol);
+                    r.omega / r.boltzmann, chi_fv, r.omega / omega_e, chi_fv / g);
+        EXPECT_NEAR(r.omega / r.boltzmann / chi_fv, 1.0, r.tol);
+        EXPECT_NEAR(r.omega / omega_e, chi_fv / g, 2.0 * r.tol);
         RecordProperty("mean_mode_omega_over_enskog", std::to_string(r.omega / omega_e));
     }
     // Cell mode (the paper's wording, V_0 from the particles in the cell): with 2d cells and
@@ -141,15 +134,13 @@ TEST(DsmcKineticTheory, FreeVolumeRateAgainstEnskog) {
         cfg.free_volume = DsmcFreeVolume::cell;
         cfg.min_cell_diameters = cells;
         auto e = gas(40000, rho, cfg);
-        const double omega_b = boltzmann_rate(e);
         const Rate r = measure_rate(e, 20.0);
-        const double tol = 5.0 / std::sqrt(r.collisions);
         std::printf("cell mode, cells of %.2f d: omega/omega_B = %.4f, omega/omega_E = %.4f, measured/Eq.(15) = %.5f\n",
-                    e.cell_width() / kD, r.omega / omega_b, r.omega / (omega_b * g), r.omega / r.predicted);
-        EXPECT_NEAR(r.omega / r.predicted, 1.0, tol);
-        EXPECT_GT(r.omega / omega_b, chi_fv * (1.0 - tol)); // Jensen: <1/(V_c - V_0)> >= 1/<V_c - V_0>
+                    e.cell_width() / kD, r.omega / r.boltzmann, r.omega / (r.boltzmann * g), r.omega / r.predicted);
+        EXPECT_NEAR(r.omega / r.predicted, 1.0, r.tol);
+        EXPECT_GT(r.omega / r.boltzmann, chi_fv * (1.0 - r.tol)); // Jensen: <1/(V_c - V_0)> >= 1/<V_c - V_0>
         RecordProperty("cell_mode_" + std::to_string(static_cast<int>(cells)) + "d_omega_over_enskog",
-                       std::to_string(r.omega / (omega_b * g)));
+                       std::to_string(r.omega / (r.boltzmann * g)));
     }
 }
 
@@ -350,7 +341,8 @@ TEST(DsmcKineticTheory, DisplacementRateLiesWithinTheCorrelationHoleBounds) {
 // The table is the evidence behind expected/cooling.toml; asserted are what theory says of each
 // variant (below), not the variants' own numbers.
 TEST(DsmcKineticTheory, VariantsAgainstKineticTheory) {
-    auto v = [](double cells, DsmcFreeVolume fv, bool disp, DsmcPartner partner, bool norep, std::uint32_t block = 1) {
+    auto v = [](double cells, DsmcFreeVolume fv, bool disp, DsmcPartner partner, bool norep, std::uint32_t block = 1,
+                double mft_fraction = 0.0) {
         DsmcConfig c;
         c.min_cell_diameters = cells;
         c.free_volume = fv;
@@ -358,6 +350,7 @@ TEST(DsmcKineticTheory, VariantsAgainstKineticTheory) {
         c.partner = partner;
         c.no_repeat_partner = norep;
         c.free_volume_block = block;
+        c.mft_fraction = mft_fraction;
         return c;
     };
     using F = DsmcFreeVolume;
@@ -375,11 +368,7 @@ TEST(DsmcKineticTheory, VariantsAgainstKineticTheory) {
         {"norepeat", v(2, F::mean, true, P::uniform, true)},
         {"nearest", v(2, F::mean, true, P::nearest, true)},
         {"nearest-block3", v(2, F::cell, true, P::nearest, true, 3)},
-        {"nearest-step", [&] {
-             DsmcConfig c = v(2, F::mean, true, P::nearest, true);
-             c.mft_fraction = 0.05;
-             return c;
-         }()},
+        {"nearest-step", v(2, F::mean, true, P::nearest, true, 1, 0.05)},
         {"cells10", v(10, F::mean, true, P::uniform, false)},
         {"cells10-cell", v(10, F::cell, true, P::uniform, false)},
     };

@@ -1,27 +1,23 @@
 // ED engine against theory: Enskog collision rate and pressure, Maxwell distribution, homogeneous cooling
 // (Luding 1998 Eq. (18)), restitution of a bouncing disk under gravity, checkpoint/restart.
-#include "engines/ed/ed_engine.hpp"
-#include "engines/ed/ed_initial_states.hpp"
+#include "gas.hpp"
 #include "observables/collisional_stress.hpp"
+#include "saved_states.hpp"
+#include "theory/kinetic_theory.hpp"
 
 #include <algorithm>
 #include <cmath>
+#include <gsl/gsl_statistics_double.h>
 #include <cstdio>
 #include <utility>
 #include <gtest/gtest.h>
 #include <vector>
 
 using namespace granrepro;
+using namespace granrepro::test;
+using theory::henderson_contact_value;
 
 namespace {
-
-constexpr double kD = 1e-3; // diameter [m]
-constexpr double kM = 1e-6; // mass [kg]
-
-double box_for(std::size_t n, double rho) { return kD * std::sqrt(static_cast<double>(n) * M_PI / (4.0 * rho)); }
-
-// Henderson's contact value of the hard-disk pair correlation, g(d) = (1 - 7 rho/16)/(1 - rho)^2.
-double henderson_g(double rho) { return (1.0 - 7.0 * rho / 16.0) / ((1.0 - rho) * (1.0 - rho)); }
 
 // Elastic periodic gas of n disks at area fraction rho: square lattice, then the given velocities,
 // then equilibrated for `eq` collisions per particle at r = 1.
@@ -34,29 +30,35 @@ EdEngine lattice_gas(std::size_t n, double rho, const std::vector<Vec2>& vel, do
     return e;
 }
 
-// Elastic gas of n disks at area fraction rho, Maxwellian start (RNG stream `seed`, substream
-// from rho), equilibrated for 30 collisions per particle.
-EdEngine equilibrium_gas(std::size_t n, double rho, std::uint64_t seed) {
-    RngStream rng(seed, static_cast<std::uint64_t>(rho * 1000));
-    const std::vector<double> mass(n, kM);
-    return lattice_gas(n, rho, maxwellian_velocities(mass, 1.0, rng), 30.0);
+// The same from Maxwellian velocities with Luding's vbar, drawn from RngStream(seed, stream).
+EdEngine maxwellian_gas(std::size_t n, double rho, double vbar, std::uint64_t seed, std::uint64_t stream, double eq,
+                        EdConfig cfg = {}) {
+    RngStream rng(seed, stream);
+    return lattice_gas(n, rho, maxwellian_velocities(std::vector<double>(n, kM), vbar, rng), eq, cfg);
 }
 
-// Enskog collision frequency per unit contact value, omega_E / g(d) = 2 n d sqrt(pi T/m) [1/s],
-// T = K/N (see EdEnskogRate).
-double enskog_rate_over_g(const EdEngine& e) {
+// Elastic gas equilibrated for 30 collisions per particle from vbar = 1 m/s (substream from rho).
+EdEngine equilibrium_gas(std::size_t n, double rho, std::uint64_t seed) {
+    return maxwellian_gas(n, rho, 1.0, seed, static_cast<std::uint64_t>(rho * 1000), 30.0);
+}
+
+// Enskog collision frequency at contact value g, omega_E = 2 n d g sqrt(pi T/m) [1/s], T = K/N
+// (see EdEnskogRate).
+double enskog_rate(const EdEngine& e, double g) {
     const double n = static_cast<double>(e.size());
-    const double temp = e.kinetic_energy().total() / n;
-    return 2.0 * n / (e.config().lx * e.config().ly) * kD * std::sqrt(M_PI * temp / kM);
+    return theory::enskog_collision_rate(n / (e.config().lx * e.config().ly), kD, e.kinetic_energy().total() / n / kM, g);
 }
 
 // Mean of block averages and its standard error.
 std::pair<double, double> mean_and_error(const std::vector<double>& x) {
-    const double k = static_cast<double>(x.size());
-    double m = 0, v = 0;
-    for (double y : x) m += y / k;
-    for (double y : x) v += (y - m) * (y - m) / (k - 1);
-    return {m, std::sqrt(v / k)};
+    return {gsl_stats_mean(x.data(), 1, x.size()), gsl_stats_sd(x.data(), 1, x.size()) / std::sqrt(double(x.size()))};
+}
+
+// Test names such as rho_0_25.
+std::string rho_name(const ::testing::TestParamInfo<double>& info) {
+    std::string r = std::to_string(info.param).substr(0, 4);
+    r[1] = '_';
+    return "rho_" + r;
 }
 
 } // namespace
@@ -73,7 +75,7 @@ TEST_P(EdEnskogRate, CollisionFrequencyMatchesEnskogHenderson) {
     const double rho = GetParam();
     const std::size_t n = 4096;
     auto e = equilibrium_gas(n, rho, 2024);
-    const double omega_e = henderson_g(rho) * enskog_rate_over_g(e);
+    const double omega_e = enskog_rate(e, henderson_contact_value(rho));
     std::vector<double> rate;
     for (int b = 0; b < 20; ++b) {
         const double t0 = e.time();
@@ -88,12 +90,7 @@ TEST_P(EdEnskogRate, CollisionFrequencyMatchesEnskogHenderson) {
     std::printf("[ rate ] rho=%.2f omega_sim/omega_E=%.4f sigma=%.4f\n", rho, mean / omega_e, sigma / omega_e);
 }
 
-INSTANTIATE_TEST_SUITE_P(Densities, EdEnskogRate, ::testing::Values(0.1, 0.25, 0.4),
-                         [](const auto& info) { // e.g. rho_0_25
-                             std::string r = std::to_string(info.param).substr(0, 4);
-                             r[1] = '_';
-                             return "rho_" + r;
-                         });
+INSTANTIATE_TEST_SUITE_P(Densities, EdEnskogRate, ::testing::Values(0.1, 0.25, 0.4), rho_name);
 
 // Enskog equation of state of hard disks: P A / (N T) = 1 + 2 rho g(d) (the collisional, virial
 // part is the 2 rho g(d)). P is measured as -tr(sigma)/2 of the Eq. (9) stress observable over
@@ -111,7 +108,7 @@ TEST_P(EdEnskogPressure, VirialPressureMatchesEnskogHenderson) {
     auto e = equilibrium_gas(n, rho, 2025);
     const double lx = e.config().lx, ly = e.config().ly;
     const double p_ideal = e.kinetic_energy().total() / (lx * ly); // n T [N/m], constant (elastic)
-    const double omega_over_g = enskog_rate_over_g(e);
+    const double omega_over_g = enskog_rate(e, 1.0);
     const int blocks = 20;
     std::vector<double> g_press, g_rate;
     for (int b = 0; b < blocks; ++b) {
@@ -142,7 +139,7 @@ TEST_P(EdEnskogPressure, VirialPressureMatchesEnskogHenderson) {
     for (int b = 0; b < blocks; ++b) diff[b] = g_press[b] - g_rate[b];
     const auto [gp, sp] = mean_and_error(g_press);
     const auto [dm, sd] = mean_and_error(diff);
-    const double gh = henderson_g(rho);
+    const double gh = henderson_contact_value(rho);
     const double z = 1.0 + 2.0 * rho * gp, zh = 1.0 + 2.0 * rho * gh;
     EXPECT_NEAR(z, zh, 0.025 * (zh - 1.0) + 4.0 * 2.0 * rho * sp) << "rho=" << rho << " g_press=" << gp << " g_H=" << gh;
     EXPECT_NEAR(dm, 0.0, 4.0 * sd + 1e-12) << "rho=" << rho << " g_press - g_rate";
@@ -151,12 +148,7 @@ TEST_P(EdEnskogPressure, VirialPressureMatchesEnskogHenderson) {
                 rho, z, zh, gp, sp, dm, sd);
 }
 
-INSTANTIATE_TEST_SUITE_P(Densities, EdEnskogPressure, ::testing::Values(0.1, 0.25, 0.4),
-                         [](const auto& info) { // e.g. rho_0_25
-                             std::string r = std::to_string(info.param).substr(0, 4);
-                             r[1] = '_';
-                             return "rho_" + r;
-                         });
+INSTANTIATE_TEST_SUITE_P(Densities, EdEnskogPressure, ::testing::Values(0.1, 0.25, 0.4), rho_name);
 
 // Starting from uniform velocities (kurtosis 1.8), 10 collisions per particle at r = 1 (the
 // paper's equilibration) give a Maxwellian: kurtosis of v_x, v_y = 3 within 4 sigma
@@ -188,7 +180,7 @@ TEST(EdMaxwell, EquilibrationGivesMaxwellian) {
 // Homogeneous cooling of smooth inelastic disks, Luding Eq. (18): K/K0 = (1 + t/t0)^-2 with
 // 1/t0 = (1 - r^2) omega_E(T0) / 4 (energy loss per collision (1-r^2) T on average in 2D,
 // N omega/2 collisions per unit time), times the first Sonine correction (1 + 3 a2/16),
-// a2 = 16 (1-r)(1-2r^2) / (57 - 25 r + 30 r^2 (1-r)) in 2D.
+// a2 = 16 (1-r)(1-2r^2) / (57 - 25 r + 30 r^2 (1-r)) in 2D (van Noije-Ernst, src/theory).
 // Note: with vbar = sqrt(2 K0/(N m)) this is 1/t0 = (1-r^2) rho vbar g sqrt(2/pi)... i.e. the
 // printed Eq. (19) divided by sqrt(2); the paper's own number t0^-1 = 23.24 s^-1 (r = 0.8,
 // rho = 0.25, vbar = 0.2047 m/s) agrees with this form, not with Eq. (19) as printed (32.9 s^-1).
@@ -202,15 +194,11 @@ TEST(EdHomogeneousCooling, EarlyCoolingFollowsEq18) {
     const int runs = 8;
     std::vector<double> ratio(xs.size(), 0.0);
     for (int run = 0; run < runs; ++run) {
-        RngStream rng(5, static_cast<std::uint64_t>(run));
-        const std::vector<double> mass(n, kM);
-        auto e = lattice_gas(n, rho, maxwellian_velocities(mass, 0.2047, rng), 10.0);
+        auto e = maxwellian_gas(n, rho, 0.2047, 5, static_cast<std::uint64_t>(run), 10.0);
         e.set_law(RoughDiskCollision{r, 0.0, -1.0, 0.5});
         const double k0 = e.kinetic_energy().total();
-        const double nd = static_cast<double>(n) / (e.config().lx * e.config().ly);
-        const double omega0 = 2.0 * nd * kD * henderson_g(rho) * std::sqrt(M_PI * (k0 / n) / kM);
-        const double a2 = 16.0 * (1 - r) * (1 - 2 * r * r) / (57.0 - 25.0 * r + 30.0 * r * r * (1 - r));
-        const double t0 = 4.0 / ((1.0 - r * r) * omega0 * (1.0 + 3.0 * a2 / 16.0));
+        const double omega0 = enskog_rate(e, henderson_contact_value(rho));
+        const double t0 = theory::haff_t0(r, omega0 * (1.0 + 3.0 * theory::van_noije_ernst_a2(r, 2) / 16.0));
         const double t_start = e.time();
         for (std::size_t k = 0; k < xs.size(); ++k) {
             e.run_until(t_start + xs[k] * t0);
@@ -262,29 +250,20 @@ TEST(EdCheckpoint, ResumedRunIsBitIdentical) {
     cfg.t_c = 1e-5;
     const double l = box_for(n, 0.3);
     cfg.walls = {EdWall{1, 0.0, +1, 0.9, 0.5, 0.2}, EdWall{1, l, -1}};
-    RngStream rng(3, 3);
-    const std::vector<double> mass(n, kM);
-    auto a = lattice_gas(n, 0.3, maxwellian_velocities(mass, 0.3, rng), 2.0, cfg);
+    auto a = maxwellian_gas(n, 0.3, 0.3, 3, 3, 2.0, cfg);
     a.run_until(a.time() + 0.05);
     EdEngine b(a.save_state());
     a.run_until(a.time() + 0.1);
     b.run_until(b.time() + 0.1);
-    const EdState sa = a.save_state(), sb = b.save_state();
-    EXPECT_GT(sa.pair_collisions, 100000u);
-    EXPECT_EQ(sa.x, sb.x);
-    EXPECT_EQ(sa.vy, sb.vy);
-    EXPECT_EQ(sa.spin, sb.spin);
-    EXPECT_EQ(sa.collision_count, sb.collision_count);
-    EXPECT_EQ(sa.events, sb.events);
+    EXPECT_GT(a.save_state().pair_collisions, 100000u);
+    expect_same_fields(a.save_state(), b.save_state());
 }
 
 // Molecular chaos in an elastic gas (Luding Sec. 3.2): P(b/d) = 1 on [0, 1] in 2D. Ten bins of
 // 2e5 collisions, each within 4.5 binomial sigma of 1/10.
 TEST(EdImpactParameter, UniformInElasticGas) {
     const std::size_t n = 4096;
-    RngStream rng(9, 9);
-    const std::vector<double> mass(n, kM);
-    auto e = lattice_gas(n, 0.25, maxwellian_velocities(mass, 1.0, rng), 10.0);
+    auto e = maxwellian_gas(n, 0.25, 1.0, 9, 9, 10.0);
     std::vector<double> hist(10, 0.0);
     const std::uint64_t m = 200000;
     e.run_collisions(m, [&](const CollisionRecord& r) { hist[std::min<std::size_t>(9, static_cast<std::size_t>(r.b_over_d * 10))] += 1; });

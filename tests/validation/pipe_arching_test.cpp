@@ -3,20 +3,18 @@
 // momentum balance of a falling column between frictional side walls. (The smooth bouncing disk,
 // height lost by r_w^2 per bounce, is tests/validation/ed_validation_test.cpp; here it is repeated
 // only with friction on, which must not change the normal restitution.)
-#include "engines/ed/ed_engine.hpp"
-#include "engines/ed/ed_initial_states.hpp"
+#include "gas.hpp"
 
 #include <cmath>
 #include <gtest/gtest.h>
 #include <vector>
 
 using namespace granrepro;
+using namespace granrepro::test;
 
 namespace {
 
-constexpr double kD = 1e-3; // diameter [m]
 constexpr double kA = 0.5 * kD;
-constexpr double kM = 1e-6; // mass [kg]
 constexpr double kQ = 0.4;  // I = q m a^2 (the paper's 2/7 = q/(1+q))
 
 struct WallShot {

@@ -30,28 +30,32 @@ void add_cluster(Engine& eng, std::uint64_t seed) {
     }
 }
 
+// Momentum, kinetic energy and sum of m |v| (the round-off scale of the momentum) of the grains.
 struct Totals {
     Vec2 p;
-    double e;
+    double e = 0, scale = 0;
+    void add(double m, Vec2 v) {
+        p += m * v;
+        e += 0.5 * m * norm2(v);
+        scale += m * norm(v);
+    }
 };
 
 Totals totals(const std::vector<SoftGrain>& g) {
-    Totals t{{}, 0.0};
-    for (const auto& x : g) {
-        t.p += x.mass * x.v;
-        t.e += 0.5 * x.mass * norm2(x.v);
-    }
+    Totals t;
+    for (const auto& x : g) t.add(x.mass, x.v);
     return t;
 }
 
-// Runs the cluster with the linear law (k_N = 2000 N/m, gamma_N) and Coulomb mu for 4000 steps
-// of t_col/50; returns the totals before and after and the number of contact events.
+// The totals before and after a run of the cluster, and what happened in it.
 struct ClusterRun {
     Totals before, after;
-    std::size_t events;
-    std::size_t active_at_end;
+    std::size_t events = 0, active_at_end = 0; // contact events; contacts open at the end
+    long builds = 0;                           // neighbour-list builds (pipe engine)
 };
 
+// Runs the cluster with the linear law (k_N = 2000 N/m, gamma_N) and Coulomb mu for 4000 steps
+// of t_col/50.
 ClusterRun run_cluster(double gamma_N, double mu, std::uint64_t seed) {
     const LinearSpringDashpot law{2000.0, gamma_N};
     const double dt = law.collision_time(0.5e-6) / 50;
@@ -81,13 +85,7 @@ TEST(SoftEngine, DampedFrictionalClusterConservesMomentumAndLosesEnergy) {
 
 // The same seven-grain cluster in the pipe engine, centred on the periodic boundary (y = 0) in
 // the middle of a pipe whose walls it never reaches, gravity off.
-struct PipeClusterRun {
-    Vec2 p_before, p_after;
-    double e_before, e_after, p_scale;
-    long builds;
-};
-
-PipeClusterRun run_pipe_cluster(double gamma_N, double mu, std::uint64_t seed, int threads) {
+ClusterRun run_pipe_cluster(double gamma_N, double mu, std::uint64_t seed, int threads) {
     const LinearSpringDashpot law{2000.0, gamma_N};
     const double dt = law.collision_time(0.5e-6) / 50;
     PipeGeometry geo;
@@ -105,40 +103,34 @@ PipeClusterRun run_pipe_cluster(double gamma_N, double mu, std::uint64_t seed, i
     }
     eng.set_threads(threads);
     eng.finalize();
-    auto totals = [&](Vec2& p, double& e, double& scale) {
-        p = {};
-        e = scale = 0;
-        for (std::size_t i = 0; i < eng.size(); ++i) {
-            const Vec2 v{eng.vx()[i], eng.vy()[i]};
-            p += eng.mass()[i] * v;
-            e += 0.5 * eng.mass()[i] * norm2(v);
-            scale += eng.mass()[i] * std::sqrt(norm2(v));
-        }
+    auto pipe_totals = [&] {
+        Totals t;
+        for (std::size_t i = 0; i < eng.size(); ++i) t.add(eng.mass()[i], {eng.vx()[i], eng.vy()[i]});
+        return t;
     };
-    PipeClusterRun r{};
-    totals(r.p_before, r.e_before, r.p_scale);
+    ClusterRun r;
+    r.before = pipe_totals();
     eng.advance(4000);
-    double unused;
-    totals(r.p_after, r.e_after, unused);
+    r.after = pipe_totals();
     r.builds = eng.list_builds();
     return r;
 }
 
 TEST(PipeEngine, DampedFrictionalClusterConservesMomentumAcrossThePeriodicBoundary) {
     for (int threads : {1, 2}) {
-        const PipeClusterRun run = run_pipe_cluster(1e4, 0.5, 5, threads);
+        const ClusterRun run = run_pipe_cluster(1e4, 0.5, 5, threads);
         ASSERT_GT(run.builds, 3); // the grains moved, the list was rebuilt
-        EXPECT_LT(run.e_after, 0.9 * run.e_before); // they collided, dissipatively
-        EXPECT_NEAR(run.p_after.x, run.p_before.x, 1e-14 * run.p_scale);
-        EXPECT_NEAR(run.p_after.y, run.p_before.y, 1e-14 * run.p_scale);
+        EXPECT_LT(run.after.e, 0.9 * run.before.e); // they collided, dissipatively
+        EXPECT_NEAR(run.after.p.x, run.before.p.x, 1e-14 * run.before.scale);
+        EXPECT_NEAR(run.after.p.y, run.before.p.y, 1e-14 * run.before.scale);
     }
 }
 
 TEST(PipeEngine, ElasticFrictionlessClusterConservesEnergy) {
-    const PipeClusterRun run = run_pipe_cluster(0.0, 0.0, 3, 1);
-    EXPECT_NEAR(run.p_after.x, run.p_before.x, 1e-14 * run.p_scale);
-    EXPECT_NEAR(run.p_after.y, run.p_before.y, 1e-14 * run.p_scale);
-    EXPECT_NEAR(run.e_after / run.e_before, 1.0, 1e-3);
+    const ClusterRun run = run_pipe_cluster(0.0, 0.0, 3, 1);
+    EXPECT_NEAR(run.after.p.x, run.before.p.x, 1e-14 * run.before.scale);
+    EXPECT_NEAR(run.after.p.y, run.before.p.y, 1e-14 * run.before.scale);
+    EXPECT_NEAR(run.after.e / run.before.e, 1.0, 1e-3);
 }
 
 } // namespace
