@@ -97,6 +97,7 @@ void validate(const ParameterSet& p) {
     // Collisions of the ED and DSMC runs, bounded above at the initial Enskog rate (cooling only
     // slows it); vbar = 1e308 got as far as "all velocities are equal".
     const double n = double(c.n_side) * double(c.n_side);
+    if (!c.run_ed && !c.run_dsmc) p.reject(std::vector<std::string>{"run_ed", "run_dsmc"}, "at least one must be true");
     const double runs = double(c.seeds) * (double(c.run_ed) + double(c.run_dsmc));
     p.limit_work({"t_end", "n_side", "seeds", "vbar", "rho", "d", "equilibration"},
                  runs * n / 2 * (c.omega_enskog() * c.t_end + c.equilibration), kMaxCollisions, "collisions");
@@ -358,7 +359,7 @@ struct Runs {
 // i - n_ed. Index order is cost order, ED first (quick scale: ED 0.46, DSMC 0.12 CPU s a seed).
 // A point's random streams are its seed index's, whichever thread, rank or shard computes it.
 Runs run_all(const RunContext& ctx, const CoolingSpec& c, const std::vector<Setup>& setups) {
-    const long n_ed = c.run_ed ? c.seeds : 0, n_dsmc = c.run_dsmc || !c.run_ed ? c.seeds : 0;
+    const long n_ed = c.run_ed ? c.seeds : 0, n_dsmc = c.run_dsmc ? c.seeds : 0;
     std::vector<long> order(std::size_t(n_ed + n_dsmc));
     std::iota(order.begin(), order.end(), 0L);
     const SweepResult swept = distributed_sweep(ctx, "cooling", order, [&](long i) {

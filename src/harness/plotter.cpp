@@ -2,6 +2,7 @@
 
 #include <cstdlib>
 #include <fstream>
+#include <regex>
 #include <sstream>
 
 #include "core/stable_hash.hpp"
@@ -37,7 +38,19 @@ bool unedited(const std::string& text) {
            fnv1a_hex(text.substr(eol + 1));
 }
 
+void remove_figure(const std::filesystem::path& dir, const std::string& id) {
+    std::error_code ec;
+    for (const char* ext : {".png", ".pdf"}) std::filesystem::remove(dir / (id + ext), ec);
+}
+
 } // namespace
+
+std::string missing_table(const std::string& script, const std::filesystem::path& tables_dir) {
+    static const std::regex named(R"(datadir\.'/([A-Za-z0-9_]+)\.tsv')");
+    for (std::sregex_iterator it(script.begin(), script.end(), named), end; it != end; ++it)
+        if (!std::filesystem::exists(tables_dir / ((*it)[1].str() + ".tsv"))) return (*it)[1].str();
+    return "";
+}
 
 std::string emitted_script(const std::string& id, const std::string& body) {
     // The data and output are found next to the script (gnuplot sets ARG0 to the script's path),
@@ -66,11 +79,18 @@ RenderOutcome render_figure(const std::string& id, const std::filesystem::path& 
     }
     std::stringstream body;
     body << in.rdbuf();
+    // A table the script names that this run did not make (e.g. cooling with run_ed = false has
+    // no ED tables): the figure is not drawn, and no figure of an earlier run stays beside the data.
+    std::error_code ec;
+    if (const std::string table = missing_table(body.str(), run_dir / "tables"); !table.empty()) {
+        remove_figure(run_dir, id);
+        warn(id + " not drawn: the run made no table " + table);
+        return RenderOutcome::Skipped;
+    }
     const auto emitted = run_dir / (id + ".gp");
     // A script the user edited (in the run folder, or in the folder a new run replaces) is kept
     // and rendered instead of the one from plots/.
     const auto previous = (shown_dir.empty() ? run_dir : shown_dir) / (id + ".gp");
-    std::error_code ec;
     if (std::filesystem::exists(previous, ec) && !unedited(read_file(previous))) {
         if (previous != emitted) std::filesystem::copy_file(previous, emitted, std::filesystem::copy_options::overwrite_existing);
         warn(previous.string() + " was edited: rendering the edited script, not plots/" + id +
@@ -84,6 +104,8 @@ RenderOutcome render_figure(const std::string& id, const std::filesystem::path& 
     const auto log = run_dir / (id + ".gnuplot.log");
     const auto shown_log = (shown_dir.empty() ? run_dir : shown_dir) / (id + ".gnuplot.log");
     if (rc != 0 || !std::filesystem::exists(run_dir / (id + ".png"))) {
+        // Whatever gnuplot wrote before it failed is not a figure (and not a sign of a full disk).
+        remove_figure(run_dir, id);
         warn("gnuplot failed for " + id + " (see " + shown_log.string() + ")");
         return RenderOutcome::Failed;
     }

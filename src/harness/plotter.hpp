@@ -9,8 +9,13 @@ namespace granrepro {
 
 // Clean: gnuplot printed nothing. Warned: it rendered but printed something (our scripts print
 // nothing themselves, so anything is a warning such as "Skipping data file with no valid points");
-// <id>.gnuplot.log keeps it. Failed: gnuplot is missing or failed; the data are still complete.
-enum class RenderOutcome { Clean, Warned, Failed };
+// <id>.gnuplot.log keeps it. Failed: gnuplot is missing or failed (no PNG is left); the data
+// are still complete. Skipped: the run made no table the script names (see missing_table).
+enum class RenderOutcome { Clean, Warned, Failed, Skipped };
+
+// The first table that `script` names literally (datadir.'/<name>.tsv') and tables_dir lacks;
+// "" if none. Names the script builds at run time are not checked.
+std::string missing_table(const std::string& script, const std::filesystem::path& tables_dir);
 
 // The emitted <id>.gp: a hash line, the variables datadir and outbase (found next to the script
 // from gnuplot's ARG0, so it runs from any directory), then the body of plots/<id>.gp.

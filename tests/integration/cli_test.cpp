@@ -247,6 +247,27 @@ TEST(Cli, FigureKeepsTheExperimentsOtherFigures) {
         << "schaefer95-fig5 was kept from the old data instead of re-rendered from the new";
 }
 
+// cooling with run_ed = false (DSMC alone, for variant studies) writes its results; the figures
+// whose scripts read an ED table are not drawn, and none of the earlier full run's stays beside
+// the new data. Both methods off is refused.
+TEST(Cli, FiguresWithoutTheirTablesAreNotDrawn) {
+    const TempPath out("dsmc-only");
+    const std::string small = "cooling --scale quick --set n_side=20 --quiet --out " + out.string() + " ";
+    ASSERT_LE(run(small).code, 1);
+    const fs::path dir = out / "cooling";
+    ASSERT_TRUE(fs::exists(dir / "luding98-fig02.png"));
+    const Outcome o = run(small + "--set run_ed=false");
+    EXPECT_LE(o.code, 1) << o.err;
+    EXPECT_TRUE(fs::exists(dir / "tables" / "energy_dsmc_seed0.tsv"));
+    EXPECT_FALSE(fs::exists(dir / "tables" / "energy_ed.tsv"));
+    for (const char* fig : {"luding98-fig02", "luding98-fig03", "luding98-fig06", "luding98-fig07"}) {
+        EXPECT_FALSE(fs::exists(dir / (std::string(fig) + ".png"))) << fig;
+        EXPECT_FALSE(fs::exists(dir / (std::string(fig) + ".pdf"))) << fig;
+    }
+    EXPECT_NE(o.err.find("luding98-fig02 not drawn: the run made no table energy_ed"), std::string::npos) << o.err;
+    expect_one_line_exit(run(small + "--set run_ed=false --set run_dsmc=false"), 2, {"run_ed", "run_dsmc"});
+}
+
 TEST(Cli, SameSeedGivesBitIdenticalDatasets) {
     const TempPath a("det-a"), b("det-b");
     const std::string args = "emergency-brake --quiet --set n_vy=7 --set n_positions=3 --seed 7 ";
