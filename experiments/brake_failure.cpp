@@ -115,7 +115,7 @@ ImpactOutcome shoot_point(const BrakeFailureSpec& s, const Sweep& w, std::size_t
 }
 
 std::vector<Curve> shoot_curves(const BrakeFailureSpec& s, const Sweep& w, const RunContext& ctx) {
-    // One sweep point per curve (milliseconds each), in curve order.
+    // One sweep point per curve (milliseconds each, so none is saved), in curve order.
     std::vector<long> order(kFirstBeta + s.betas.size());
     std::iota(order.begin(), order.end(), 0L);
     const SweepResult swept = distributed_sweep(ctx, "brake-failure", order, [&](long c) {
@@ -128,7 +128,7 @@ std::vector<Curve> shoot_curves(const BrakeFailureSpec& s, const Sweep& w, const
             curve.complete.push_back(o.completed);
         }
         return to_json_fields(curve);
-    });
+    }, PointFiles::None);
     std::vector<Curve> curves;
     for (const auto& j : swept.points) curves.push_back(from_json_fields<Curve>(j));
     return curves;

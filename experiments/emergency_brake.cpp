@@ -203,14 +203,14 @@ Result run(const RunContext& ctx) {
     const auto vy = log_space(s.vy_min, s.vy_max, s.n_vy);
     const std::size_t n = vy.size();
     const std::vector<Series> series = all_series(s, law);
-    // One sweep point per series (milliseconds each), in series order.
+    // One sweep point per series (milliseconds each, so none is saved), in series order.
     std::vector<long> order(series.size());
     std::iota(order.begin(), order.end(), 0L);
     const SweepResult swept = distributed_sweep(ctx, "emergency-brake", order, [&](long si) {
         SeriesPoints out;
         for (std::size_t i = 0; i < n; ++i) out.points.push_back(mean_impact(s, series[std::size_t(si)], vy[i]));
         return to_json_fields(out);
-    });
+    }, PointFiles::None);
     std::vector<std::vector<Point>> pts;
     for (const auto& j : swept.points) pts.push_back(from_json_fields<SeriesPoints>(j).points);
 

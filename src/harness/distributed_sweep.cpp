@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <exception>
 #include <mutex>
+#include <optional>
 #include <thread>
 #include <time.h>
 
@@ -103,7 +104,7 @@ void serve_points(const RunContext& ctx, const std::function<nlohmann::json(long
 } // namespace
 
 SweepResult distributed_sweep(const RunContext& ctx, const std::string& label, const std::vector<long>& order,
-                              const std::function<nlohmann::json(long)>& compute) {
+                              const std::function<nlohmann::json(long)>& compute, PointFiles files) {
     const bool spread = ctx.sweep.ranks > 1;
 #ifdef GRANREPRO_HAVE_MPI
     if (spread && mpi::rank() != 0) {
@@ -113,13 +114,14 @@ SweepResult distributed_sweep(const RunContext& ctx, const std::string& label, c
     }
 #endif
     const long n = long(order.size());
-    SweepCheckpoint checkpoint(ctx, label);
+    std::optional<SweepCheckpoint> checkpoint;
+    if (files == PointFiles::Saved) checkpoint.emplace(ctx, label);
     SweepResult out;
     out.points.resize(std::size_t(n));
     out.cpu_seconds.assign(std::size_t(n), -1.0);
     std::vector<char> have(std::size_t(n), 0);
     for (long i = 0; i < n; ++i)
-        if (auto saved = checkpoint.load(i)) {
+        if (auto saved = checkpoint ? checkpoint->load(i) : std::nullopt) {
             out.points[std::size_t(i)] = std::move(*saved);
             have[std::size_t(i)] = 1;
             ++out.resumed; // not computed again
@@ -166,7 +168,7 @@ SweepResult distributed_sweep(const RunContext& ctx, const std::string& label, c
     };
     auto store = [&](long i, nlohmann::json value, double cost, int rank) {
         std::lock_guard<std::mutex> lock(mutex); // also makes the interruption hook exact
-        checkpoint.save(i, value);
+        if (checkpoint) checkpoint->save(i, value);
         out.points[std::size_t(i)] = std::move(value);
         out.cpu_seconds[std::size_t(i)] = cost;
         char text[160];

@@ -44,7 +44,12 @@ struct ShardFinished : std::runtime_error {
     using std::runtime_error::runtime_error;
 };
 
+// Saved: each finished point is saved (SweepCheckpoint) and a rerun resumes from them. None: for
+// sweeps of millisecond points (brake-failure, emergency-brake), where fsynced files would cost
+// more than recomputing; only for experiments not marked distributed (no shards to gather).
+enum class PointFiles { Saved, None };
+
 SweepResult distributed_sweep(const RunContext& ctx, const std::string& label, const std::vector<long>& order,
-                              const std::function<nlohmann::json(long)>& compute);
+                              const std::function<nlohmann::json(long)>& compute, PointFiles files = PointFiles::Saved);
 
 } // namespace granrepro
