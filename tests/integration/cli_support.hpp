@@ -15,6 +15,8 @@
 #include <unistd.h>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "io/h5_file.hpp"
 
 namespace cli_support {
@@ -29,6 +31,11 @@ struct Outcome {
 inline std::string slurp(const std::filesystem::path& p) {
     std::ifstream in(p, std::ios::binary);
     return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+}
+
+// The summary.json of a result directory.
+inline nlohmann::json summary(const std::filesystem::path& dir) {
+    return nlohmann::json::parse(slurp(dir / "summary.json"));
 }
 
 inline int lines(const std::string& s) { return int(std::count(s.begin(), s.end(), '\n')); }

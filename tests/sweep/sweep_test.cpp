@@ -5,17 +5,17 @@
 
 #include <cstring>
 #include <filesystem>
-#include <fstream>
-#include <nlohmann/json.hpp>
 #include <thread>
 
 #include "cli_support.hpp"
 #include "io/h5_file.hpp"
 
 namespace fs = std::filesystem;
-using cli_support::fresh;
 using cli_support::Outcome;
 using cli_support::run;
+using cli_support::shell;
+using cli_support::summary;
+using cli_support::TempPath;
 using granrepro::H5File;
 
 namespace {
@@ -27,11 +27,6 @@ const std::string kBistable =
 const std::string kImpact = "impact-parameter --scale quick ";
 const std::string kParamStudy = "parameter-study --scale quick --set n_side=8 --set cn_end=20 --set seeds=2 "
                                 "--set fig8_r=0.5 --set fig9_t_c=1e-10,1e-5 ";
-
-nlohmann::json summary(const fs::path& dir) {
-    std::ifstream in(dir / "summary.json");
-    return nlohmann::json::parse(in);
-}
 
 // Wall-clock measures (and the resume count), which differ between any two runs. Physics with
 // "wall" in its name (plug_wall_load, e_N_wall_over_free, ...) is compared.
@@ -84,23 +79,15 @@ fs::path single(const std::string& args, const fs::path& out, const std::string&
     return out / name;
 }
 
-// A shell command (the MPI cases need the launcher and its environment); its exit code.
-int shell(const std::string& cmd) {
-    const int status = std::system((cmd + " > /dev/null 2>&1").c_str());
-    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-}
-
 void mpi_equals_single(const std::string& args, const std::string& name, int ranks, int threads) {
-    const fs::path a = fresh(name + "-single"), b = fresh(name + "-mpi" + std::to_string(ranks));
+    const TempPath a(name + "-single"), b(name + "-mpi" + std::to_string(ranks));
     const fs::path ra = single(args, a, name);
-    const int code = shell(mpirun(ranks) + GRANREPRO_BINARY + " " + args + "--quiet --threads " +
-                           std::to_string(threads) + " --out " + b.string());
-    EXPECT_LE(code, 1);
+    const Outcome mpi = shell(mpirun(ranks) + GRANREPRO_BINARY + " " + args + "--quiet --threads " +
+                              std::to_string(threads) + " --out " + b.string());
+    EXPECT_LE(mpi.code, 1) << mpi.err;
     expect_identical(ra, b / name);
     EXPECT_EQ(resumed(b / name), 0);
     EXPECT_FALSE(fs::exists(b / ("." + name + ".checkpoint")));
-    fs::remove_all(a);
-    fs::remove_all(b);
 }
 
 } // namespace
@@ -114,16 +101,16 @@ TEST(SweepMpi, ImpactParameterThreeRanksEqualsSingleRun) { mpi_equals_single(kIm
 // into the next one's; that must not end the sweep rank 0 is still serving (it did, before
 // distributed_sweep ended every sweep on all ranks together).
 TEST(SweepMpi, AllThreeRanksEqualsSingleRun) {
-    const fs::path a = fresh("all-single"), b = fresh("all-mpi");
+    const TempPath a("all-single"), b("all-mpi");
     ASSERT_LE(run("all --scale quick --quiet --threads 2 --out " + a.string()).code, 1);
-    EXPECT_LE(shell(mpirun(3) + GRANREPRO_BINARY + " all --scale quick --quiet --threads 1 --out " + b.string()), 1);
+    const Outcome mpi = shell(mpirun(3) + GRANREPRO_BINARY + " all --scale quick --quiet --threads 1 --out " +
+                              b.string());
+    EXPECT_LE(mpi.code, 1) << mpi.err;
     for (const char* name : {"brake-failure", "emergency-brake", "bistable-pipe", "impact-parameter", "cooling",
                              "pipe-arching", "parameter-study", "cluster-growth"}) {
         SCOPED_TRACE(name);
         expect_identical(a / name, b / name);
     }
-    fs::remove_all(a);
-    fs::remove_all(b);
 }
 
 // The long single runs as sweep points: ED and DSMC (cooling), the two pair rules (cluster-growth).
@@ -135,16 +122,14 @@ TEST(SweepMpi, ClusterGrowthTwoRanksEqualsSingleRun) {
 // A job killed after 3 of its 8 points (every rank ends, as when a node is lost) leaves those 3 in
 // the checkpoint; the same command again computes only the other 5 and equals an uninterrupted run.
 TEST(SweepMpi, KilledJobResumesOnlyMissingPoints) {
-    const fs::path a = fresh("kill-single"), b = fresh("kill-mpi");
+    const TempPath a("kill-single"), b("kill-mpi");
     const fs::path ra = single(kBistable, a, "bistable-pipe");
     const std::string cmd = mpirun(2) + GRANREPRO_BINARY + " " + kBistable + "--quiet --out " + b.string();
-    EXPECT_GT(shell("GRANREPRO_INTERRUPT_AFTER_POINTS=3 " + cmd), 1);
+    EXPECT_GT(shell("GRANREPRO_INTERRUPT_AFTER_POINTS=3 " + cmd).code, 1);
     EXPECT_FALSE(fs::exists(b / "bistable-pipe"));
-    EXPECT_LE(shell(cmd), 1);
+    EXPECT_LE(shell(cmd).code, 1);
     EXPECT_EQ(resumed(b / "bistable-pipe"), 3);
     expect_identical(ra, b / "bistable-pipe");
-    fs::remove_all(a);
-    fs::remove_all(b);
 }
 #endif
 
@@ -152,17 +137,16 @@ TEST(SweepMpi, KilledJobResumesOnlyMissingPoints) {
 // exits 143 naming the points left, and the same command again computes only those and equals an
 // uninterrupted run. (Before, the sweep went on computing until the watcher's grace ran out.)
 TEST(SweepShards, SigtermStopsHandingOutPointsAndTheRerunResumes) {
-    const fs::path a = fresh("term-single"), b = fresh("term-sweep");
-    const fs::path err = b.string() + "-err";
+    const TempPath a("term-single"), b("term-sweep");
+    const TempPath err("term-err");
     const fs::path ra = single(kBistable, a, "bistable-pipe");
     const std::string args = kBistable + "--quiet --threads 1 --out " + b.string();
     const std::string wait_then_term = std::string(GRANREPRO_BINARY) + " " + args + " 2> " + err.string() +
                                        " & p=$!; for i in $(seq 1200); do ls " + b.string() +
                                        "/.bistable-pipe.checkpoint/sweep-*/*.json > /dev/null 2>&1 && break; "
                                        "sleep 0.05; done; kill -TERM $p; wait $p";
-    EXPECT_EQ(shell("sh -c '" + wait_then_term + "'"), 143);
-    std::ifstream in(err);
-    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    EXPECT_EQ(shell("sh -c '" + wait_then_term + "'").code, 143);
+    const std::string text = cli_support::slurp(err);
     EXPECT_NE(text.find("interrupted by SIGTERM; "), std::string::npos) << text;
     EXPECT_NE(text.find("sweep points left for the rerun"), std::string::npos) << text;
     EXPECT_FALSE(fs::exists(b / "bistable-pipe"));
@@ -174,15 +158,12 @@ TEST(SweepShards, SigtermStopsHandingOutPointsAndTheRerunResumes) {
     EXPECT_LE(run(args).code, 1);
     EXPECT_EQ(resumed(b / "bistable-pipe"), saved);
     expect_identical(ra, b / "bistable-pipe");
-    fs::remove_all(a);
-    fs::remove_all(b);
-    fs::remove(err);
 }
 
 // --points 1/2 and 2/2 into one --out, then gather: the single run's result. Gather before the
 // second shard refuses (exit 2) naming the missing points.
 TEST(SweepShards, ShardsPlusGatherEqualSingleRun) {
-    const fs::path a = fresh("shard-single"), b = fresh("shards");
+    const TempPath a("shard-single"), b("shards");
     const fs::path ra = single(kBistable, a, "bistable-pipe");
     const std::string base = kBistable + "--quiet --out " + b.string() + " ";
     ASSERT_EQ(run(base + "--points 1/2").code, 0);
@@ -194,14 +175,12 @@ TEST(SweepShards, ShardsPlusGatherEqualSingleRun) {
     ASSERT_LE(run("gather " + base).code, 1);
     EXPECT_EQ(resumed(b / "bistable-pipe"), 8);
     expect_identical(ra, b / "bistable-pipe");
-    fs::remove_all(a);
-    fs::remove_all(b);
 }
 
 // Two shards at once into one --out (as two array tasks on a shared file system), the second one
 // taken from Slurm's job-array variables; then gather.
 TEST(SweepShards, ConcurrentShardsFromSlurmEqualSingleRun) {
-    const fs::path a = fresh("conc-single"), b = fresh("conc-shards");
+    const TempPath a("conc-single"), b("conc-shards");
     const fs::path ra = single(kParamStudy, a, "parameter-study");
     const std::string base = kParamStudy + "--quiet --out " + b.string() + " ";
     Outcome o1, o2;
@@ -215,12 +194,10 @@ TEST(SweepShards, ConcurrentShardsFromSlurmEqualSingleRun) {
     ASSERT_LE(run("gather " + base).code, 1);
     EXPECT_EQ(resumed(b / "parameter-study"), 6);
     expect_identical(ra, b / "parameter-study");
-    fs::remove_all(a);
-    fs::remove_all(b);
 }
 
 TEST(SweepShards, BadPointsAndNonSweepingExperimentsAreInputErrors) {
-    const fs::path b = fresh("bad-points");
+    const TempPath b("bad-points");
     for (const char* p : {"0/2", "3/2", "1/0", "1-2", "1/2x"}) {
         const Outcome o = run(kBistable + "--quiet --points " + p + " --out " + b.string());
         EXPECT_EQ(o.code, 2) << p;
@@ -229,5 +206,4 @@ TEST(SweepShards, BadPointsAndNonSweepingExperimentsAreInputErrors) {
     const Outcome g = run("gather brake-failure --out " + b.string());
     EXPECT_EQ(g.code, 2);
     EXPECT_NE(g.err.find("no distributed sweep"), std::string::npos) << g.err;
-    fs::remove_all(b);
 }

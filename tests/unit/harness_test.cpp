@@ -4,7 +4,6 @@
 
 #include <cmath>
 #include <filesystem>
-#include <unistd.h>
 #include <fstream>
 
 #include "analysis/curve_analysis.hpp"
@@ -14,18 +13,12 @@
 #include "io/h5_file.hpp"
 #include "io/result_writer.hpp"
 #include "io/staged_directory.hpp"
+#include "saved_states.hpp"
 
 using namespace granrepro;
 namespace fs = std::filesystem;
 
 namespace {
-
-fs::path temp_dir(const std::string& name) {
-    const fs::path p = fs::temp_directory_path() / ("granrepro-test-" + name + "-" + std::to_string(::getpid()));
-    fs::remove_all(p);
-    fs::create_directories(p);
-    return p;
-}
 
 fs::path write(const fs::path& p, const std::string& text) {
     std::ofstream(p) << text;
@@ -76,8 +69,8 @@ TEST(Interval, ParsesOpenAndClosedBounds) {
 }
 
 TEST(ParameterSet, ScalesOverridesAndErrorsNameTheParameter) {
-    const fs::path dir = temp_dir("params");
-    const fs::path f = write(dir / "demo.toml", kExperiment);
+    const test::TempDir dir;
+    const fs::path f = write(dir.path / "demo.toml", kExperiment);
     ParameterSet quick = ParameterSet::load(f, Scale::Quick);
     EXPECT_EQ(quick.integer("n"), 10);
     EXPECT_EQ(ParameterSet::load(f, Scale::Paper).integer("n"), 100);
@@ -102,23 +95,22 @@ TEST(ParameterSet, ScalesOverridesAndErrorsNameTheParameter) {
     EXPECT_NE(message("nope=1").find("unknown parameter"), std::string::npos);
     EXPECT_NE(message("k_N").find("name=value"), std::string::npos);
     EXPECT_DOUBLE_EQ(quick.real("k_N"), 5000.0); // failed overrides change nothing
-    fs::remove_all(dir);
 }
 
 TEST(ParameterSet, RejectsAFileWithoutSourcesOrWithBadDefaults) {
-    const fs::path dir = temp_dir("badparams");
-    const fs::path f = write(dir / "x.toml", "[parameters.a]\nvalue = 1.0\nunit = \"m\"\n");
+    const test::TempDir dir;
+    const fs::path f = write(dir.path / "x.toml", "[parameters.a]\nvalue = 1.0\nunit = \"m\"\n");
     EXPECT_THROW(ParameterSet::load(f, Scale::Quick), InputError);
-    const fs::path g = write(dir / "y.toml", "[parameters.a]\nvalue = -1.0\nunit = \"m\"\nsource = \"s\"\nrange = \"(0, 1)\"\n");
+    const fs::path g =
+        write(dir.path / "y.toml", "[parameters.a]\nvalue = -1.0\nunit = \"m\"\nsource = \"s\"\nrange = \"(0, 1)\"\n");
     EXPECT_THROW(ParameterSet::load(g, Scale::Quick), InputError);
-    const fs::path h = write(dir / "z.toml", "[parameters.a\nvalue = ");
+    const fs::path h = write(dir.path / "z.toml", "[parameters.a\nvalue = ");
     EXPECT_THROW(ParameterSet::load(h, Scale::Quick), InputError);
-    fs::remove_all(dir);
 }
 
 TEST(Claims, VerdictsForValueRangeAndKnownDeviation) {
-    const fs::path dir = temp_dir("claims");
-    const fs::path f = write(dir / "e.toml", R"toml(
+    const test::TempDir dir;
+    const fs::path f = write(dir.path / "e.toml", R"toml(
 experiment = "e"
 [[claim]]
 id = "a"
@@ -179,10 +171,9 @@ scales = ["paper"]
     // ... but anything beyond it fails.
     EXPECT_EQ(evaluate_claims({step}, {{"x", 0.80001}}, Scale::Quick)[0].verdict, Verdict::Fail);
     EXPECT_THROW(load_claims(f, "other"), InputError);
-    EXPECT_THROW(load_claims(dir / "absent.toml", "e"), InputError);
-    const fs::path bad = write(dir / "bad.toml", "experiment = \"e\"\n[[claim]]\nid = \"a\"\n");
+    EXPECT_THROW(load_claims(dir.path / "absent.toml", "e"), InputError);
+    const fs::path bad = write(dir.path / "bad.toml", "experiment = \"e\"\n[[claim]]\nid = \"a\"\n");
     EXPECT_THROW(load_claims(bad, "e"), InputError);
-    fs::remove_all(dir);
 }
 
 // A known deviation keeps a band of its own: within the paper's tolerance it PASSes, inside its
@@ -211,9 +202,8 @@ deviation_band_reason = "r"
 )toml";
 
 Verdict deviation_verdict(const nlohmann::json& scalars, Scale scale, std::size_t claim) {
-    const fs::path dir = temp_dir("devclaims");
-    const auto claims = load_claims(write(dir / "e.toml", kDeviationClaims), "e");
-    fs::remove_all(dir);
+    const test::TempDir dir;
+    const auto claims = load_claims(write(dir.path / "e.toml", kDeviationClaims), "e");
     return evaluate_claims(claims, scalars, scale).at(claim).verdict;
 }
 
@@ -245,8 +235,8 @@ TEST(Claims, DeviationWithoutScalarFails) {
 }
 
 TEST(Claims, FailingDeviationFailsTheRunAndTheTableShowsTheBand) {
-    const fs::path dir = temp_dir("devtable");
-    const auto claims = load_claims(write(dir / "e.toml", kDeviationClaims), "e");
+    const test::TempDir dir;
+    const auto claims = load_claims(write(dir.path / "e.toml", kDeviationClaims), "e");
     EXPECT_TRUE(all_pass(evaluate_claims(claims, {{"x", 1.5}, {"y", 3.0}}, Scale::Quick)));
     EXPECT_FALSE(all_pass(evaluate_claims(claims, {{"x", 1.7}, {"y", 3.0}}, Scale::Quick)));
     // The table shows the paper's relation and our band side by side.
@@ -258,12 +248,11 @@ TEST(Claims, FailingDeviationFailsTheRunAndTheTableShowsTheBand) {
     VerdictCounts n;
     n.add(evaluate_claims(claims, {{"x", 1.0}, {"y", 3.0}}, Scale::Paper));
     EXPECT_EQ(n.text(), "1 PASS, 1 FAIL, 0 DEVIATION, 0 skipped");
-    fs::remove_all(dir);
 }
 
 TEST(Claims, MissingScalarFailsEveryClaim) {
-    const fs::path dir = temp_dir("missclaims");
-    const auto claims = load_claims(write(dir / "e.toml", R"toml(
+    const test::TempDir dir;
+    const auto claims = load_claims(write(dir.path / "e.toml", R"toml(
 experiment = "e"
 [[claim]]
 id = "plain"
@@ -276,18 +265,17 @@ tolerance_reason = "r"
     EXPECT_EQ(evaluate_claims(claims, nlohmann::json::object(), Scale::Quick)[0].verdict, Verdict::Fail);
     EXPECT_EQ(evaluate_claims(claims, {{"x", NAN}}, Scale::Quick)[0].verdict, Verdict::Fail);
     EXPECT_EQ(evaluate_claims(claims, {{"x", 0.5}}, Scale::Quick)[0].verdict, Verdict::Pass);
-    fs::remove_all(dir);
 }
 
 // A known deviation without its band at a scale where it applies is an input error naming the
 // file, the claim and the missing key.
 TEST(Claims, DeviationWithoutBandIsAnInputError) {
-    const fs::path dir = temp_dir("bandless");
+    const test::TempDir dir;
     const std::string head = "experiment = \"e\"\n[[claim]]\nid = \"dev\"\nstatement = \"s\"\nsource = \"s\"\n"
                              "measured = \"x\"\npaper = 1.0\nabs_tol = 0.1\nknown_deviation = \"k\"\n";
     auto error = [&](const std::string& rest) {
         try {
-            load_claims(write(dir / "e.toml", head + rest), "e");
+            load_claims(write(dir.path / "e.toml", head + rest), "e");
         } catch (const InputError& e) {
             return std::string(e.what());
         }
@@ -310,11 +298,11 @@ TEST(Claims, DeviationWithoutBandIsAnInputError) {
               std::string::npos);
     EXPECT_EQ(error("deviation_band = [-inf, inf]\ndeviation_band_reason = \"r\"\n"), "no error");
     // A band on a claim that is no known deviation is a mistake too.
-    const fs::path plain = write(dir / "p.toml", "experiment = \"e\"\n[[claim]]\nid = \"p\"\nstatement = \"s\"\n"
-                                                 "source = \"s\"\nmeasured = \"x\"\nmax = 1.0\ntolerance_reason = \"r\"\n"
-                                                 "deviation_band = [0, 2]\ndeviation_band_reason = \"r\"\n");
+    const fs::path plain = write(dir.path / "p.toml",
+                                 "experiment = \"e\"\n[[claim]]\nid = \"p\"\nstatement = \"s\"\nsource = \"s\"\n"
+                                 "measured = \"x\"\nmax = 1.0\ntolerance_reason = \"r\"\n"
+                                 "deviation_band = [0, 2]\ndeviation_band_reason = \"r\"\n");
     EXPECT_THROW(load_claims(plain, "e"), InputError);
-    fs::remove_all(dir);
 }
 
 TEST(CurveAnalysis, RecoversPowerLawAndPeak) {
@@ -341,28 +329,27 @@ TEST(CurveAnalysis, RecoversPowerLawAndPeak) {
 }
 
 TEST(H5File, RoundTripsDatasetsAndAttributes) {
-    const fs::path dir = temp_dir("h5");
+    const test::TempDir dir;
     {
-        H5File f = H5File::create((dir / "a.h5").string());
+        H5File f = H5File::create((dir.path / "a.h5").string());
         f.attr("name", std::string("brake-failure"));
         f.attr("x", 2.5);
         const H5Object g = f.group("tables");
         g.dataset("v", {1.0, 2.0, 3.5}, "m/s");
         f.bytes("raw", {1, 2, 3});
     }
-    const H5File f = H5File::open((dir / "a.h5").string());
+    const H5File f = H5File::open((dir.path / "a.h5").string());
     EXPECT_EQ(f.read_string_attr("name"), "brake-failure");
     EXPECT_DOUBLE_EQ(f.read_double_attr("x"), 2.5);
     EXPECT_EQ(f.read_dataset("tables/v"), (std::vector<double>{1.0, 2.0, 3.5}));
     EXPECT_EQ(f.read_bytes("raw"), (std::vector<unsigned char>{1, 2, 3}));
-    fs::remove_all(dir);
 }
 
 // The compact copy committed to paper_figures/ keeps provenance, parameters, scalars and curves
 // bit for bit, and leaves out (and names) only the tables above the size limit.
 TEST(ResultExport, CompactCopyKeepsScalarsAndCurvesAndNamesWhatItLeavesOut) {
-    const fs::path dir = temp_dir("compact");
-    const ParameterSet params = ParameterSet::load(write(dir / "demo.toml", kExperiment), Scale::Paper);
+    const test::TempDir dir;
+    const ParameterSet params = ParameterSet::load(write(dir.path / "demo.toml", kExperiment), Scale::Paper);
     Result result;
     Table& curve = result.table("curve", "a small curve");
     curve.add("t", "s").values = {0.0, 0.5, 1.0};
@@ -372,10 +359,10 @@ TEST(ResultExport, CompactCopyKeepsScalarsAndCurvesAndNamesWhatItLeavesOut) {
     snap.add("y", "m").values = std::vector<double>(600, 0.2);
     result.scalar("slope", -0.9731, "1", "fitted slope");
     Provenance prov{"demo", "p", "file text", Scale::Paper, 7, 12.5, 2, "granrepro demo", "expected text", {}};
-    write_result_h5(dir / "data.h5", prov, params, result);
-    const auto omitted = write_compact_result_h5(dir / "data.h5", dir / "small.h5", 1000);
+    write_result_h5(dir.path / "data.h5", prov, params, result);
+    const auto omitted = write_compact_result_h5(dir.path / "data.h5", dir.path / "small.h5", 1000);
     EXPECT_EQ(omitted, std::vector<std::string>{"snapshot_0"});
-    const H5File f = H5File::open((dir / "small.h5").string());
+    const H5File f = H5File::open((dir.path / "small.h5").string());
     EXPECT_EQ(f.read_string_attr("experiment"), "demo");
     EXPECT_EQ(f.read_u64_attr("seed"), 7u);
     EXPECT_EQ(f.read_string_attr("scale"), "paper");
@@ -396,25 +383,23 @@ TEST(ResultExport, CompactCopyKeepsScalarsAndCurvesAndNamesWhatItLeavesOut) {
         H5Dclose(t);
         H5Dclose(k);
     }
-    EXPECT_LT(fs::file_size(dir / "small.h5"), fs::file_size(dir / "data.h5"));
-    fs::remove_all(dir);
+    EXPECT_LT(fs::file_size(dir.path / "small.h5"), fs::file_size(dir.path / "data.h5"));
 }
 
 TEST(StagedDirectory, LeavesNothingBehindUnlessCommitted) {
-    const fs::path dir = temp_dir("stage");
+    const test::TempDir dir;
     {
-        StagedDirectory s(dir / "exp");
+        StagedDirectory s(dir.path / "exp");
         write(s.path() / "data.txt", "x");
     }
-    EXPECT_FALSE(fs::exists(dir / "exp"));
-    EXPECT_TRUE(fs::is_empty(dir));
+    EXPECT_FALSE(fs::exists(dir.path / "exp"));
+    EXPECT_TRUE(fs::is_empty(dir.path));
     {
-        StagedDirectory s(dir / "exp");
+        StagedDirectory s(dir.path / "exp");
         write(s.path() / "data.txt", "y");
         s.commit();
     }
-    EXPECT_TRUE(fs::exists(dir / "exp" / "data.txt"));
-    fs::remove_all(dir);
+    EXPECT_TRUE(fs::exists(dir.path / "exp" / "data.txt"));
 }
 
 } // namespace
