@@ -100,4 +100,27 @@ inline void expect_same_datasets(const std::filesystem::path& a, const std::file
     }
 }
 
+// Wall-clock measures, which differ between any two runs. Physics with "wall" in its name
+// (plug_wall_load, e_N_wall_over_free, ...) is not one.
+inline bool wall_clock(const std::string& name) {
+    for (const char* clock : {"wall_seconds", "wall_time", "per_second", "seconds_per"})
+        if (name.find(clock) != std::string::npos) return true;
+    return false;
+}
+
+// The scalars in the summary.json of two result directories are the same, but the wall-clock ones
+// and `skip`; more than `more_than` are compared.
+inline void expect_same_scalars(const std::filesystem::path& a, const std::filesystem::path& b,
+                                const std::string& skip = "", int more_than = 0) {
+    const auto sa = summary(a).at("scalars"), sb = summary(b).at("scalars");
+    ASSERT_EQ(sa.size(), sb.size());
+    int compared = 0;
+    for (auto it = sa.begin(); it != sa.end(); ++it)
+        if (!wall_clock(it.key()) && it.key() != skip) {
+            EXPECT_EQ(it.value().dump(), sb.at(it.key()).dump()) << it.key();
+            ++compared;
+        }
+    EXPECT_GT(compared, more_than);
+}
+
 } // namespace cli_support

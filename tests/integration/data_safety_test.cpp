@@ -300,14 +300,14 @@ TEST(DataSafety, KillInTheCommitWindowLosesNoResults) {
     Outcome o = run(kSmallRun + "--seed 2 --out " + out.string(), "GRANREPRO_TEST_KILL_IN_COMMIT=after-exchange");
     EXPECT_EQ(o.code, 128 + SIGKILL) << "killed";
     ASSERT_TRUE(fs::exists(dir / "summary.json"));
-    EXPECT_EQ(nlohmann::json::parse(slurp(dir / "summary.json")).at("seed"), 2);
+    EXPECT_EQ(summary(dir).at("seed"), 2);
     EXPECT_EQ(leftovers(out, kExp).size(), 1u) << "the old copy, for the next run to delete";
     EXPECT_EQ(run("check " + kExp + " --out " + out.string()).code, 0);
 
     ASSERT_EQ(run(kSmallRun + "--seed 1 --out " + out.string()).code, 0);
     EXPECT_TRUE(leftovers(out, kExp).empty());
     // The same results again (summary.json also holds the wall time, whose printed length varies).
-    const auto again = nlohmann::json::parse(slurp(dir / "summary.json"));
+    const auto again = summary(dir);
     const auto before = nlohmann::json::parse(first);
     EXPECT_EQ(again.at("seed"), 1);
     EXPECT_EQ(again.at("scalars"), before.at("scalars"));
@@ -323,7 +323,7 @@ TEST(DataSafety, KillInTheCommitWindowLosesNoResults) {
     o = run("emergency-brake --set n_vy=15 --set n_positions=3 --seed 4 --out " + out.string());
     EXPECT_EQ(o.code, 0) << o.err;
     EXPECT_NE(o.err.find("restored " + dir.string()), std::string::npos) << o.err;
-    EXPECT_EQ(nlohmann::json::parse(slurp(dir / "summary.json")).at("seed"), 4);
+    EXPECT_EQ(summary(dir).at("seed"), 4);
     EXPECT_TRUE(leftovers(out, kExp).empty());
 }
 
@@ -341,7 +341,7 @@ TEST(DataSafety, ConcurrentRunOnTheSameOutIsRefused) {
     expect_one_line_exit(second, 2, {(out / "cooling").string() + " is being written by pid " + std::to_string(first)});
     EXPECT_LE(wait_for(first), 1) << slurp(err);
     EXPECT_TRUE(fs::exists(out / "cooling" / "summary.json"));
-    EXPECT_EQ(nlohmann::json::parse(slurp(out / "cooling" / "summary.json")).at("seed"), 1);
+    EXPECT_EQ(summary(out / "cooling").at("seed"), 1);
     EXPECT_TRUE(leftovers(out, "cooling").empty());
 }
 

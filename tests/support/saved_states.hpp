@@ -28,14 +28,21 @@ struct TempDir {
     ~TempDir() { std::filesystem::remove_all(path); }
 };
 
+// An HDF5 file in `dir` that `write` fills (and closes), opened again for reading.
+template <class Write>
+H5File written_h5(const TempDir& dir, Write write) {
+    const std::string file = (dir.path / "f.h5").string();
+    write(H5File::create(file));
+    return H5File::open(file);
+}
+
 // An ED or DSMC state written to an HDF5 file and read back.
 template <class State>
 State through_file(const State& s) {
     const TempDir dir("-state");
-    const std::string file = (dir.path / "state.h5").string();
-    write_engine_state(H5File::create(file).group("state"), s);
+    const H5File f = written_h5(dir, [&](const H5File& w) { write_engine_state(w.group("state"), s); });
     State read;
-    read_engine_state(H5File::open(file).open_group("state"), read);
+    read_engine_state(f.open_group("state"), read);
     return read;
 }
 

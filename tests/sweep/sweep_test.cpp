@@ -11,6 +11,7 @@
 #include "io/h5_file.hpp"
 
 namespace fs = std::filesystem;
+using cli_support::expect_same_scalars;
 using cli_support::Outcome;
 using cli_support::run;
 using cli_support::shell;
@@ -28,15 +29,8 @@ const std::string kImpact = "impact-parameter --scale quick ";
 const std::string kParamStudy = "parameter-study --scale quick --set n_side=8 --set cn_end=20 --set seeds=2 "
                                 "--set fig8_r=0.5 --set fig9_t_c=1e-10,1e-5 ";
 
-// Wall-clock measures (and the resume count), which differ between any two runs. Physics with
-// "wall" in its name (plug_wall_load, e_N_wall_over_free, ...) is compared.
-bool wall_clock(const std::string& k) {
-    for (const char* clock : {"wall_seconds", "wall_time", "per_second", "seconds_per"})
-        if (k.find(clock) != std::string::npos) return true;
-    return k == "resumed_points";
-}
-
-// Every table dataset and every scalar (but the wall-clock ones) of two result directories.
+// Every table dataset and every scalar (but the wall-clock ones and the resume count) of two
+// result directories.
 void expect_identical(const fs::path& a, const fs::path& b) {
     ASSERT_TRUE(fs::exists(a / "data.h5")) << a;
     ASSERT_TRUE(fs::exists(b / "data.h5")) << b;
@@ -48,7 +42,7 @@ void expect_identical(const fs::path& a, const fs::path& b) {
         const auto ga = ta.open_group(t), gb = tb.open_group(t);
         ASSERT_EQ(ga.children(), gb.children()) << t;
         for (const auto& c : ga.children()) {
-            if (wall_clock(c)) continue; // e.g. pipe-arching's per-seed wall_seconds column
+            if (cli_support::wall_clock(c)) continue; // e.g. pipe-arching's per-seed wall_seconds column
             const auto va = ga.read_dataset(c), vb = gb.read_dataset(c);
             ASSERT_EQ(va.size(), vb.size()) << t << "/" << c;
             EXPECT_EQ(0, std::memcmp(va.data(), vb.data(), va.size() * sizeof(double))) << t << "/" << c;
@@ -56,12 +50,7 @@ void expect_identical(const fs::path& a, const fs::path& b) {
         }
     }
     EXPECT_GT(values, 10u);
-    const auto sa = summary(a).at("scalars"), sb = summary(b).at("scalars");
-    ASSERT_EQ(sa.size(), sb.size());
-    for (auto it = sa.begin(); it != sa.end(); ++it)
-        if (!wall_clock(it.key())) {
-            EXPECT_EQ(it.value().dump(), sb.at(it.key()).dump()) << it.key();
-        }
+    expect_same_scalars(a, b, "resumed_points");
 }
 
 double resumed(const fs::path& dir) { return summary(dir).at("scalars").at("resumed_points").get<double>(); }

@@ -58,15 +58,10 @@ TEST(EdStateFile, ResumedFromFileIsBitIdentical) {
 
 TEST(EdStateFile, RejectsOtherGroups) {
     TempDir dir;
-    const fs::path file = dir.path / "x.h5";
-    {
-        const H5File f = H5File::create(file.string());
-        f.group("empty");
-        const H5Object d = f.group("dsmc");
-        DsmcState s;
-        write_dsmc_state(d, s);
-    }
-    const H5File f = H5File::open(file.string());
+    const H5File f = written_h5(dir, [](const H5File& w) {
+        w.group("empty");
+        write_dsmc_state(w.group("dsmc"), DsmcState{});
+    });
     EXPECT_THROW(read_ed_state(f.open_group("empty")), std::runtime_error);
     EXPECT_THROW(read_ed_state(f.open_group("dsmc")), std::runtime_error);
     EXPECT_THROW(read_dsmc_state(f.open_group("empty")), std::runtime_error);
@@ -75,19 +70,16 @@ TEST(EdStateFile, RejectsOtherGroups) {
 TEST(DsmcStateFile, RejectsUnknownChoices) {
     // The walk reads any integer the field can hold; the reader then refuses what is no choice.
     TempDir dir;
-    const fs::path file = dir.path / "x.h5";
     DsmcState mode, partner, block;
     mode.config.free_volume = DsmcFreeVolume(3);
     partner.config.partner = DsmcPartner(2);
     block.config.free_volume_block = 0;
-    {
-        const H5File f = H5File::create(file.string());
-        write_dsmc_state(f.group("good"), DsmcState{});
-        write_dsmc_state(f.group("mode"), mode);
-        write_dsmc_state(f.group("partner"), partner);
-        write_dsmc_state(f.group("block"), block);
-    }
-    const H5File f = H5File::open(file.string());
+    const H5File f = written_h5(dir, [&](const H5File& w) {
+        write_dsmc_state(w.group("good"), DsmcState{});
+        write_dsmc_state(w.group("mode"), mode);
+        write_dsmc_state(w.group("partner"), partner);
+        write_dsmc_state(w.group("block"), block);
+    });
     EXPECT_NO_THROW(read_dsmc_state(f.open_group("good")));
     EXPECT_THROW(read_dsmc_state(f.open_group("mode")), std::runtime_error);
     EXPECT_THROW(read_dsmc_state(f.open_group("partner")), std::runtime_error);

@@ -330,15 +330,13 @@ TEST(CurveAnalysis, RecoversPowerLawAndPeak) {
 
 TEST(H5File, RoundTripsDatasetsAndAttributes) {
     const test::TempDir dir;
-    {
-        H5File f = H5File::create((dir.path / "a.h5").string());
-        f.attr("name", std::string("brake-failure"));
-        f.attr("x", 2.5);
-        const H5Object g = f.group("tables");
+    const H5File f = test::written_h5(dir, [](const H5File& w) {
+        w.attr("name", std::string("brake-failure"));
+        w.attr("x", 2.5);
+        const H5Object g = w.group("tables");
         g.dataset("v", {1.0, 2.0, 3.5}, "m/s");
-        f.bytes("raw", {1, 2, 3});
-    }
-    const H5File f = H5File::open((dir.path / "a.h5").string());
+        w.bytes("raw", {1, 2, 3});
+    });
     EXPECT_EQ(f.read_string_attr("name"), "brake-failure");
     EXPECT_DOUBLE_EQ(f.read_double_attr("x"), 2.5);
     EXPECT_EQ(f.read_dataset("tables/v"), (std::vector<double>{1.0, 2.0, 3.5}));

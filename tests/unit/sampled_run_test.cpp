@@ -80,27 +80,14 @@ TEST(H5Fields, EveryFieldTypeRoundTripsBitForBit) {
     e.points = {{1.5, -2.5}, {3e300, 4e-300}};
     e.inner = {2.5, {7, 8}};
     e.list = {{1.0, {}}, {std::nextafter(1.0, 2.0), {3}}};
-    const fs::path file = dir.path / "f.h5";
-    {
-        const H5File f = H5File::create(file.string());
-        write_fields(f.group("e"), e);
-    }
     Everything r;
-    {
-        const H5File f = H5File::open(file.string());
-        read_fields(f.open_group("e"), r);
-    }
+    read_fields(written_h5(dir, [&](const H5File& f) { write_fields(f.group("e"), e); }).open_group("e"), r);
     expect_same_fields(r, e); // bit for bit: the sign of -0 and NaN included
 }
 
 TEST(H5Fields, AMissingFieldThrows) {
     TempDir dir;
-    const fs::path file = dir.path / "f.h5";
-    {
-        const H5File f = H5File::create(file.string());
-        write_fields(f.group("e"), Inner{1.0, {2}});
-    }
-    const H5File f = H5File::open(file.string());
+    const H5File f = written_h5(dir, [](const H5File& w) { write_fields(w.group("e"), Inner{1.0, {2}}); });
     Everything r;
     EXPECT_ANY_THROW(read_fields(f.open_group("e"), r));
 }
@@ -108,17 +95,14 @@ TEST(H5Fields, AMissingFieldThrows) {
 TEST(H5Fields, AnIntegerTheFieldCannotHoldThrows) {
     // A stored -1 must not wrap into a valid uint32 (a state reader's ">= 1" check would pass).
     TempDir dir;
-    const fs::path file = dir.path / "f.h5";
-    {
-        const H5File f = H5File::create(file.string());
+    const H5File f = written_h5(dir, [](const H5File& w) {
         Everything e;
-        write_fields(f.group("fits"), e);
+        write_fields(w.group("fits"), e);
         e.n = -1;
-        write_fields(f.group("negative"), e);
+        write_fields(w.group("negative"), e);
         e.n = long(1) << 32;
-        write_fields(f.group("too_big"), e);
-    }
-    const H5File f = H5File::open(file.string());
+        write_fields(w.group("too_big"), e);
+    });
     NarrowN r;
     EXPECT_NO_THROW(read_fields(f.open_group("fits"), r));
     EXPECT_ANY_THROW(read_fields(f.open_group("negative"), r));
