@@ -11,13 +11,8 @@
 #include "io/h5_file.hpp"
 
 namespace fs = std::filesystem;
-using cli_support::expect_same_scalars;
-using cli_support::Outcome;
-using cli_support::run;
-using cli_support::shell;
-using cli_support::summary;
-using cli_support::TempPath;
 using granrepro::H5File;
+using namespace cli_support;
 
 namespace {
 
@@ -42,7 +37,7 @@ void expect_identical(const fs::path& a, const fs::path& b) {
         const auto ga = ta.open_group(t), gb = tb.open_group(t);
         ASSERT_EQ(ga.children(), gb.children()) << t;
         for (const auto& c : ga.children()) {
-            if (cli_support::wall_clock(c)) continue; // e.g. pipe-arching's per-seed wall_seconds column
+            if (wall_clock(c)) continue; // e.g. pipe-arching's per-seed wall_seconds column
             const auto va = ga.read_dataset(c), vb = gb.read_dataset(c);
             ASSERT_EQ(va.size(), vb.size()) << t << "/" << c;
             EXPECT_EQ(0, std::memcmp(va.data(), vb.data(), va.size() * sizeof(double))) << t << "/" << c;
@@ -135,7 +130,7 @@ TEST(SweepShards, SigtermStopsHandingOutPointsAndTheRerunResumes) {
                                        "/.bistable-pipe.checkpoint/sweep-*/*.json > /dev/null 2>&1 && break; "
                                        "sleep 0.05; done; kill -TERM $p; wait $p";
     EXPECT_EQ(shell("sh -c '" + wait_then_term + "'").code, 143);
-    const std::string text = cli_support::slurp(err);
+    const std::string text = slurp(err);
     EXPECT_NE(text.find("interrupted by SIGTERM; "), std::string::npos) << text;
     EXPECT_NE(text.find("sweep points left for the rerun"), std::string::npos) << text;
     EXPECT_FALSE(fs::exists(b / "bistable-pipe"));
