@@ -32,24 +32,7 @@
 #include "scenarios/hard_sphere_lattice.hpp"
 #include "theory/kinetic_theory.hpp"
 
-namespace granrepro {
-
-// A stress cell's JSON form (io/json_fields.hpp), what Fig. 5 and the eddy cores use: eigenvalues,
-// axes, collisions, the total stress (pressure).
-nlohmann::json to_json_value(const CollisionalStress::Cell& c) {
-    const auto v = [](double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr); };
-    return {v(c.sigma_min), v(c.sigma_max), v(c.axis_min.x()), v(c.axis_min.y()), v(c.axis_max.x()), v(c.axis_max.y()),
-            c.collisions, v(c.total(0, 0)), v(c.total(0, 1)), v(c.total(1, 0)), v(c.total(1, 1))};
-}
-void from_json_value(const nlohmann::json& j, CollisionalStress::Cell& c) {
-    double* x[] = {&c.sigma_min, &c.sigma_max, &c.axis_min.x(), &c.axis_min.y(), &c.axis_max.x(), &c.axis_max.y(),
-                   nullptr, &c.total(0, 0), &c.total(0, 1), &c.total(1, 0), &c.total(1, 1)};
-    for (std::size_t k = 0; k < 11; ++k)
-        if (x[k]) *x[k] = j.at(k).is_null() ? NAN : j.at(k).get<double>();
-    c.collisions = j.at(6);
-}
-
-namespace experiments {
+namespace granrepro::experiments {
 
 namespace {
 
@@ -738,5 +721,4 @@ Result run(const RunContext& ctx) {
 
 Experiment impact_parameter() { return {"impact-parameter", &validate, &run}; }
 
-} // namespace experiments
-} // namespace granrepro
+} // namespace granrepro::experiments
