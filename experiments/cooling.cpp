@@ -118,19 +118,13 @@ void validate(const ParameterSet& p) {
 // g(r/d) with its counting error, and S(k), at one snapshot time.
 struct Snapshot {
     std::vector<double> g, g_err, S;
-    template <class V>
-    void fields(V&& v) {
-        v("g", g), v("g_err", g_err), v("S", S);
-    }
+    template <class V> void fields(V&& v) { v("g", g), v("g_err", g_err), v("S", S); }
 };
 
 // The counts per b/d bin of one P(b/d) time window.
 struct WindowCounts {
     std::vector<std::uint64_t> bins;
-    template <class V>
-    void fields(V&& v) {
-        v("bins", bins);
-    }
+    template <class V> void fields(V&& v) { v("bins", bins); }
 };
 
 // What one method (ED or DSMC) produced from one initial state. fields() lists what a run carries
