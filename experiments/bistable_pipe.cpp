@@ -558,11 +558,7 @@ void report_eq9_windows(Result& r, const std::vector<Task>& tasks, const std::ve
             }
         }
     Table& tw = r.table("eq9_windows", "ṅ, Δv_y, σ_vx and speed over windows of eq9_window, every run");
-    tw.add("k_N", "N/m").values = wk;
-    tw.add("ndot", "1/s").values = wn;
-    tw.add("dvy", "m/s").values = wd;
-    tw.add("sigma_vx", "m/s").values = ws;
-    tw.add("v", "m/s").values = wv;
+    tw.add({{"k_N", "N/m", wk}, {"ndot", "1/s", wn}, {"dvy", "m/s", wd}, {"sigma_vx", "m/s", ws}, {"v", "m/s", wv}});
     const auto a = lx.size() >= 10 ? fit_power_law(lx, ly, 0, INFINITY) : PowerLawFit{NAN, NAN, 0};
     const auto c = ld.size() >= 10 ? fit_power_law(ld, lnd, 0, INFINITY) : PowerLawFit{NAN, NAN, 0};
     r.scalar("ndot_vs_sigma_vx_exponent", a.exponent, "1", "exponent of ṅ ∝ σ_vx^a over all windows");
@@ -579,8 +575,7 @@ void report_series(Result& r, const BistablePipeSpec& b, const std::vector<Task>
         ts.add("t", "s").values = results[i].t;
         std::vector<double> speed(results[i].v.size());
         for (std::size_t j = 0; j < speed.size(); ++j) speed[j] = -results[i].v[j];
-        ts.add("v_down", "m/s").values = speed;
-        ts.add("sigma_vx", "m/s").values = results[i].sx;
+        ts.add({{"v_down", "m/s", speed}, {"sigma_vx", "m/s", results[i].sx}});
     }
 }
 
