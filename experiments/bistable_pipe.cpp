@@ -502,8 +502,7 @@ void report_fig6(Result& r, const BistablePipeSpec& b, const PipeSpec& base, con
     const auto &ks = b.kN_list, &es = b.eN_list;
     Totals tot;
     for (std::size_t ki = 0; ki < ks.size(); ++ki) { // one row of the figure
-        char kt[32];
-        std::snprintf(kt, sizeof kt, "k%g", ks[ki]);
+        const std::string kt = "k" + number_text(ks[ki]);
         const KColumns c = table_k(r, b, base, ki, kt, results, tot);
         const double v_crit = b.v_crit_2000 * std::sqrt(ks[ki] / 2000.0);
         report_states_k(r, es, kt, c, v_crit);
@@ -568,9 +567,8 @@ void report_eq9_windows(Result& r, const std::vector<Task>& tasks, const std::ve
 
 void report_series(Result& r, const BistablePipeSpec& b, const std::vector<Task>& tasks, const std::vector<RunResult>& results) {
     for (std::size_t i = 0; i < tasks.size(); ++i) {
-        char name[96];
-        std::snprintf(name, sizeof name, "series_k%g_e%g_%s%s", tasks[i].k, tasks[i].e, tasks[i].fast ? "fast" : "slow",
-                      b.length_check > 0 && i + 1 == tasks.size() ? "_length_check" : "");
+        const std::string name = "series_k" + number_text(tasks[i].k) + "_e" + number_text(tasks[i].e) +
+                                 (tasks[i].fast ? "_fast" : "_slow") + (b.length_check > 0 && i + 1 == tasks.size() ? "_length_check" : "");
         Table& ts = r.table(name, "mean velocity and rms v_x against time");
         ts.add("t", "s").values = results[i].t;
         std::vector<double> speed(results[i].v.size());
