@@ -567,8 +567,9 @@ void report_eq9_windows(Result& r, const std::vector<Task>& tasks, const std::ve
 
 void report_series(Result& r, const BistablePipeSpec& b, const std::vector<Task>& tasks, const std::vector<RunResult>& results) {
     for (std::size_t i = 0; i < tasks.size(); ++i) {
+        const bool length_check = b.length_check > 0 && i + 1 == tasks.size();
         const std::string name = "series_k" + number_text(tasks[i].k) + "_e" + number_text(tasks[i].e) +
-                                 (tasks[i].fast ? "_fast" : "_slow") + (b.length_check > 0 && i + 1 == tasks.size() ? "_length_check" : "");
+                                 (tasks[i].fast ? "_fast" : "_slow") + (length_check ? "_length_check" : "");
         Table& ts = r.table(name, "mean velocity and rms v_x against time");
         ts.add("t", "s").values = results[i].t;
         std::vector<double> speed(results[i].v.size());
