@@ -541,9 +541,9 @@ void fig12_instants_table(Result& res, const std::vector<Instant>& instants) {
         for (const auto& in : instants) c.values.push_back(std::invoke(get, in));
     };
     const std::vector<std::tuple<const char*, const char*, double I::*>> plain = {
-        {"t", "s", &I::t}, {"window", "s", &I::window}, {"C_over_N", "1", &I::cn}, {"elastic_C_over_N", "1", &I::elastic_cn},
-        {"mean_Nc", "1/s", &I::mean_rate}, {"sd_Nc", "1/s", &I::sd_rate}, {"fast_particles", "1", &I::fast_fraction},
-        {"tail_fraction", "1", &I::tail_fraction}};
+        {"t", "s", &I::t}, {"window", "s", &I::window}, {"C_over_N", "1", &I::cn},
+        {"elastic_C_over_N", "1", &I::elastic_cn}, {"mean_Nc", "1/s", &I::mean_rate}, {"sd_Nc", "1/s", &I::sd_rate},
+        {"fast_particles", "1", &I::fast_fraction}, {"tail_fraction", "1", &I::tail_fraction}};
     for (const auto& [name, unit, f] : plain) col(name, unit, f);
     // A fit's value, its error (err: that column's name, if any) and its reduced chi^2.
     auto fit = [&](const char* name, const char* err, const char* chi2, CollisionRateFit I::*f, const char* unit) {

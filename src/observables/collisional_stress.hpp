@@ -49,9 +49,10 @@ public:
         // What a sweep point keeps of a cell (Fig. 5 and the eddy cores): eigenvalues, axes,
         // collisions, the total stress (pressure).
         template <class V> void fields(V&& v) {
-            v("sigma_min", sigma_min); v("sigma_max", sigma_max); v("axis_min_x", axis_min.x()); v("axis_min_y", axis_min.y());
-            v("axis_max_x", axis_max.x()); v("axis_max_y", axis_max.y()); v("collisions", collisions);
-            v("total_xx", total(0, 0)); v("total_xy", total(0, 1)); v("total_yx", total(1, 0)); v("total_yy", total(1, 1));
+            v("sigma_min", sigma_min); v("sigma_max", sigma_max); v("collisions", collisions);
+            v("axis_min_x", axis_min.x()); v("axis_min_y", axis_min.y()); v("axis_max_x", axis_max.x());
+            v("axis_max_y", axis_max.y()); v("total_xx", total(0, 0)); v("total_xy", total(0, 1));
+            v("total_yx", total(1, 0)); v("total_yy", total(1, 1));
         }
     };
 
