@@ -502,8 +502,7 @@ void report_fig6(Result& r, const BistablePipeSpec& b, const PipeSpec& base, con
     const auto &ks = b.kN_list, &es = b.eN_list;
     Totals tot;
     for (std::size_t ki = 0; ki < ks.size(); ++ki) { // one row of the figure
-        char kt[32];
-        std::snprintf(kt, sizeof kt, "k%g", ks[ki]);
+        const std::string kt = "k" + number_text(ks[ki]);
         const KColumns c = table_k(r, b, base, ki, kt, results, tot);
         const double v_crit = b.v_crit_2000 * std::sqrt(ks[ki] / 2000.0);
         report_states_k(r, es, kt, c, v_crit);
@@ -558,11 +557,7 @@ void report_eq9_windows(Result& r, const std::vector<Task>& tasks, const std::ve
             }
         }
     Table& tw = r.table("eq9_windows", "ṅ, Δv_y, σ_vx and speed over windows of eq9_window, every run");
-    tw.add("k_N", "N/m").values = wk;
-    tw.add("ndot", "1/s").values = wn;
-    tw.add("dvy", "m/s").values = wd;
-    tw.add("sigma_vx", "m/s").values = ws;
-    tw.add("v", "m/s").values = wv;
+    tw.add({{"k_N", "N/m", wk}, {"ndot", "1/s", wn}, {"dvy", "m/s", wd}, {"sigma_vx", "m/s", ws}, {"v", "m/s", wv}});
     const auto a = lx.size() >= 10 ? fit_power_law(lx, ly, 0, INFINITY) : PowerLawFit{NAN, NAN, 0};
     const auto c = ld.size() >= 10 ? fit_power_law(ld, lnd, 0, INFINITY) : PowerLawFit{NAN, NAN, 0};
     r.scalar("ndot_vs_sigma_vx_exponent", a.exponent, "1", "exponent of ṅ ∝ σ_vx^a over all windows");
@@ -572,15 +567,14 @@ void report_eq9_windows(Result& r, const std::vector<Task>& tasks, const std::ve
 
 void report_series(Result& r, const BistablePipeSpec& b, const std::vector<Task>& tasks, const std::vector<RunResult>& results) {
     for (std::size_t i = 0; i < tasks.size(); ++i) {
-        char name[96];
-        std::snprintf(name, sizeof name, "series_k%g_e%g_%s%s", tasks[i].k, tasks[i].e, tasks[i].fast ? "fast" : "slow",
-                      b.length_check > 0 && i + 1 == tasks.size() ? "_length_check" : "");
+        const bool length_check = b.length_check > 0 && i + 1 == tasks.size();
+        const std::string name = "series_k" + number_text(tasks[i].k) + "_e" + number_text(tasks[i].e) +
+                                 (tasks[i].fast ? "_fast" : "_slow") + (length_check ? "_length_check" : "");
         Table& ts = r.table(name, "mean velocity and rms v_x against time");
         ts.add("t", "s").values = results[i].t;
         std::vector<double> speed(results[i].v.size());
         for (std::size_t j = 0; j < speed.size(); ++j) speed[j] = -results[i].v[j];
-        ts.add("v_down", "m/s").values = speed;
-        ts.add("sigma_vx", "m/s").values = results[i].sx;
+        ts.add({{"v_down", "m/s", speed}, {"sigma_vx", "m/s", results[i].sx}});
     }
 }
 

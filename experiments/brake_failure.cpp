@@ -184,8 +184,7 @@ void report_head_on(Result& r, const ImpactShotSpec& s, const Sweep& w) {
 
 // Columns dvy<suffix>, dvx<suffix> and, with shear, dvy_shear<suffix> of a curve [m/s].
 void add_curve(Table& t, const Curve& c, const std::string& suffix, bool shear = false) {
-    t.add("dvy" + suffix, "m/s").values = c.dvy;
-    t.add("dvx" + suffix, "m/s").values = c.dvx;
+    t.add({{"dvy" + suffix, "m/s", c.dvy}, {"dvx" + suffix, "m/s", c.dvx}});
     if (shear) t.add("dvy_shear" + suffix, "m/s").values = c.dvy_shear;
 }
 
@@ -270,11 +269,8 @@ void report_collapse(Result& r, const BrakeFailureSpec& s, const Sweep& w, const
             dvy_scaled[i] = c.dvy[i] / sb;
             dvx_scaled[i] = c.dvx[i] / sb;
         }
-        t.add("vy_i", "m/s").values = v_raw;
-        t.add("dvy", "m/s").values = c.dvy;
-        t.add("vy_i_scaled", "m/s").values = w.vy;
-        t.add("dvy_scaled", "m/s").values = dvy_scaled;
-        t.add("dvx_scaled", "m/s").values = dvx_scaled;
+        t.add({{"vy_i", "m/s", v_raw}, {"dvy", "m/s", c.dvy}, {"vy_i_scaled", "m/s", w.vy},
+               {"dvy_scaled", "m/s", dvy_scaled}, {"dvx_scaled", "m/s", dvx_scaled}});
         r.scalar("collapse_max_rel_diff_" + label, max_relative_difference(dvy_scaled, curves[kFig3].dvy), "1",
                  "largest deviation of the √β-scaled curve from Fig. 3, relative to max Δv_y");
         const Peak pb = first_maximum(v_raw, c.dvy);

@@ -24,10 +24,12 @@
 // per-collision bookkeeping (1e8 collisions at paper scale).
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <gsl/gsl_statistics_double.h>
 #include <mutex>
 #include <optional>
 #include <string>
+#include <tuple>
 
 #include "analysis/curve_analysis.hpp"
 #include "core/rng_stream.hpp"
@@ -446,15 +448,9 @@ std::vector<double> fig10_table(Result& res, const Samples& st, double t0, doubl
         e18.push_back(theory::haff_energy_ratio(ts[i], t0));
         efrac.push_back(st.cns[i] > 0 ? st.ecns[i] / st.cns[i] : NAN);
     }
-    t.add("t", "s").values = ts;
-    t.add("K_over_K0", "1").values = kk;
-    t.add("eq18", "1").values = e18;
-    t.add("anisotropy", "1").values = an;
-    t.add("C_over_N", "1").values = st.cns;
-    t.add("elastic_C_over_N", "1").values = st.ecns;
-    t.add("elastic_fraction", "1").values = efrac;
-    t.add("own_interval_share", "1").values = st.fast_share;
-    t.add("hot_particles", "1").values = st.hot;
+    t.add({{"t", "s", ts}, {"K_over_K0", "1", kk}, {"eq18", "1", e18}, {"anisotropy", "1", an},
+           {"C_over_N", "1", st.cns}, {"elastic_C_over_N", "1", st.ecns}, {"elastic_fraction", "1", efrac},
+           {"own_interval_share", "1", st.fast_share}, {"hot_particles", "1", st.hot}});
     // Guide lines of Fig. 10(a): slope -2, the t >> t0 asymptote of Eq. (18), (t/t0)^-2; slope -1
     // through the geometric mean of the samples from late_slope_from on.
     double lsum = 0;
@@ -468,8 +464,7 @@ std::vector<double> fig10_table(Result& res, const Samples& st, double t0, doubl
         s2.push_back(ts[i] >= t0 ? (t0 / ts[i]) * (t0 / ts[i]) : NAN);
         s1.push_back(ts[i] >= 0.1 * late_from && lcount ? std::exp(lsum / lcount) / ts[i] : NAN);
     }
-    t.add("slope_minus2", "1").values = s2;
-    t.add("slope_minus1", "1").values = s1;
+    t.add({{"slope_minus2", "1", s2}, {"slope_minus1", "1", s1}});
     return kk;
 }
 
@@ -540,33 +535,28 @@ void fig10(Result& res, const ClusterSpec& s, double t0, const Samples& st, cons
 // Fig. 12, every instant: C/N, N_c statistics and the fits of Eqs. (20)-(22).
 void fig12_instants_table(Result& res, const std::vector<Instant>& instants) {
     Table& t = res.table("instants", "per instant t = t_base 2^k: C/N, N_c statistics and the fits of Eqs. (20)-(22)");
+    using I = Instant;
     auto col = [&](const char* name, const char* unit, auto get) {
         auto& c = t.add(name, unit);
-        for (const auto& in : instants) c.values.push_back(get(in));
+        for (const auto& in : instants) c.values.push_back(std::invoke(get, in));
     };
-    col("t", "s", [](const Instant& in) { return in.t; });
-    col("window", "s", [](const Instant& in) { return in.window; });
-    col("C_over_N", "1", [](const Instant& in) { return in.cn; });
-    col("elastic_C_over_N", "1", [](const Instant& in) { return in.elastic_cn; });
-    col("mean_Nc", "1/s", [](const Instant& in) { return in.mean_rate; });
-    col("sd_Nc", "1/s", [](const Instant& in) { return in.sd_rate; });
-    col("fast_particles", "1", [](const Instant& in) { return in.fast_fraction; });
-    col("tail_fraction", "1", [](const Instant& in) { return in.tail_fraction; });
-    col("chi", "1", [](const Instant& in) { return in.poisson.value; });
-    col("chi_err", "1", [](const Instant& in) { return in.poisson.error; });
-    col("chi2red_poisson", "1", [](const Instant& in) { return in.poisson.chi2_reduced; });
-    col("A", "1/s", [](const Instant& in) { return in.expo.value; });
-    col("A_err", "1/s", [](const Instant& in) { return in.expo.error; });
-    col("chi2red_exponential", "1", [](const Instant& in) { return in.expo.chi2_reduced; });
-    col("B", "1/s", [](const Instant& in) { return in.power.value; });
-    col("B_err", "1/s", [](const Instant& in) { return in.power.error; });
-    col("chi2red_powerlaw", "1", [](const Instant& in) { return in.power.chi2_reduced; });
-    col("tail_from", "1/s", [](const Instant& in) { return in.tail_lo; });
-    col("B_tail", "1/s", [](const Instant& in) { return in.power_tail.value; });
-    col("B_tail_err", "1/s", [](const Instant& in) { return in.power_tail.error; });
-    col("chi2red_powerlaw_tail", "1", [](const Instant& in) { return in.power_tail.chi2_reduced; });
-    col("A_tail", "1/s", [](const Instant& in) { return in.expo_tail.value; });
-    col("chi2red_exponential_tail", "1", [](const Instant& in) { return in.expo_tail.chi2_reduced; });
+    const std::vector<std::tuple<const char*, const char*, double I::*>> plain = {
+        {"t", "s", &I::t}, {"window", "s", &I::window}, {"C_over_N", "1", &I::cn},
+        {"elastic_C_over_N", "1", &I::elastic_cn}, {"mean_Nc", "1/s", &I::mean_rate}, {"sd_Nc", "1/s", &I::sd_rate},
+        {"fast_particles", "1", &I::fast_fraction}, {"tail_fraction", "1", &I::tail_fraction}};
+    for (const auto& [name, unit, f] : plain) col(name, unit, f);
+    // A fit's value, its error (err: that column's name, if any) and its reduced chi^2.
+    auto fit = [&](const char* name, const char* err, const char* chi2, CollisionRateFit I::*f, const char* unit) {
+        col(name, unit, [f](const Instant& in) { return (in.*f).value; });
+        if (err) col(err, unit, [f](const Instant& in) { return (in.*f).error; });
+        col(chi2, "1", [f](const Instant& in) { return (in.*f).chi2_reduced; });
+    };
+    fit("chi", "chi_err", "chi2red_poisson", &I::poisson, "1");
+    fit("A", "A_err", "chi2red_exponential", &I::expo, "1/s");
+    fit("B", "B_err", "chi2red_powerlaw", &I::power, "1/s");
+    col("tail_from", "1/s", &I::tail_lo);
+    fit("B_tail", "B_tail_err", "chi2red_powerlaw_tail", &I::power_tail, "1/s");
+    fit("A_tail", nullptr, "chi2red_exponential_tail", &I::expo_tail, "1/s");
     col("bins", "1", [](const Instant& in) { return double(in.hist.centres.size()); });
 }
 
@@ -602,14 +592,9 @@ void fig12_histogram_table(Result& res, const Instant& in, std::size_t panel) {
         pwt.push_back(tail ? model(in.power_tail) : NAN);
         pet.push_back(tail ? model(in.expo_tail) : NAN);
     }
-    h.add("N_c", "1/s").values = in.hist.centres;
-    h.add("P", "s").values = in.hist.density;
-    h.add("P_err", "s").values = in.hist.error;
-    h.add("poisson_eq20", "s").values = pp;
-    h.add("exponential_eq21", "s").values = pe;
-    h.add("powerlaw_eq22", "s").values = pw;
-    h.add("powerlaw_eq22_tail", "s").values = pwt;
-    h.add("exponential_eq21_tail", "s").values = pet;
+    h.add({{"N_c", "1/s", in.hist.centres}, {"P", "s", in.hist.density}, {"P_err", "s", in.hist.error},
+           {"poisson_eq20", "s", pp}, {"exponential_eq21", "s", pe}, {"powerlaw_eq22", "s", pw},
+           {"powerlaw_eq22_tail", "s", pwt}, {"exponential_eq21_tail", "s", pet}});
 }
 
 void fig12_panel_scalars(Result& res, const Instant& in, const std::string& tag) {
@@ -661,10 +646,7 @@ void fig12_panels(Result& res, const std::vector<Instant>& instants, const std::
     }
     // Created last: res.table() may move the tables created before.
     Table& meta = res.table("fig12_selection", "instants shown in Fig. 12: the paper's C/N and ours");
-    meta.add("paper_C_over_N", "1").values = mp;
-    meta.add("C_over_N", "1").values = mc;
-    meta.add("t", "s").values = mt;
-    meta.add("window", "s").values = mw;
+    meta.add({{"paper_C_over_N", "1", mp}, {"C_over_N", "1", mc}, {"t", "s", mt}, {"window", "s", mw}});
 }
 
 // From the first clustered snapshot on (C/N >= 70, Sec. 4.3): the smallest rank of the tenth
@@ -797,20 +779,15 @@ void fig11(Result& res, const std::vector<Instant>& instants, const ClusterSpec&
             x.push_back(q.x / s.d);
             y.push_back(q.y / s.d);
         }
-        sn.add("x_over_d", "1").values = std::move(x);
-        sn.add("y_over_d", "1").values = std::move(y);
-        sn.add("N_c", "1/s").values = in->rate;
+        sn.add({{"x_over_d", "1", x}, {"y_over_d", "1", y}, {"N_c", "1/s", in->rate}});
         const auto g = rate_by_density(*in, s.L(), s.cluster_cell * s.d, 10);
         top.push_back(double(std::max_element(g.begin(), g.end()) - g.begin() + 1));
         ratio.push_back(g.back() / in->mean_rate);
     }
     Table& meta = res.table("fig11_selection", "instants of the snapshots, the common colour range, and N_c in the densest tenth");
-    meta.add("t", "s").values = mt;
-    meta.add("C_over_N", "1").values = mc;
-    meta.add("Nc_colour_lo", "1/s").values = std::vector<double>(mt.size(), lo);
-    meta.add("Nc_colour_hi", "1/s").values = std::vector<double>(mt.size(), hi);
-    meta.add("densest_tenth_with_max_Nc", "1").values = top;
-    meta.add("densest_tenth_Nc_over_mean", "1").values = ratio;
+    meta.add({{"t", "s", mt}, {"C_over_N", "1", mc}, {"Nc_colour_lo", "1/s", std::vector<double>(mt.size(), lo)},
+              {"Nc_colour_hi", "1/s", std::vector<double>(mt.size(), hi)}, {"densest_tenth_with_max_Nc", "1", top},
+              {"densest_tenth_Nc_over_mean", "1", ratio}});
     report_cluster_centres(res, mt, mc, top, ratio);
 }
 

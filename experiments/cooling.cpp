@@ -118,19 +118,13 @@ void validate(const ParameterSet& p) {
 // g(r/d) with its counting error, and S(k), at one snapshot time.
 struct Snapshot {
     std::vector<double> g, g_err, S;
-    template <class V>
-    void fields(V&& v) {
-        v("g", g), v("g_err", g_err), v("S", S);
-    }
+    template <class V> void fields(V&& v) { v("g", g), v("g_err", g_err), v("S", S); }
 };
 
 // The counts per b/d bin of one P(b/d) time window.
 struct WindowCounts {
     std::vector<std::uint64_t> bins;
-    template <class V>
-    void fields(V&& v) {
-        v("bins", bins);
-    }
+    template <class V> void fields(V&& v) { v("bins", bins); }
 };
 
 // What one method (ED or DSMC) produced from one initial state. fields() lists what a run carries
@@ -558,9 +552,7 @@ void add_seed_tables(Result& res, const std::vector<Trace>& trs, const std::vect
             for (std::size_t i = 0; i < tr.snaps.size(); ++i) t.add("S_t" + number_text(snaps[i]), "1").values = tr.snaps[i].S;
         }
         Table& e = res.table(std::string("energy_") + name + "_seed" + std::to_string(k), std::string("K/K0 against t, seed index ") + std::to_string(k) + ", " + name);
-        e.add("t", "s").values = tr.t;
-        e.add("K_over_K0", "1").values = k_ratio(tr);
-        e.add("C_over_N", "1").values = tr.cn;
+        e.add({{"t", "s", tr.t}, {"K_over_K0", "1", k_ratio(tr)}, {"C_over_N", "1", tr.cn}});
     }
 }
 
@@ -624,17 +616,10 @@ void add_energy_table(Result& res, const Trace& tr, double t0, const char* name)
         for (double x : v) out.push_back(x / by);
         return out;
     };
-    t.add("t", "s").values = tr.t;
-    t.add("t_over_t0", "1").values = over_by(tr.t, t0);
-    t.add("K_over_K0", "1").values = k_ratio(tr);
-    t.add("Kx_over_K0", "1").values = over_by(tr.kx, k0);
-    t.add("Ky_over_K0", "1").values = over_by(tr.ky, k0);
-    t.add("Krot_over_K0", "1").values = over_by(tr.krot, k0);
-    t.add("eq18", "1").values = eq18_curve(tr, t0);
-    t.add("C_over_N", "1").values = tr.cn;
-    t.add("elastic_C_over_N", "1").values = tr.elastic_cn;
-    t.add("a2", "1").values = tr.a2;
-    t.add("a2_err", "1").values = tr.a2_err;
+    t.add({{"t", "s", tr.t}, {"t_over_t0", "1", over_by(tr.t, t0)}, {"K_over_K0", "1", k_ratio(tr)},
+           {"Kx_over_K0", "1", over_by(tr.kx, k0)}, {"Ky_over_K0", "1", over_by(tr.ky, k0)},
+           {"Krot_over_K0", "1", over_by(tr.krot, k0)}, {"eq18", "1", eq18_curve(tr, t0)}, {"C_over_N", "1", tr.cn},
+           {"elastic_C_over_N", "1", tr.elastic_cn}, {"a2", "1", tr.a2}, {"a2_err", "1", tr.a2_err}});
 }
 
 // Fig. 2, ED against kinetic theory: early cooling (Eq. 18, the Enskog rate), where K(t) departs
@@ -667,10 +652,8 @@ void add_impact_parameter(Result& res, const Trace& ed) {
     {
         Table& t = res.table("impact_parameter_ed", "P(b/d) of the ED run per time window (columns by window start)");
         t.add("b_over_d", "1").values = ed.pbd_centres;
-        for (const auto& w : ed.pbd) {
-            t.add("P_t" + number_text(w.t_begin), "1").values = w.p;
-            t.add("err_t" + number_text(w.t_begin), "1").values = w.error;
-        }
+        for (const auto& w : ed.pbd)
+            t.add({{"P_t" + number_text(w.t_begin), "1", w.p}, {"err_t" + number_text(w.t_begin), "1", w.error}});
     }
     Table& wt = res.table("impact_parameter_windows", "time windows of P(b/d): [t_begin, t_end)");
     std::vector<double> b, e;
@@ -678,8 +661,7 @@ void add_impact_parameter(Result& res, const Trace& ed) {
         b.push_back(w.t_begin);
         e.push_back(w.t_end);
     }
-    wt.add("t_begin", "s").values = b;
-    wt.add("t_end", "s").values = e;
+    wt.add({{"t_begin", "s", b}, {"t_end", "s", e}});
     res.scalar("pbd_grazing_ratio_first", grazing_ratio(ed.pbd.front(), ed.pbd_centres), "1", "P(b/d>0.8)/P(b/d<0.2), first window, ED");
     res.scalar("pbd_grazing_ratio_last", grazing_ratio(ed.pbd.back(), ed.pbd_centres), "1", "P(b/d>0.8)/P(b/d<0.2), last window, ED");
     res.scalar("pbd_collisions_first", double(ed.pbd.front().total), "1", "collisions in the first window");
@@ -808,12 +790,8 @@ void add_sk_agreement(Result& res, const std::vector<Trace>& eds, const std::vec
         if (i20) m_20.push_back(mean_log_ratio(b.snaps[*i20].S, a.snaps[*i20].S, a.S_k, k_small));
     }
     Table& t = res.table("sk_seeds", "per seed: mean S(1 <= k <= sk_k_max) of ED and DSMC at 20 s and at the last snapshot, and the mean ln ratio");
-    t.add("seed_index", "1").values = idx;
-    t.add("S_ed_20s", "1").values = e20;
-    t.add("S_ed_last", "1").values = elast;
-    t.add("S_dsmc_20s", "1").values = d20;
-    t.add("S_dsmc_last", "1").values = dlast;
-    t.add("mean_ln_ratio_last", "1").values = m_last;
+    t.add({{"seed_index", "1", idx}, {"S_ed_20s", "1", e20}, {"S_ed_last", "1", elast}, {"S_dsmc_20s", "1", d20},
+           {"S_dsmc_last", "1", dlast}, {"mean_ln_ratio_last", "1", m_last}});
     add_mean_sd(res, "Sk_dsmc_over_ed_log", m_last, "ln(S_DSMC/S_ED) averaged over 1 <= k <= sk_k_max at the last snapshot, mean over seeds");
     res.scalar("Sk_dsmc_over_ed_factor", std::exp(mean_sd(m_last)[0]), "1", "exp of Sk_dsmc_over_ed_log: DSMC's S(k <= sk_k_max) in units of ED's");
     if (!m_20.empty()) add_mean_sd(res, "Sk_dsmc_over_ed_log_20s", m_20, "the same at t = 20 s");

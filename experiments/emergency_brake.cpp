@@ -159,12 +159,8 @@ void report_series(Result& r, const std::vector<double>& vy, const Series& se, c
         return c;
     };
     const auto dvy = column(&Point::dvy), cont = column(&Point::contacts), back = column(&Point::vx_return);
-    t.add("vy_i", "m/s").values = vy;
-    t.add("dvy", "m/s").values = dvy;
-    t.add("dvy_sem", "m/s").values = column(&Point::dvy_sem);
-    t.add("contacts", "1").values = cont;
-    t.add("multi_fraction", "1").values = column(&Point::multi_fraction);
-    t.add("vx_return", "1").values = back;
+    t.add({{"vy_i", "m/s", vy}, {"dvy", "m/s", dvy}, {"dvy_sem", "m/s", column(&Point::dvy_sem)},
+           {"contacts", "1", cont}, {"multi_fraction", "1", column(&Point::multi_fraction)}, {"vx_return", "1", back}});
 
     const Peak pk = first_maximum(vy, dvy);
     std::size_t imin = std::size_t(std::max(pk.index, 0));

@@ -32,24 +32,7 @@
 #include "scenarios/hard_sphere_lattice.hpp"
 #include "theory/kinetic_theory.hpp"
 
-namespace granrepro {
-
-// A stress cell's JSON form (io/json_fields.hpp), what Fig. 5 and the eddy cores use: eigenvalues,
-// axes, collisions, the total stress (pressure).
-nlohmann::json to_json_value(const CollisionalStress::Cell& c) {
-    const auto v = [](double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr); };
-    return {v(c.sigma_min), v(c.sigma_max), v(c.axis_min.x()), v(c.axis_min.y()), v(c.axis_max.x()), v(c.axis_max.y()),
-            c.collisions, v(c.total(0, 0)), v(c.total(0, 1)), v(c.total(1, 0)), v(c.total(1, 1))};
-}
-void from_json_value(const nlohmann::json& j, CollisionalStress::Cell& c) {
-    double* x[] = {&c.sigma_min, &c.sigma_max, &c.axis_min.x(), &c.axis_min.y(), &c.axis_max.x(), &c.axis_max.y(),
-                   nullptr, &c.total(0, 0), &c.total(0, 1), &c.total(1, 0), &c.total(1, 1)};
-    for (std::size_t k = 0; k < 11; ++k)
-        if (x[k]) *x[k] = j.at(k).is_null() ? NAN : j.at(k).get<double>();
-    c.collisions = j.at(6);
-}
-
-namespace experiments {
+namespace granrepro::experiments {
 
 namespace {
 
@@ -444,8 +427,7 @@ void fig4_inelastic(Result& res, const ImpactSpec& s, const std::vector<PointRes
             const Histogram h = normalise(c);
             const Ratio ra = grazing_ratio(c);
             const std::string sfx = late ? "late_" : "", when = late ? "last window" : "whole run";
-            t4.add("P_" + sfx + lb, "1").values = h.p;
-            t4.add("err_" + sfx + lb, "1").values = h.err;
+            t4.add({{"P_" + sfx + lb, "1", h.p}, {"err_" + sfx + lb, "1", h.err}});
             res.scalar("collisions_" + sfx + lb, static_cast<double>(h.total), "1",
                        late ? "pair collisions in the last window, all seeds" : "pair collisions 0 <= t < t_end, all seeds");
             res.scalar("chi2_dof_" + sfx + lb, chi2_per_dof(c), "1", "chi^2 per dof of P(b/d) against 1, " + when);
@@ -474,8 +456,7 @@ void fig4_windows(Result& res, const ImpactSpec& s, const std::vector<PointResul
             const auto c = merged(s, pts, k, w, w + 1);
             const Histogram h = normalise(c);
             const std::string wl = label("t", edges[w], "%g") + label("-", edges[w + 1], "%g");
-            tw.add("P_" + wl, "1").values = h.p;
-            tw.add("err_" + wl, "1").values = h.err;
+            tw.add({{"P_" + wl, "1", h.p}, {"err_" + wl, "1", h.err}});
             res.scalar("grazing_ratio_" + lb + "_" + wl, grazing_ratio(c).value, "1",
                        "P(b/d > 0.8) / P(b/d < 0.2) in that window");
         }
@@ -491,8 +472,7 @@ void fig4_elastic(Result& res, const ImpactSpec& s, const std::vector<PointResul
         const std::string lb = label("rho", s.elastic_densities[j], "%g");
         const auto c = merged(s, pts, s.n_r() + j, 0, 1);
         const Histogram h = normalise(c);
-        te.add("P_" + lb, "1").values = h.p;
-        te.add("err_" + lb, "1").values = h.err;
+        te.add({{"P_" + lb, "1", h.p}, {"err_" + lb, "1", h.err}});
         const double chi = chi2_per_dof(c);
         worst_chi2 = std::max(worst_chi2, chi);
         res.scalar("elastic_chi2_dof_" + lb, chi, "1", "chi^2 per dof of P(b/d) against 1 at r = 1");
@@ -516,8 +496,7 @@ void fig4_elastic_3d(Result& res, const ImpactSpec& s, const std::vector<PointRe
         const std::string lb = label("eta", s.elastic3d_packing[k], "%g");
         const auto& c3 = pts[s.n_2d() + k].counts[0];
         const Histogram h = normalise(c3);
-        t3.add("P_" + lb, "1").values = h.p;
-        t3.add("err_" + lb, "1").values = h.err;
+        t3.add({{"P_" + lb, "1", h.p}, {"err_" + lb, "1", h.err}});
         // chi^2 against a density f on [0, 1] with exact bin integrals; dof = bins - 1.
         auto chi2 = [&](auto cdf) {
             const double tot = static_cast<double>(h.total);
@@ -601,11 +580,8 @@ void fig5_panels(Result& res, const ImpactSpec& s, const std::vector<PointResult
         res.scalar("sigma_max_mean_" + lb, seed_sum(s, pts, k, &PointResult::sigma_max) / ns, "N/m", "sigma_max averaged over seeds");
     }
     Table& tm = res.table("fig5_meta", "per panel: r, box side, arrow scale, sigma_max, rms speed at t_end");
-    tm.add("r", "1").values = s.restitutions;
-    tm.add("box_over_d", "1").values = std::vector<double>(s.n_r(), l / s.d);
-    tm.add("sigma_max", "N/m").values = sig_max;
-    tm.add("v_rms", "m/s").values = v_rms;
-    tm.add("arrow_tau", "s").values = taus;
+    tm.add({{"r", "1", s.restitutions}, {"box_over_d", "1", std::vector<double>(s.n_r(), l / s.d)},
+            {"sigma_max", "N/m", sig_max}, {"v_rms", "m/s", v_rms}, {"arrow_tau", "s", taus}});
 }
 
 long find_r(const std::vector<double>& rs, double r) {
@@ -706,8 +682,7 @@ void cooling_curves(Result& res, const ImpactSpec& s, const std::vector<PointRes
             kk.push_back(pts[k].k_val[i] / pts[k].k0);
             haff.push_back(std::pow(1.0 + pts[k].k_t[i] / t0h, -2.0));
         }
-        tk.add("K_over_K0_" + lb, "1").values = kk;
-        tk.add("haff_" + lb, "1").values = haff;
+        tk.add({{"K_over_K0_" + lb, "1", kk}, {"haff_" + lb, "1", haff}});
         res.scalar("haff_t0_" + lb, t0h, "s", "t0 of Eq. (19) at rho, r and vbar");
     }
 }
@@ -738,5 +713,4 @@ Result run(const RunContext& ctx) {
 
 Experiment impact_parameter() { return {"impact-parameter", &validate, &run}; }
 
-} // namespace experiments
-} // namespace granrepro
+} // namespace granrepro::experiments

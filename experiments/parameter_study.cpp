@@ -300,12 +300,8 @@ void report_seed0(Result& res, const Trace& tr, const Point& pt, const std::stri
         an.push_back((tr.kx[i] - tr.ky[i]) / (tr.kx[i] + tr.ky[i]));
         line.push_back(std::exp(-c_th * tr.cn[i]));
     }
-    t.add("t", "s").values = tr.t;
-    t.add("C_over_N", "1").values = tr.cn;
-    t.add("elastic_C_over_N", "1").values = tr.elastic_cn;
-    t.add("K_over_K0", "1").values = kk;
-    t.add("anisotropy", "1").values = an;
-    t.add("exp_line", "1").values = line;
+    t.add({{"t", "s", tr.t}, {"C_over_N", "1", tr.cn}, {"elastic_C_over_N", "1", tr.elastic_cn}, {"K_over_K0", "1", kk},
+           {"anisotropy", "1", an}, {"exp_line", "1", line}});
 }
 
 // Every point's seed 0 and its seed means against C/N (on cn_grid) and against t.
@@ -313,8 +309,7 @@ void report_points(Result& res, Sweep& sw, const std::vector<double>& cn_grid) {
     auto mean_table = [&](const std::string& name, const char* against, const char* x, const char* unit, const MeanCurve& m) {
         Table& t = res.table(name, std::string("log10(K/K0) against ") + against + ", mean and standard error over the seeds");
         t.add(x, unit).values = m.x;
-        t.add("log10_K_over_K0", "1").values = m.mean;
-        t.add("log10_K_over_K0_sem", "1").values = m.sem;
+        t.add({{"log10_K_over_K0", "1", m.mean}, {"log10_K_over_K0_sem", "1", m.sem}});
     };
     for (std::size_t k = 0; k < sw.points.size(); ++k) {
         const Point& pt = sw.points[k];

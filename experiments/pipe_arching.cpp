@@ -789,10 +789,7 @@ void report_fig14_times(Result& res, const PipeArchingSpec& s, const std::vector
         res.scalar(what + "err_" + tlabel(t), e0.back(), "1/s", "its standard error");
         res.scalar(what + tlabel(t) + "_median_seeds", med.back(), "1/s", eq + " fit at this time alone, median over seeds");
     }
-    pt.add("t", "s").values = tt;
-    pt.add("run0", "1/s").values = v0;
-    pt.add("run0_err", "1/s").values = e0;
-    pt.add("median_seeds", "1/s").values = med;
+    pt.add({{"t", "s", tt}, {"run0", "1/s", v0}, {"run0_err", "1/s", e0}, {"median_seeds", "1/s", med}});
 }
 
 // Fig. 14 pooled: Eqs. (21), (22) over each panel's four times, run 0 and over seeds (the
@@ -839,8 +836,7 @@ void report_fig14_fits(Result& res, const PipeArchingSpec& s, const std::vector<
         {"A", median_finite(As)}, {"A_sem", a.sem}, {"A_run0", f0.A}, {"A_run0_err", f0.A_err},
         {"B", median_finite(Bs)}, {"B_sem", b.sem}, {"B_run0", f0.B}, {"B_run0_err", f0.B_err}};
     for (const auto& [name, x] : cols) ft.add(name, "1/s").values = {x};
-    ft.add("seeds", "1").values = {double(runs.size())};
-    ft.add("dist_dt", "s").values = {ddt};
+    ft.add({{"seeds", "1", {double(runs.size())}}, {"dist_dt", "s", {ddt}}});
     res.scalar("exp_over_pow_deviance_before", median_finite(ratio_early), "1",
                "deviance of Eq. (21) over that of Eq. (22), Fig. 14(a) times, median over seeds (< 1: exponential fits better)");
     res.scalar("exp_over_pow_deviance_after", median_finite(ratio_late), "1",
@@ -880,8 +876,7 @@ void report_arch_times(Result& res, const std::vector<SeedRun>& runs) {
     std::sort(tt.begin(), tt.end());
     for (std::size_t k = 0; k < tt.size(); ++k) fr.push_back(double(k + 1) / double(ta.size()));
     Table& cd = res.table("arch_time_cdf", "fraction of seeds with an arch by time t");
-    cd.add("t_arch", "s").values = tt;
-    cd.add("fraction", "1").values = fr;
+    cd.add({{"t_arch", "s", tt}, {"fraction", "1", fr}});
     auto quartiles = [&](const std::string& name, const std::vector<double>& v, const std::string& what) {
         res.scalar(name + "_q25", censored_quantile(v, 0.25), "s", what + ", lower quartile over seeds (none = +inf)");
         res.scalar(name + "_median", censored_quantile(v, 0.5), "s", what + ", median over seeds");

@@ -1,6 +1,7 @@
 // What an experiment hands back: tables of columns (curves) and named scalars, each with units.
 // The writer turns them into data.h5, summary.json and the tab-separated files gnuplot reads.
 #pragma once
+#include <initializer_list>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -21,6 +22,14 @@ struct Table {
     Column& add(std::string name, std::string unit) {
         columns.push_back({std::move(name), std::move(unit), {}});
         return columns.back();
+    }
+    // Several columns at once, in order: t.add({{"t", "s", times}, {"K", "J", energies}}).
+    struct Values {
+        std::string name, unit;
+        const std::vector<double>& values;
+    };
+    void add(std::initializer_list<Values> cols) {
+        for (const Values& c : cols) add(c.name, c.unit).values = c.values;
     }
 };
 

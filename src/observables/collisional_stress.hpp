@@ -46,6 +46,14 @@ public:
         Eigen::Vector2d axis_max = Eigen::Vector2d::UnitY(); // unit eigenvector of sigma_max
         std::size_t collisions = 0; // collisions attributed to the cell
         double pressure() const { return -0.5 * total.trace(); } // [N/m]
+        // What a sweep point keeps of a cell (Fig. 5 and the eddy cores): eigenvalues, axes,
+        // collisions, the total stress (pressure).
+        template <class V> void fields(V&& v) {
+            v("sigma_min", sigma_min); v("sigma_max", sigma_max); v("collisions", collisions);
+            v("axis_min_x", axis_min.x()); v("axis_min_y", axis_min.y()); v("axis_max_x", axis_max.x());
+            v("axis_max_y", axis_max.y()); v("total_xx", total(0, 0)); v("total_xy", total(0, 1));
+            v("total_yx", total(1, 0)); v("total_yy", total(1, 1));
+        }
     };
 
     // Grid of nx * ny cells over [x0, x0+Lx) x [y0, y0+Ly) [m]; window [t_begin, t_end) [s].
