@@ -273,9 +273,7 @@ nlohmann::json claims_to_json(const std::vector<ClaimResult>& results) {
 }
 
 bool all_pass(const std::vector<ClaimResult>& results) {
-    for (const auto& r : results)
-        if (r.verdict == Verdict::Fail) return false;
-    return true;
+    return std::none_of(results.begin(), results.end(), [](const auto& r) { return r.verdict == Verdict::Fail; });
 }
 
 } // namespace granrepro

@@ -106,8 +106,7 @@ std::string utc_now() {
 void write_result_h5(const std::filesystem::path& file, const Provenance& prov, const ParameterSet& params,
                      const Result& result) {
     H5File f = H5File::create(file.string());
-    f.attr("schema", std::string("granrepro-result"));
-    f.attr("schema_version", 1L);
+    f.stamp_schema("granrepro-result", 1);
     f.attr("experiment", prov.experiment);
     f.attr("paper", prov.paper);
     f.attr("scale", std::string(to_string(prov.scale)));
