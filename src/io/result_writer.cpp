@@ -1,9 +1,7 @@
 #include "io/result_writer.hpp"
 
-#include <chrono>
 #include <cmath>
 #include <ctime>
-#include <fstream>
 #include <iomanip>
 #include <sstream>
 
