@@ -32,9 +32,8 @@ namespace granrepro {
 const Experiment& find_experiment(const std::string& name) {
     for (const auto& e : experiment_registry())
         if (e.name == name) return e;
-    std::string known;
-    for (const auto& e : experiment_registry()) known += (known.empty() ? "" : ", ") + e.name;
-    throw InputError("unknown experiment '" + name + "'; known: " + known);
+    throw InputError("unknown experiment '" + name + "'; known: " +
+                     joined(experiment_registry(), [](const auto& e) { return e.name; }));
 }
 
 ExperimentInfo experiment_info(const std::string& name) {
@@ -335,10 +334,8 @@ int check_all(const fs::path& out, const CheckOptions& opt) {
     std::printf("totals: %s\n", totals.text().c_str());
     std::fflush(stdout);
     if (!missing.empty()) {
-        std::string names;
-        for (const auto& m : missing) names += (names.empty() ? "" : ", ") + m;
         std::fprintf(stderr, "granrepro: check --all: no results in %s for %zu experiment%s: %s%s\n", out.c_str(),
-                     missing.size(), missing.size() == 1 ? "" : "s", names.c_str(),
+                     missing.size(), missing.size() == 1 ? "" : "s", joined(missing).c_str(),
                      opt.missing_ok ? " (--missing-ok: not a failure)" : " (run them first)");
         if (!opt.missing_ok) rc = 1;
     }
@@ -364,18 +361,16 @@ int export_experiment(const std::string& name, const fs::path& out, const fs::pa
     }
     fs::rename(tmp, dest / "data.h5");
     write_file_atomically(dest / "summary.json", read_file(from / "summary.json"));
-    std::string list;
-    for (const auto& o : omitted) list += (list.empty() ? "" : ", ") + o;
     std::printf("export %s: %s -> %s (%.0f kB data.h5%s%s)\n", name.c_str(), from.c_str(), dest.c_str(),
-                double(fs::file_size(dest / "data.h5")) / 1024.0, omitted.empty() ? "" : "; left out: ", list.c_str());
+                double(fs::file_size(dest / "data.h5")) / 1024.0, omitted.empty() ? "" : "; left out: ",
+                joined(omitted).c_str());
     return 0;
 }
 
 int plot_experiment(const std::string& name, const fs::path& out, const std::vector<std::string>& figures,
                     bool strict) {
     const ExperimentInfo info = experiment_info(name);
-    std::string known;
-    for (const auto& f : info.figures) known += (known.empty() ? "" : ", ") + f.id;
+    const std::string known = joined(info.figures, [](const auto& f) { return f.id; });
     for (const auto& id : figures)
         if (!makes(info, id))
             throw InputError("--figure " + id + " is not made by experiment " + name + "; it makes " + known);
