@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "core/input_error.hpp"
+#include "data/parameter_set.hpp"
 #include "bench/hard_disk_bench.hpp"
 #include "bench/impact_bench.hpp"
 #include "bench/memory_latency.hpp"
@@ -95,9 +96,7 @@ const Target kTargets[] = {
 } // namespace
 
 std::string bench_targets() {
-    std::string s;
-    for (const auto& t : kTargets) s += (s.empty() ? "" : ", ") + std::string(t.name);
-    return s;
+    return joined(kTargets, [](const Target& t) { return t.name; });
 }
 
 int run_bench(const std::string& name, const BenchOptions& opt) {

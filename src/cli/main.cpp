@@ -4,6 +4,7 @@
 // results), 2 bad input, 3 results could not be written (disk full, I/O error; the previous
 // results are untouched), 130/143 interrupted by SIGINT/SIGTERM (core/interrupt.hpp).
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
@@ -380,17 +381,12 @@ static int run_main(int argc, char** argv) {
     });
 
     // An unknown subcommand gets the list of known ones, in one line.
-    if (argc > 1 && argv[1][0] != '-') {
-        bool known = false;
-        std::string names;
-        for (const auto* s : app.get_subcommands([](CLI::App*) { return true; })) {
-            known = known || s->get_name() == argv[1];
-            names += (names.empty() ? "" : ", ") + s->get_name();
-        }
-        if (!known) {
-            std::fprintf(stderr, "granrepro: unknown subcommand '%s'; known: %s\n", argv[1], names.c_str());
-            return 2;
-        }
+    const auto subcommands = app.get_subcommands([](CLI::App*) { return true; });
+    auto named = [](const CLI::App* s) { return s->get_name(); };
+    if (argc > 1 && argv[1][0] != '-' &&
+        std::none_of(subcommands.begin(), subcommands.end(), [&](const CLI::App* s) { return named(s) == argv[1]; })) {
+        std::fprintf(stderr, "granrepro: unknown subcommand '%s'; known: %s\n", argv[1], joined(subcommands, named).c_str());
+        return 2;
     }
 
     try {

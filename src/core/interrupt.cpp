@@ -64,8 +64,6 @@ void install_interrupt_handling() {
 }
 
 bool interrupt_requested() { return g_signal.load(std::memory_order_relaxed) != 0; }
-int interrupt_signal() { return g_signal.load(); }
-std::string interrupt_signal_name() { return name_of(g_signal.load()); }
 
 void throw_if_interrupted(const std::string& detail) {
     if (const int sig = g_signal.load(); sig != 0)

@@ -32,8 +32,6 @@ private:
 
 void install_interrupt_handling();
 bool interrupt_requested();
-int interrupt_signal();   // 0 if none
-std::string interrupt_signal_name(); // "SIGINT", "SIGTERM"
 // Throws Interrupted("interrupted by SIG...<detail>") if a signal arrived.
 void throw_if_interrupted(const std::string& detail = "");
 

@@ -16,28 +16,27 @@ std::string trim(const std::string& s) {
     const auto b = s.find_last_not_of(" \t");
     return s.substr(a, b - a + 1);
 }
-} // namespace
 
-bool parse_double(const std::string& in, double& out) {
+// The whole trimmed text as one number that `strto` reads in range (not NaN); `out` is kept otherwise.
+template <class T, class Strto>
+bool parse_whole(const std::string& in, T& out, Strto strto) {
     const std::string s = trim(in);
     if (s.empty()) return false;
     errno = 0;
     char* end = nullptr;
-    const double v = std::strtod(s.c_str(), &end);
-    if (end != s.c_str() + s.size() || errno == ERANGE || std::isnan(v)) return false;
+    const T v = strto(s.c_str(), &end);
+    if (end != s.c_str() + s.size() || errno == ERANGE || std::isnan(double(v))) return false;
     out = v;
     return true;
 }
+} // namespace
+
+bool parse_double(const std::string& in, double& out) {
+    return parse_whole(in, out, [](const char* s, char** end) { return std::strtod(s, end); });
+}
 
 bool parse_long(const std::string& in, long& out) {
-    const std::string s = trim(in);
-    if (s.empty()) return false;
-    errno = 0;
-    char* end = nullptr;
-    const long v = std::strtol(s.c_str(), &end, 10);
-    if (end != s.c_str() + s.size() || errno == ERANGE) return false;
-    out = v;
-    return true;
+    return parse_whole(in, out, [](const char* s, char** end) { return std::strtol(s, end, 10); });
 }
 
 Interval Interval::parse(const std::string& text) {

@@ -244,11 +244,9 @@ void ParameterSet::set(const std::string& assignment) {
     const std::string name = assignment.substr(0, eq);
     const std::string value = assignment.substr(eq + 1);
     auto it = std::find_if(params_.begin(), params_.end(), [&](const Parameter& p) { return p.name == name; });
-    if (it == params_.end()) {
-        std::string known;
-        for (const auto& p : params_) known += (known.empty() ? "" : ", ") + p.name;
-        throw InputError("--set " + name + ": unknown parameter; this experiment has: " + known);
-    }
+    if (it == params_.end())
+        throw InputError("--set " + name + ": unknown parameter; this experiment has: " +
+                         joined(params_, [](const Parameter& p) { return p.name; }));
     if (!assign(*it, value))
         throw InputError("--set " + name + "=" + value + ": " + name + " must be " + it->allowed_text());
     it->overridden = true;

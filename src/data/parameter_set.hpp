@@ -4,6 +4,7 @@
 // the resolved set is written into every output file.
 #pragma once
 #include <filesystem>
+#include <functional>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -17,6 +18,13 @@ const char* to_string(Scale s);
 // A number in messages: %g-like with `precision` significant digits, never 300 digits ("1e+308", "0.00083").
 std::string number_text(double x, int precision = 6);
 Scale parse_scale(const std::string& s); // throws InputError
+// "a, b, c": name(x) of every x, as messages list what is known or missing.
+template <class Range, class Name = std::identity>
+std::string joined(const Range& xs, Name name = {}) {
+    std::string out;
+    for (const auto& x : xs) out += (out.empty() ? "" : ", ") + std::string(name(x));
+    return out;
+}
 
 struct Parameter {
     enum class Kind { Real, Integer, Text, Flag, RealList };

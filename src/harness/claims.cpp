@@ -27,12 +27,6 @@ const std::string kClaimKeys[] = {"id",     "statement", "source",           "me
                                   "rel_tol", "abs_tol",  "min",              "max",             "tolerance_reason",
                                   "scales", "known_deviation", "deviation_band", "deviation_band_reason"};
 
-std::string claim_keys_text() {
-    std::string out;
-    for (const auto& k : kClaimKeys) out += (out.empty() ? "" : ", ") + k;
-    return out;
-}
-
 double number(const toml::value& v) {
     if (v.is_integer()) return double(v.as_integer());
     return toml::get<double>(v);
@@ -98,7 +92,8 @@ std::vector<Claim> load_claims(const std::filesystem::path& file, const std::str
             const std::string claim_where = where + ": claim " + k.id;
             for (const auto& [key, v] : c.as_table())
                 if (!std::count(std::begin(kClaimKeys), std::end(kClaimKeys), key))
-                    throw InputError(claim_where + line(v) + ": unknown key '" + key + "'; allowed: " + claim_keys_text());
+                    throw InputError(claim_where + line(v) + ": unknown key '" + key + "'; allowed: " +
+                                     joined(kClaimKeys));
             for (const auto& earlier : claims)
                 if (earlier.id == k.id) throw InputError(claim_where + line(c) + ": claim id given twice");
             k.statement = toml::find<std::string>(c, "statement");
@@ -273,9 +268,7 @@ nlohmann::json claims_to_json(const std::vector<ClaimResult>& results) {
 }
 
 bool all_pass(const std::vector<ClaimResult>& results) {
-    for (const auto& r : results)
-        if (r.verdict == Verdict::Fail) return false;
-    return true;
+    return std::none_of(results.begin(), results.end(), [](const auto& r) { return r.verdict == Verdict::Fail; });
 }
 
 } // namespace granrepro

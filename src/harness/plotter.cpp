@@ -16,13 +16,6 @@ namespace {
 
 const char* const kHashTag = "# granrepro-emitted-hash: ";
 
-std::string read_file(const std::filesystem::path& p) {
-    std::ifstream in(p);
-    std::stringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
-}
-
 // Stable across toolchains (std::hash is not); it detects edits, it does not guard against forgery.
 std::string fnv1a_hex(const std::string& text) { return hex64(fnv1a64(text)); }
 

@@ -27,10 +27,7 @@ std::mutex& h5_mutex() {
 } // namespace
 
 std::string checkpoint_fingerprint(const RunContext& ctx) {
-    nlohmann::json j;
-    j["parameters"] = ctx.params.to_json();
-    j["scale"] = to_string(ctx.scale);
-    j["seed"] = ctx.seed;
+    const nlohmann::json j = {{"parameters", ctx.params.to_json()}, {"scale", to_string(ctx.scale)}, {"seed", ctx.seed}};
     return hex64(fnv1a64(j.dump())); // nlohmann::json keeps object keys sorted: canonical text
 }
 

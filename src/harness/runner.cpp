@@ -32,9 +32,8 @@ namespace granrepro {
 const Experiment& find_experiment(const std::string& name) {
     for (const auto& e : experiment_registry())
         if (e.name == name) return e;
-    std::string known;
-    for (const auto& e : experiment_registry()) known += (known.empty() ? "" : ", ") + e.name;
-    throw InputError("unknown experiment '" + name + "'; known: " + known);
+    throw InputError("unknown experiment '" + name + "'; known: " +
+                     joined(experiment_registry(), [](const auto& e) { return e.name; }));
 }
 
 ExperimentInfo experiment_info(const std::string& name) {
@@ -61,12 +60,6 @@ ParameterSet resolve_parameters(const std::string& name, const RunOptions& opt) 
 }
 
 namespace {
-std::string read_text(const fs::path& p) {
-    std::ifstream in(p);
-    std::stringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
-}
 fs::path expected_file(const std::string& name) { return project_root() / "expected" / (name + ".toml"); }
 bool makes(const ExperimentInfo& info, const std::string& figure) {
     return std::any_of(info.figures.begin(), info.figures.end(), [&](const auto& f) { return f.id == figure; });
@@ -94,7 +87,7 @@ std::string json_kind(const nlohmann::json& j) {
 }
 
 nlohmann::json read_summary(const fs::path& file, const std::string& name) {
-    nlohmann::json j = nlohmann::json::parse(read_text(file), nullptr, false);
+    nlohmann::json j = nlohmann::json::parse(read_file(file), nullptr, false);
     if (j.is_discarded())
         throw InputError(file.string() + ": not valid JSON (a damaged file? rerun `granrepro " + name + "`)");
     const std::string where = file.string() + ": ";
@@ -255,9 +248,9 @@ int run_experiment(const std::string& name, const RunOptions& opt, VerdictCounts
     const auto verdicts = evaluate_claims(claims, scalars_json(result), opt.scale);
     try {
         std::vector<std::pair<std::string, std::string>> plot_texts;
-        for (const auto& id : to_render) plot_texts.emplace_back(id, read_text(project_root() / "plots" / (id + ".gp")));
-        const Provenance prov{name,     info.paper, read_text(info.file),           opt.scale, opt.seed,
-                              wall,     opt.threads, opt.command_line, read_text(expected_file(name)), plot_texts};
+        for (const auto& id : to_render) plot_texts.emplace_back(id, read_file(project_root() / "plots" / (id + ".gp")));
+        const Provenance prov{name,     info.paper, read_file(info.file),           opt.scale, opt.seed,
+                              wall,     opt.threads, opt.command_line, read_file(expected_file(name)), plot_texts};
         write_result_h5(stage->path() / "data.h5", prov, params, result);
         write_tables_tsv(stage->path() / "tables", result);
         nlohmann::json summary = summary_json(prov, params, result);
@@ -341,10 +334,8 @@ int check_all(const fs::path& out, const CheckOptions& opt) {
     std::printf("totals: %s\n", totals.text().c_str());
     std::fflush(stdout);
     if (!missing.empty()) {
-        std::string names;
-        for (const auto& m : missing) names += (names.empty() ? "" : ", ") + m;
         std::fprintf(stderr, "granrepro: check --all: no results in %s for %zu experiment%s: %s%s\n", out.c_str(),
-                     missing.size(), missing.size() == 1 ? "" : "s", names.c_str(),
+                     missing.size(), missing.size() == 1 ? "" : "s", joined(missing).c_str(),
                      opt.missing_ok ? " (--missing-ok: not a failure)" : " (run them first)");
         if (!opt.missing_ok) rc = 1;
     }
@@ -369,19 +360,17 @@ int export_experiment(const std::string& name, const fs::path& out, const fs::pa
         throw InputError("export " + name + ": " + (from / "data.h5").string() + ": " + e.what());
     }
     fs::rename(tmp, dest / "data.h5");
-    write_file_atomically(dest / "summary.json", read_text(from / "summary.json"));
-    std::string list;
-    for (const auto& o : omitted) list += (list.empty() ? "" : ", ") + o;
+    write_file_atomically(dest / "summary.json", read_file(from / "summary.json"));
     std::printf("export %s: %s -> %s (%.0f kB data.h5%s%s)\n", name.c_str(), from.c_str(), dest.c_str(),
-                double(fs::file_size(dest / "data.h5")) / 1024.0, omitted.empty() ? "" : "; left out: ", list.c_str());
+                double(fs::file_size(dest / "data.h5")) / 1024.0, omitted.empty() ? "" : "; left out: ",
+                joined(omitted).c_str());
     return 0;
 }
 
 int plot_experiment(const std::string& name, const fs::path& out, const std::vector<std::string>& figures,
                     bool strict) {
     const ExperimentInfo info = experiment_info(name);
-    std::string known;
-    for (const auto& f : info.figures) known += (known.empty() ? "" : ", ") + f.id;
+    const std::string known = joined(info.figures, [](const auto& f) { return f.id; });
     for (const auto& id : figures)
         if (!makes(info, id))
             throw InputError("--figure " + id + " is not made by experiment " + name + "; it makes " + known);

@@ -2,7 +2,6 @@
 
 #include <cstdio>
 #include <fstream>
-#include <sstream>
 
 #include "core/stable_hash.hpp"
 #include "harness/run_checkpoint.hpp"
@@ -24,11 +23,9 @@ std::optional<nlohmann::json> SweepCheckpoint::load(long point) const {
     const auto file = dir_ / (std::to_string(point) + ".json");
     std::ifstream in(file);
     if (!in) return std::nullopt;
-    std::stringstream text;
-    text << in.rdbuf();
     std::string problem;
     try {
-        const nlohmann::json j = nlohmann::json::parse(text.str());
+        const nlohmann::json j = nlohmann::json::parse(in);
         if (!j.is_object() || j.value("schema", "") != kPointSchema || j.value("schema_version", 0) != 1)
             problem = "not a granrepro-sweep-point v1 file";
         else if (!j.contains("point") || j["point"] != point)
@@ -48,12 +45,8 @@ std::optional<nlohmann::json> SweepCheckpoint::load(long point) const {
 }
 
 void SweepCheckpoint::save(long point, const nlohmann::json& value) {
-    nlohmann::json j;
-    j["schema"] = kPointSchema;
-    j["schema_version"] = 1;
-    j["point"] = point;
-    j["fnv1a64"] = hex64(fnv1a64(value.dump()));
-    j["value"] = value;
+    const nlohmann::json j = {{"schema", kPointSchema}, {"schema_version", 1}, {"point", point},
+                              {"fnv1a64", hex64(fnv1a64(value.dump()))}, {"value", value}};
     std::filesystem::create_directories(dir_); // a shard's commit may have removed an empty folder
     write_file_atomically(dir_ / (std::to_string(point) + ".json"), j.dump());
 }

@@ -4,6 +4,8 @@
 #include <cerrno>
 #include <cstring>
 #include <fcntl.h>
+#include <fstream>
+#include <sstream>
 #include <unistd.h>
 
 #include "io/write_error.hpp"
@@ -17,6 +19,13 @@ std::string errno_text(int err) {
     if (!s.empty() && std::isupper(static_cast<unsigned char>(s[0])) && !(s.size() > 1 && std::isupper(static_cast<unsigned char>(s[1]))))
         s[0] = char(std::tolower(static_cast<unsigned char>(s[0])));
     return s;
+}
+
+std::string read_file(const fs::path& path) {
+    std::ifstream in(path);
+    std::stringstream ss;
+    ss << in.rdbuf();
+    return ss.str();
 }
 
 void write_file_durably(const fs::path& path, std::string_view content) {

@@ -13,6 +13,8 @@ std::string errno_text(int err);
 
 // Creates or truncates `path`, writes all of `content`, fsyncs and closes it.
 void write_file_durably(const std::filesystem::path& path, std::string_view content);
+// The whole file as text; empty if it cannot be read.
+std::string read_file(const std::filesystem::path& path);
 // fsync of an existing file or directory (a directory's fsync makes the renames in it durable).
 void fsync_path(const std::filesystem::path& path);
 // fsync of every regular file and directory below `dir`, and of `dir` itself.

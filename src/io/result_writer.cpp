@@ -1,9 +1,7 @@
 #include "io/result_writer.hpp"
 
-#include <chrono>
 #include <cmath>
 #include <ctime>
-#include <fstream>
 #include <iomanip>
 #include <sstream>
 
@@ -106,8 +104,7 @@ std::string utc_now() {
 void write_result_h5(const std::filesystem::path& file, const Provenance& prov, const ParameterSet& params,
                      const Result& result) {
     H5File f = H5File::create(file.string());
-    f.attr("schema", std::string("granrepro-result"));
-    f.attr("schema_version", 1L);
+    f.stamp_schema("granrepro-result", 1);
     f.attr("experiment", prov.experiment);
     f.attr("paper", prov.paper);
     f.attr("scale", std::string(to_string(prov.scale)));
