@@ -1,6 +1,6 @@
 // Figures are gnuplot scripts in plots/<figure-id>.gp that a person can open and edit. A run
-// copies the script next to its data with two variables set at the top (where the tables are,
-// and the output base name) and runs gnuplot there, producing <figure-id>.png and .pdf.
+// copies the script next to its data with variables set at the top (where the tables are, which
+// tables there are, and the output base name) and runs gnuplot there, producing <figure-id>.png and .pdf.
 #pragma once
 #include <filesystem>
 #include <string>
@@ -18,8 +18,12 @@ enum class RenderOutcome { Clean, Warned, Failed, Skipped };
 std::string missing_table(const std::string& script, const std::filesystem::path& tables_dir);
 
 // The emitted <id>.gp: a hash line, the variables datadir and outbase (found next to the script
-// from gnuplot's ARG0, so it runs from any directory), then the body of plots/<id>.gp.
-std::string emitted_script(const std::string& figure_id, const std::string& body);
+// from gnuplot's ARG0, so it runs from any directory), `tables` (the names, without .tsv, of the
+// tables in tables_dir, space-separated in natural order: "steady_k200 steady_k2000") and the
+// function has(name), then the body of plots/<id>.gp. The scripts learn which tables exist from
+// `tables`, not from a shell (they call no system()).
+std::string emitted_script(const std::string& figure_id, const std::string& body,
+                           const std::filesystem::path& tables_dir);
 
 // Emits <run_dir>/<id>.gp and renders it in run_dir (if <id>.gp in shown_dir, or else in run_dir,
 // was edited since it was emitted, that script is rendered instead, and a warning says so); a warning or failure is reported on stderr
