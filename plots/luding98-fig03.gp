@@ -7,7 +7,7 @@ w = datadir.'/impact_parameter_windows.tsv'
 stats f skip 1 nooutput
 ncol = STATS_columns
 # The label of window k (row k of the windows table).
-stats w using 1 skip 1 nooutput
+stats w using (0) skip 1 nooutput  # every row, whatever it holds
 array wl[STATS_records]
 do for [k=1:|wl|] {
   stats w using (wl[k] = sprintf("%g s ≤ t < %g s", column(1), column(2)), 0) skip 1 every ::(k-1)::(k-1) nooutput

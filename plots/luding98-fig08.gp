@@ -6,7 +6,8 @@
 set datafile separator "\t"
 set datafile missing "NaN"
 summary = datadir.'/fig8_summary.tsv'
-rlist = system("awk -F'\t' '/^#/{u++; next} (NR-u)>1{printf \"%s \", $1}' ".summary)
+rlist = ''
+stats summary using (rlist = rlist.strcol(1).' ', 0) skip 1 nooutput  # r as written, in the table's order
 n = words(rlist)
 tc = "1e-06"
 # Okabe-Ito: colour-blind safe

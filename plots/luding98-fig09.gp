@@ -5,7 +5,8 @@
 set datafile separator "\t"
 set datafile missing "NaN"
 summary = datadir.'/fig9_summary.tsv'
-tlist = system("awk -F'\t' '/^#/{u++; next} (NR-u)>1{printf \"%s \", $1}' ".summary)
+tlist = ''
+stats summary using (tlist = tlist.strcol(1).' ', 0) skip 1 nooutput  # t_c as written, in the table's order
 n = words(tlist)
 # Five t_c in distinct hues (no two oranges) and dash types, so that every curve can be told apart
 # in print and by colour-blind readers.
