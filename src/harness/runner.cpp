@@ -247,7 +247,7 @@ int run_experiment(const std::string& name, const RunOptions& opt, VerdictCounts
     // old results stay as they were (nothing is renamed into place).
     const auto verdicts = evaluate_claims(claims, scalars_json(result), opt.scale);
     // A figure the command asked for (every figure of a plain run; the one of `figure`) that is
-    // not drawn makes the exit code say so; others a figure run only re-renders just warn.
+    // not drawn makes the exit code say so; the other figures a `figure` run re-renders only warn.
     auto requested = [&](const std::string& id) {
         return opt.figures.empty() || std::find(opt.figures.begin(), opt.figures.end(), id) != opt.figures.end();
     };
