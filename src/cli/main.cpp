@@ -308,7 +308,7 @@ static int run_main(int argc, char** argv) {
     plot->add_flag("--edited", plot_edited,
                    "render the scripts you edited (<figure>.edited.gp, or an edited <figure>.gp) instead of "
                    "the ones from plots/; without it an edited script is kept but never run, as a results "
-                   "folder from elsewhere may hold gnuplot system() calls");
+                   "folder from elsewhere may hold gnuplot lines that run programs");
     plot->add_option("--out", common.out, "output directory")->capture_default_str();
     plot->callback([&] {
         if (plot_all == !plot_name.empty()) throw InputError("plot: give one experiment or --all");
