@@ -1,10 +1,14 @@
 #include "harness/plotter.hpp"
 
+#include <algorithm>
+#include <cctype>
+#include <charconv>
 #include <cmath>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <regex>
 #include <sstream>
+#include <vector>
 
 #include "core/spawn.hpp"
 #include "core/stable_hash.hpp"
@@ -77,7 +81,50 @@ std::string parameter_assignments(const std::string& script, const std::filesyst
     return lines;
 }
 
-std::string emitted_script(const std::string& id, const std::string& body, const std::string& assignments) {
+namespace {
+
+// "steady_k200" before "steady_k2000" before "steady_k30000": runs of digits (with a decimal point
+// or exponent, as in "tc1e-06") compare by value, so scripts can take tables in numeric order.
+bool natural_less(const std::string& a, const std::string& b) {
+    std::size_t i = 0, j = 0;
+    while (i < a.size() && j < b.size()) {
+        if (std::isdigit(static_cast<unsigned char>(a[i])) && std::isdigit(static_cast<unsigned char>(b[j]))) {
+            double x = 0, y = 0;
+            const auto ra = std::from_chars(a.data() + i, a.data() + a.size(), x);
+            const auto rb = std::from_chars(b.data() + j, b.data() + b.size(), y);
+            if (x != y) return x < y;
+            i = std::size_t(ra.ptr - a.data());
+            j = std::size_t(rb.ptr - b.data());
+        } else {
+            if (a[i] != b[j]) return a[i] < b[j];
+            ++i, ++j;
+        }
+    }
+    if (a.size() - i != b.size() - j) return a.size() - i < b.size() - j;
+    return a < b; // equal values written differently ("0.8", "0.80"): still a strict order
+}
+
+// The tables (names without .tsv) in tables_dir, in natural order, as one gnuplot string: the
+// scripts choose from it instead of listing the folder through a shell. Our code makes every name;
+// one with any other character is left out all the same, as it could end the quoted string.
+std::string table_list(const std::filesystem::path& tables_dir) {
+    static const std::regex safe("[A-Za-z0-9_.-]+");
+    std::vector<std::string> names;
+    std::error_code ec;
+    for (const auto& e : std::filesystem::directory_iterator(tables_dir, ec)) {
+        const std::string name = e.path().stem().string();
+        if (e.path().extension() == ".tsv" && e.is_regular_file(ec) && std::regex_match(name, safe)) names.push_back(name);
+    }
+    std::sort(names.begin(), names.end(), natural_less);
+    std::string out;
+    for (const auto& n : names) out += (out.empty() ? "" : " ") + n;
+    return out;
+}
+
+} // namespace
+
+std::string emitted_script(const std::string& id, const std::string& body, const std::filesystem::path& tables_dir,
+                           const std::string& assignments) {
     // The data and output are found next to the script (gnuplot sets ARG0 to the script's path),
     // so `gnuplot path/to/<id>.gp` works from any working directory.
     const std::string rest =
@@ -90,7 +137,10 @@ std::string emitted_script(const std::string& id, const std::string& body, const
         "  while (_i > 0 && ARG0[_i:_i] ne '/') { _i = _i - 1 }\n"
         "  if (_i > 0) { here = ARG0[1:_i] }\n"
         "}\n"
-        "datadir = here.'tables'\noutbase = here.'" + id + "'\n" + assignments + "\n" + body;
+        "datadir = here.'tables'\noutbase = here.'" + id + "'\n"
+        "# The tables that were in datadir when this was emitted; has(name) tells if one was.\n"
+        "tables = '" + table_list(tables_dir) + "'\n"
+        "has(name) = strstrt(' '.tables.' ', ' '.name.' ') > 0\n" + assignments + "\n" + body;
     return kHashTag + fnv1a_hex(rest) + "\n" + rest;
 }
 
@@ -138,7 +188,7 @@ RenderOutcome render_figure(const std::string& id, const std::filesystem::path& 
         warn(id + " not drawn: " + e.what());
         return RenderOutcome::Failed;
     }
-    write_file_durably(emitted, emitted_script(id, body.str(), assignments)); // a full disk is a WriteError, not a 0-byte script
+    write_file_durably(emitted, emitted_script(id, body.str(), run_dir / "tables", assignments)); // a full disk is a WriteError, not a 0-byte script
     // "./": a name is never read as an option; the working directory, not a shell, finds it.
     const auto log = run_dir / (id + ".gnuplot.log");
     const int rc = run_program({"gnuplot", "./" + id + (run_kept ? ".edited.gp" : ".gp")}, run_dir, log);

@@ -1,6 +1,7 @@
 // Figures are gnuplot scripts in plots/<figure-id>.gp that a person can open and edit. A run
-// copies the script next to its data with variables set at the top (where the tables are, the
-// output base name, and the run's values of the parameters the script declares) and runs gnuplot there, producing <figure-id>.png and .pdf.
+// copies the script next to its data with variables set at the top (where the tables are, which
+// tables there are, the output base name, and the run's values of the parameters the script
+// declares) and runs gnuplot there, producing <figure-id>.png and .pdf.
 #pragma once
 #include <filesystem>
 #include <string>
@@ -26,9 +27,12 @@ std::string missing_table(const std::string& script, const std::filesystem::path
 std::string parameter_assignments(const std::string& script, const std::filesystem::path& summary_file);
 
 // The emitted <id>.gp: a hash line, the variables datadir and outbase (found next to the script
-// from gnuplot's ARG0, so it runs from any directory), the parameter assignments, then the body
-// of plots/<id>.gp.
-std::string emitted_script(const std::string& figure_id, const std::string& body, const std::string& assignments = "");
+// from gnuplot's ARG0, so it runs from any directory), `tables` (the names, without .tsv, of the
+// tables in tables_dir, space-separated in natural order: "steady_k200 steady_k2000") and the
+// function has(name), the parameter assignments, then the body of plots/<id>.gp. The scripts
+// learn which tables exist from `tables`, not from a shell (they call no system()).
+std::string emitted_script(const std::string& figure_id, const std::string& body,
+                           const std::filesystem::path& tables_dir, const std::string& assignments = "");
 
 // Emits <run_dir>/<id>.gp and renders it in run_dir with gnuplot (no shell: see core/spawn.hpp).
 // A results folder is data, not code: if <id>.gp in shown_dir (or else in run_dir) was edited
