@@ -213,13 +213,15 @@ std::vector<ClaimResult> evaluate_claims(const std::vector<Claim>& claims, const
     return out;
 }
 
-std::string format_claim_table(const std::string& experiment, const std::vector<ClaimResult>& results) {
+std::string format_claim_table(const std::string& experiment, const std::vector<ClaimResult>& results,
+                               const std::vector<std::string>& notes) {
     std::ostringstream os;
     auto pad = [](std::string s, std::size_t w) {
         if (s.size() > w) s = s.substr(0, w - 1) + "~";
         return s + std::string(w - s.size(), ' ');
     };
     os << "check " << experiment << "\n";
+    for (const auto& n : notes) os << "  " << n << "\n";
     os << "  " << pad("claim", 34) << pad("paper / relation", 22) << pad("our band (deviation)", 22)
        << pad("measured", 11) << pad("tolerance", 11) << "verdict\n";
     int explained = 0;

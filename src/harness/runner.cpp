@@ -1,6 +1,7 @@
 #include "harness/runner.hpp"
 
 #include <algorithm>
+#include <cerrno>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -107,34 +108,117 @@ nlohmann::json read_summary(const fs::path& file, const std::string& name) {
     return j;
 }
 
-// data.h5 must open, carry the result schema of this experiment, hold the scalars summary.json
-// states (bit for bit; NaN for null), and every table must read back whole: a truncated file
-// fails one of these.
-void check_data_file(const fs::path& file, const std::string& name, const nlohmann::json& scalars) {
+// Where one of the two files disagrees with the other: bad input naming the file, what differs
+// and the way out.
+[[noreturn]] void disagree(const fs::path& file, const std::string& what, const std::string& name) {
+    throw InputError(file.string() + ": " + what + "; rerun `granrepro " + name + "`");
+}
+
+// Files written before 2026-12 store the seed as text.
+nlohmann::json seed_of(const H5File& f) {
+    try {
+        return f.read_u64_attr("seed");
+    } catch (const std::runtime_error&) {
+        const std::string text = f.read_string_attr("seed");
+        char* end = nullptr;
+        errno = 0;
+        const unsigned long long seed = std::strtoull(text.c_str(), &end, 10);
+        if (text.empty() || *end || errno || text[0] == '-') return text; // compares unequal to any number
+        return std::uint64_t(seed);
+    }
+}
+
+// data.h5 must open, carry the result schema of this experiment, agree with summary.json on
+// experiment, scale, seed and code version, hold the scalars summary.json states (bit for bit;
+// NaN for null), and every table must read back whole: a truncated file fails one of these.
+// From schema_version 2 on, each file also carries the other's content hash (docs/schema.md),
+// so an edit of either one is found. Returns false for files written before the hashes (both of
+// schema_version 1): they are checked as before, unverified.
+bool check_data_file(const fs::path& file, const std::string& name, const fs::path& summary_file,
+                     const nlohmann::json& summary) {
     if (!fs::exists(file)) throw InputError(file.string() + ": missing (summary.json has no data file beside it)");
     try {
         const H5File f = H5File::open(file.string());
-        f.require_schema("granrepro-result", 1);
+        const long version = f.require_schema("granrepro-result", 1, 2);
         if (const std::string e = f.read_string_attr("experiment"); e != name)
             throw std::runtime_error("holds results of experiment '" + e + "'");
+        // A one-sided edit of these would judge the data by the wrong claims ("paper" on quick
+        // data) or hide the paper-only ones as skipped.
+        auto same = [&](const char* field, const nlohmann::json& in_h5, bool optional) {
+            if (!summary.contains(field)) {
+                if (optional) return;
+                disagree(summary_file, std::string("has no '") + field + "' (data.h5 beside it has " + in_h5.dump() + ")",
+                         name);
+            }
+            if (summary[field] != in_h5)
+                disagree(summary_file, std::string("'") + field + "' is " + json_kind(summary[field]) +
+                                           " but data.h5 beside it has " + json_kind(in_h5) + " (one of the two was edited)",
+                         name);
+        };
+        same("experiment", name, false);
+        same("scale", f.read_string_attr("scale"), false);
+        same("seed", seed_of(f), false);
+        if (f.has_attr("code_version")) same("code_version", f.read_string_attr("code_version"), true);
+        const bool hashed = version >= 2 || summary.value("schema_version", 0) >= 2;
+        if (hashed) {
+            if (!f.has_attr("summary_json_hash"))
+                throw std::runtime_error("has no summary_json_hash (summary.json is of schema_version 2)");
+            if (f.read_string_attr("summary_json_hash") != summary_content_hash(summary))
+                disagree(summary_file, "content differs from the hash data.h5 beside it recorded for it (edited since the run?)",
+                         name);
+            if (!summary.contains("data_h5_hash") || !summary["data_h5_hash"].is_object())
+                disagree(summary_file, "has no 'data_h5_hash' object (data.h5 beside it is of schema_version 2)", name);
+        }
+        const nlohmann::json found = data_content_hash(file); // reads every table whole
+        if (hashed) {
+            const nlohmann::json& recorded = summary["data_h5_hash"];
+            if (recorded.value("scalars", "") != found["scalars"])
+                throw InputError(file.string() + ": its scalars differ from the hash summary.json recorded for them "
+                                 "(edited since the run?); rerun `granrepro " + name + "`");
+            const nlohmann::json tables = recorded.value("tables", nlohmann::json::object());
+            const std::string omitted = f.has_attr("omitted_tables") ? f.read_string_attr("omitted_tables") : "";
+            for (auto it = found["tables"].begin(); it != found["tables"].end(); ++it)
+                if (!tables.contains(it.key()) || tables[it.key()] != it.value())
+                    disagree(file, "table '" + it.key() + "' differs from the hash summary.json recorded for it (edited since the run?)",
+                             name);
+            // A compact copy (export) leaves large tables out and names them.
+            for (auto it = tables.begin(); it != tables.end(); ++it)
+                if (!found["tables"].contains(it.key()) && omitted.find(it.key() + " (") == std::string::npos)
+                    disagree(file, "has no table '" + it.key() + "' (summary.json records it)", name);
+        }
         const H5Object sc = f.open_group("scalars");
+        const nlohmann::json& scalars = summary["scalars"];
         for (auto it = scalars.begin(); it != scalars.end(); ++it) {
             if (!sc.has(it.key())) throw std::runtime_error("has no scalar '" + it.key() + "' (summary.json has it)");
             const std::vector<double> v = sc.read_dataset(it.key());
-            const bool same = v.size() == 1 && (it.value().is_null() ? !std::isfinite(v[0])
-                                                                     : v[0] == it.value().get<double>());
-            if (!same) throw std::runtime_error("scalar '" + it.key() + "' differs from summary.json");
+            const bool same_value = v.size() == 1 && (it.value().is_null() ? !std::isfinite(v[0])
+                                                                           : v[0] == it.value().get<double>());
+            if (!same_value) throw std::runtime_error("scalar '" + it.key() + "' differs from summary.json");
         }
-        const H5Object tables = f.open_group("tables");
-        for (const auto& t : tables.children()) {
-            const H5Object g = tables.open_group(t);
-            for (const auto& c : g.children()) g.read_dataset(c);
-        }
+        return hashed;
+    } catch (const InputError&) {
+        throw;
     } catch (const std::exception& e) {
         std::string msg = e.what();
         throw InputError(file.string() + ": damaged or not this experiment's results (" + msg.substr(0, msg.find('\n')) +
                          "); rerun `granrepro " + name + "`");
     }
+}
+
+// The lines under a check table's title: the --set overrides, so that a modified run's table
+// cannot pass for the default's, and whether the two files could be verified against each other.
+std::vector<std::string> check_notes(const nlohmann::json& overrides, bool verified) {
+    std::vector<std::string> notes;
+    if (overrides.is_object() && !overrides.empty()) {
+        std::string sets;
+        for (auto it = overrides.begin(); it != overrides.end(); ++it)
+            sets += (sets.empty() ? "" : " ") + it.key() + "=" + (it.value().is_string() ? it.value().get<std::string>()
+                                                                                         : it.value().dump());
+        notes.push_back("parameters changed from the defaults (--set): " + sets);
+    }
+    if (!verified) notes.push_back("unverified: written before hashes (schema_version 1); data.h5 and summary.json "
+                                   "are compared field by field only");
+    return notes;
 }
 } // namespace
 
@@ -251,10 +335,10 @@ int run_experiment(const std::string& name, const RunOptions& opt, VerdictCounts
         for (const auto& id : to_render) plot_texts.emplace_back(id, read_file(project_root() / "plots" / (id + ".gp")));
         const Provenance prov{name,     info.paper, read_file(info.file),           opt.scale, opt.seed,
                               wall,     opt.threads, opt.command_line, read_file(expected_file(name)), plot_texts};
-        write_result_h5(stage->path() / "data.h5", prov, params, result);
-        write_tables_tsv(stage->path() / "tables", result);
         nlohmann::json summary = summary_json(prov, params, result);
         summary["claims"] = claims_to_json(verdicts);
+        write_result_h5(stage->path() / "data.h5", prov, params, result, summary_content_hash(summary));
+        write_tables_tsv(stage->path() / "tables", result);
         write_file_durably(stage->path() / "summary.json", summary.dump(2) + "\n");
         for (const auto& id : to_render) {
             render_figure(id, stage->path(), final_dir);
@@ -275,7 +359,11 @@ int run_experiment(const std::string& name, const RunOptions& opt, VerdictCounts
     std::error_code ec;
     fs::remove_all(work_dir, ec);
     if (!opt.quiet) std::fprintf(stderr, "%s: %.1f s, results in %s\n", name.c_str(), wall, final_dir.c_str());
-    std::fputs(format_claim_table(name + " (" + to_string(opt.scale) + " scale)", verdicts).c_str(), stdout);
+    nlohmann::json sets = nlohmann::json::object();
+    for (const auto& p : params.all())
+        if (p.overridden) sets[p.name] = p.value_text();
+    std::fputs(format_claim_table(name + " (" + to_string(opt.scale) + " scale)", verdicts, check_notes(sets, true)).c_str(),
+               stdout);
     std::fflush(stdout);
     if (totals) totals->add(verdicts);
     throw_if_interrupted(" after the results were written to " + final_dir.string());
@@ -313,10 +401,11 @@ int check_experiment(const std::string& name, const fs::path& out, const CheckOp
         throw InputError("check " + name + ": no results in " + (out / name).string() + "; run `granrepro " +
                          name + "` first");
     const nlohmann::json summary = read_summary(summary_path, name);
-    check_data_file(out / name / "data.h5", name, summary["scalars"]);
+    const bool verified = check_data_file(out / name / "data.h5", name, summary_path, summary);
     const Scale scale = parse_scale(summary["scale"].get<std::string>());
     const auto verdicts = evaluate_claims(claims, summary["scalars"], scale);
-    std::fputs(format_claim_table(name + " (" + to_string(scale) + " scale)", verdicts).c_str(), stdout);
+    const auto notes = check_notes(summary.value("overridden_parameters", nlohmann::json::object()), verified);
+    std::fputs(format_claim_table(name + " (" + to_string(scale) + " scale)", verdicts, notes).c_str(), stdout);
     if (opt.explain) std::fputs(format_deviation_explanations(verdicts).c_str(), stdout);
     std::fflush(stdout);
     if (totals) totals->add(verdicts);
