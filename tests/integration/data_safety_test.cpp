@@ -523,3 +523,24 @@ TEST(DataSafety, CheckTableNamesTheOverrides) {
     const Outcome checked = run("check " + kExp + " --out " + out.string());
     EXPECT_NE(checked.out.find("check " + kExp + " (quick scale)\n  " + line), std::string::npos) << checked.out;
 }
+
+// Issue 25 item 6: previous results that cannot be removed stay as .<exp>.partial-PID; the run
+// says so in one line (and the next run, which cannot remove them either, once more), and a run
+// that can remove them cleans them without a word.
+TEST(DataSafety, UnremovableOldResultsAreNamedOnce) {
+    const TempPath out("undeletable");
+    ASSERT_EQ(run("brake-failure --quiet --out " + out.string()).code, 0);
+    put(out / "brake-failure" / "undeletable", "x");
+    const std::string env = shim_env("GRANREPRO_SHIM_FAIL_UNLINK=undeletable");
+    const Outcome first = run("brake-failure --quiet --out " + out.string(), env);
+    ASSERT_EQ(first.code, 0) << first.err;
+    const auto left = leftovers(out, "brake-failure");
+    ASSERT_EQ(left.size(), 1u);
+    expect_one_line_exit(first, 0, {"warning: cannot remove the previous results", left[0], "remove it by hand"});
+    const Outcome second = run("brake-failure --quiet --out " + out.string(), env);
+    expect_one_line_exit(second, 0, {"warning: cannot remove what an earlier run left", left[0]});
+    const Outcome third = run("brake-failure --quiet --out " + out.string());
+    EXPECT_EQ(third.code, 0);
+    EXPECT_EQ(third.err, "");
+    EXPECT_TRUE(leftovers(out, "brake-failure").empty());
+}
