@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <ctime>
 #include <fstream>
+#include <limits>
 #include <optional>
 #include <sstream>
 
@@ -230,6 +231,7 @@ int run_experiment(const std::string& name, const RunOptions& opt, VerdictCounts
         if (!makes(info, f)) throw InputError("figure " + f + " is not made by experiment " + name);
     // Read the claims before spending time on the run: a broken file is an input error.
     const auto claims = load_claims(expected_file(name), name);
+    SweepPlan plan = sweep_plan(name, opt);
     ensure_writable_directory(opt.out, "--out");
 
     const fs::path final_dir = opt.out / name;
@@ -238,9 +240,6 @@ int run_experiment(const std::string& name, const RunOptions& opt, VerdictCounts
     // Shards of one sweep share the lock (each point is its own file), a whole run or `gather`
     // holds it alone; MPI ranks other than 0 run under rank 0's lock. Only a lone holder may
     // clean leftovers: a shard's in-flight point files look like a dead run's.
-    SweepPlan plan = opt.sweep;
-    if (plan.mode == SweepPlan::Mode::All && opt.shard_from_slurm && exp.distributed)
-        if (const auto shard = slurm_array_shard()) plan = *shard;
     const bool shard_run = plan.mode == SweepPlan::Mode::Shard;
     const int ranks = mpi::size();
     const bool rank0 = mpi::rank() == 0;
@@ -381,14 +380,52 @@ SweepPlan parse_points(const std::string& text) {
     return plan;
 }
 
+namespace {
+// A Slurm job-array variable: unset, or a whole integer in [lo, hi]. Garbage is refused by name:
+// atol("abc") = 0 used to run shard 1 of 2 without a word.
+std::optional<long> slurm_number(const char* var, long lo, long hi) {
+    const char* text = std::getenv(var);
+    if (!text) return std::nullopt;
+    long x = 0;
+    if (!parse_long(text, x) || x < lo || x > hi)
+        throw InputError(std::string(var) + "=" + text + ": must be an integer " +
+                         (hi == std::numeric_limits<long>::max() ? ">= " + std::to_string(lo)
+                                                                  : "in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]") +
+                         " (Slurm job array; outside one, unset it or pass --points I/N)");
+    return x;
+}
+} // namespace
+
 std::optional<SweepPlan> slurm_array_shard() {
-    const char* id = std::getenv("SLURM_ARRAY_TASK_ID");
-    const char* count = std::getenv("SLURM_ARRAY_TASK_COUNT");
-    if (!id || !count) return std::nullopt;
-    const char* min = std::getenv("SLURM_ARRAY_TASK_MIN");
-    const char* step = std::getenv("SLURM_ARRAY_TASK_STEP");
-    const long i = std::atol(id), lo = min ? std::atol(min) : 0, st = step ? std::max(1L, std::atol(step)) : 1;
-    return parse_points(std::to_string((i - lo) / st + 1) + "/" + count);
+    const long most = std::numeric_limits<int>::max();
+    const auto id = slurm_number("SLURM_ARRAY_TASK_ID", 0, std::numeric_limits<long>::max());
+    const auto count = slurm_number("SLURM_ARRAY_TASK_COUNT", 1, most);
+    if (!id && !count) return std::nullopt;
+    if (!id || !count)
+        throw InputError(std::string(id ? "SLURM_ARRAY_TASK_COUNT" : "SLURM_ARRAY_TASK_ID") + " is not set but " +
+                         (id ? "SLURM_ARRAY_TASK_ID" : "SLURM_ARRAY_TASK_COUNT") +
+                         " is: cannot tell which shard this task is; pass --points I/N");
+    const long min = slurm_number("SLURM_ARRAY_TASK_MIN", 0, std::numeric_limits<long>::max()).value_or(0);
+    const long step = slurm_number("SLURM_ARRAY_TASK_STEP", 1, std::numeric_limits<long>::max()).value_or(1);
+    // Task IDs are MIN, MIN + STEP, ..., COUNT of them; shard I of COUNT is the I-th.
+    if (*id < min || (*id - min) % step != 0 || (*id - min) / step >= *count)
+        throw InputError("SLURM_ARRAY_TASK_ID=" + std::to_string(*id) + ": not one of the array's " +
+                         std::to_string(*count) + " task IDs " + std::to_string(min) + ", " + std::to_string(min) + "+" +
+                         std::to_string(step) + ", ... (SLURM_ARRAY_TASK_MIN=" + std::to_string(min) +
+                         ", SLURM_ARRAY_TASK_STEP=" + std::to_string(step) + ", SLURM_ARRAY_TASK_COUNT=" +
+                         std::to_string(*count) + ")");
+    SweepPlan plan;
+    plan.mode = SweepPlan::Mode::Shard;
+    plan.shard = int((*id - min) / step + 1);
+    plan.shards = int(*count);
+    return plan;
+}
+
+SweepPlan sweep_plan(const std::string& name, const RunOptions& opt) {
+    SweepPlan plan = opt.sweep;
+    if (plan.mode == SweepPlan::Mode::All && opt.shard_from_slurm && find_experiment(name).distributed)
+        if (const auto shard = slurm_array_shard()) plan = *shard;
+    return plan;
 }
 
 bool has_results(const std::string& name, const fs::path& out) { return fs::exists(out / name / "summary.json"); }
