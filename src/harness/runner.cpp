@@ -174,8 +174,7 @@ bool check_data_file(const fs::path& file, const std::string& name, const fs::pa
         if (hashed) {
             const nlohmann::json& recorded = summary["data_h5_hash"];
             if (recorded.value("scalars", "") != found["scalars"])
-                throw InputError(file.string() + ": its scalars differ from the hash summary.json recorded for them "
-                                 "(edited since the run?); rerun `granrepro " + name + "`");
+                disagree(file, "its scalars differ from the hash summary.json recorded for them (edited since the run?)", name);
             const nlohmann::json tables = recorded.value("tables", nlohmann::json::object());
             const std::string omitted = f.has_attr("omitted_tables") ? f.read_string_attr("omitted_tables") : "";
             for (auto it = found["tables"].begin(); it != found["tables"].end(); ++it)
