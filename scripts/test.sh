@@ -13,7 +13,7 @@ jobs=$(nproc)
 # configuration that loses tests (e.g. GRANREPRO_TESTS=OFF, a failed gtest discovery) fails here
 # instead of passing with "No tests were found".
 min_unit=163
-min_integration=84
+min_integration=85
 min_validation=25
 min_repro=29
 min_sweep=12

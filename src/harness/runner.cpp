@@ -337,7 +337,7 @@ int run_experiment(const std::string& name, const RunOptions& opt, VerdictCounts
         summary["claims"] = claims_to_json(verdicts);
         write_result_h5(stage->path() / "data.h5", prov, params, result, summary_content_hash(summary));
         write_tables_tsv(stage->path() / "tables", result);
-        write_file_durably(stage->path() / "summary.json", summary.dump(2) + "\n");
+        write_file_durably(stage->path() / "summary.json", summary_text(summary));
         for (const auto& id : to_render) {
             render_figure(id, stage->path(), final_dir);
             const fs::path png = stage->path() / (id + ".png");

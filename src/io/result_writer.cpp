@@ -266,7 +266,15 @@ nlohmann::json data_content_hash(const std::filesystem::path& h5) {
     return {{"scalars", scalars.hex()}, {"tables", tables}};
 }
 
-std::string summary_content_hash(const nlohmann::json& summary) { return "fnv1a64:" + hex64(fnv1a64(summary.dump())); }
+// Bytes that are not UTF-8 (an --out path in Latin-1, in command_line) become U+FFFD: dump() would
+// throw, and the replacement reads back as itself, so the hash still matches the file.
+std::string summary_content_hash(const nlohmann::json& summary) {
+    return "fnv1a64:" + hex64(fnv1a64(summary.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace)));
+}
+
+std::string summary_text(const nlohmann::json& summary) {
+    return summary.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
+}
 
 std::vector<std::string> write_compact_result_h5(const std::filesystem::path& src, const std::filesystem::path& dst,
                                                  std::size_t max_values) {

@@ -61,6 +61,8 @@ nlohmann::json data_content_hash(const std::filesystem::path& h5);
 // (nlohmann::json orders them), numbers in their shortest round-trip form; independent of how
 // summary.json is indented.
 std::string summary_content_hash(const nlohmann::json& summary);
+// summary.json's text: indented, invalid UTF-8 replaced by U+FFFD as in summary_content_hash.
+std::string summary_text(const nlohmann::json& summary);
 
 // A compact copy of a result file, small enough to commit next to the figures (paper_figures/):
 // the root attributes, /parameters, /scalars and every table of at most max_values values in

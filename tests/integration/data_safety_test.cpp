@@ -544,3 +544,13 @@ TEST(DataSafety, UnremovableOldResultsAreNamedOnce) {
     EXPECT_EQ(third.err, "");
     EXPECT_TRUE(leftovers(out, "brake-failure").empty());
 }
+
+// A folder name that is not UTF-8 (Latin-1 "\xff") used to end the run with exit 1 and a JSON
+// library message when summary.json was written; the text keeps U+FFFD in its place and checks.
+TEST(DataSafety, OutPathThatIsNotUtf8IsWrittenAndChecks) {
+    const TempPath out("latin1-\xff");
+    const Outcome ran = run("brake-failure --quiet --out " + out.string());
+    EXPECT_EQ(ran.code, 0) << ran.err;
+    EXPECT_NE(summary(out / "brake-failure").at("command_line").get<std::string>().find("\xef\xbf\xbd"), std::string::npos);
+    EXPECT_EQ(run("check brake-failure --out " + out.string()).code, 0);
+}
