@@ -15,7 +15,8 @@ import h5py
 import numpy as np
 
 SCHEMA = "granrepro-result"
-SCHEMA_VERSION = 1
+SCHEMA_VERSION = 2  # the version this reader's writer emits
+READS_VERSIONS = (1, 2)  # 1: before the content hashes (summary_json_hash, data_h5_hash)
 
 
 class Table(dict):
@@ -98,8 +99,8 @@ def load(out_dir: str) -> Run:
         root = _attrs(f)
         if root.get("schema") != SCHEMA:
             raise ValueError(f"{h5_path}: not a {SCHEMA} file (schema: {root.get('schema')!r})")
-        if root.get("schema_version") != SCHEMA_VERSION:
-            raise ValueError(f"{h5_path}: schema_version {root.get('schema_version')}, this reader knows {SCHEMA_VERSION}")
+        if root.get("schema_version") not in READS_VERSIONS:
+            raise ValueError(f"{h5_path}: schema_version {root.get('schema_version')}, this reader knows {READS_VERSIONS}")
         run = Run(path=out_dir, experiment=root["experiment"], scale=root["scale"], seed=int(root["seed"]),
                   attributes=root)
         pg = f["parameters"]

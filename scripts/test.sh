@@ -13,7 +13,7 @@ jobs=$(nproc)
 # configuration that loses tests (e.g. GRANREPRO_TESTS=OFF, a failed gtest discovery) fails here
 # instead of passing with "No tests were found".
 min_unit=167
-min_integration=83
+min_integration=90
 min_validation=25
 min_repro=29
 min_sweep=12

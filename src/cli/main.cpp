@@ -133,6 +133,7 @@ struct CommonFlags {
 // work they imply, the claims file), and nothing written.
 int dry_run(const std::string& name, const RunOptions& o) {
     resolve_parameters(name, o);
+    sweep_plan(name, o);
     load_claims(project_root() / "expected" / (name + ".toml"), name);
     std::printf("%s: input accepted (%s scale); --dry-run: nothing run\n", name.c_str(), to_string(o.scale));
     return 0;

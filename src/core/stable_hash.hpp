@@ -12,8 +12,10 @@
 
 namespace granrepro {
 
-constexpr std::uint64_t fnv1a64(std::string_view bytes) {
-    std::uint64_t h = 14695981039346656037ULL;
+constexpr std::uint64_t kFnv1a64Start = 14695981039346656037ULL;
+
+// `h` continues a hash over more bytes: fnv1a64(b, fnv1a64(a)) == fnv1a64(a + b), without the copy.
+constexpr std::uint64_t fnv1a64(std::string_view bytes, std::uint64_t h = kFnv1a64Start) {
     for (const char c : bytes) {
         h ^= std::uint64_t(static_cast<unsigned char>(c));
         h *= 1099511628211ULL;

@@ -6,6 +6,7 @@
 #include <toml.hpp>
 
 #include "core/input_error.hpp"
+#include "data/toml_file.hpp"
 
 namespace granrepro {
 
@@ -154,14 +155,7 @@ std::string Parameter::allowed_text() const {
 
 ParameterSet ParameterSet::load(const std::filesystem::path& file, Scale scale) {
     const std::string where = file.string();
-    toml::value root;
-    try {
-        root = toml::parse(where);
-    } catch (const std::exception& e) {
-        std::string msg = e.what();
-        msg = msg.substr(0, msg.find('\n'));
-        throw InputError(where + ": cannot read experiment file: " + msg);
-    }
+    const toml::value root = parse_toml_file(file, "experiment file");
     ParameterSet set;
     set.file_ = where;
     if (!root.is_table()) throw InputError(where + ": not a table of keys");
@@ -186,7 +180,9 @@ ParameterSet ParameterSet::load(const std::filesystem::path& file, Scale scale) 
         auto str = [&](const char* key) -> std::string {
             const auto it = t.find(key);
             if (it == t.end()) return {};
-            if (!it->second.is_string()) throw InputError(ctx + ": '" + key + "' must be a string");
+            if (!it->second.is_string())
+                throw InputError(ctx + " (line " + std::to_string(it->second.location().line()) + "): '" + key +
+                                 "' must be a string");
             return it->second.as_string().str;
         };
         p.unit = str("unit");
@@ -195,11 +191,22 @@ ParameterSet ParameterSet::load(const std::filesystem::path& file, Scale scale) 
         if (p.unit.empty() || p.source.empty())
             throw InputError(ctx + ": every parameter needs a unit and a source");
         const std::string range = str("range");
+        auto line_of = [&](const char* key) { return " (line " + std::to_string(t.at(key).location().line()) + ")"; };
         if (!range.empty()) {
             p.has_range = true;
-            p.range = Interval::parse(range);
+            try {
+                p.range = Interval::parse(range);
+            } catch (const InputError& e) {
+                throw InputError(ctx + line_of("range") + ": " + e.what());
+            }
         }
-        if (t.count("choices")) p.choices = toml::find<std::vector<std::string>>(spec, "choices");
+        if (t.count("choices")) {
+            try {
+                p.choices = toml::find<std::vector<std::string>>(spec, "choices");
+            } catch (const std::exception& e) {
+                throw InputError(toml_error_line(where, e.what()) + " (parameter " + name + ": choices must be a list of strings)");
+            }
+        }
         const toml::value* quick = nullptr;
         const toml::value* paper = nullptr;
         if (t.count("value")) quick = paper = &t.at("value");
@@ -229,6 +236,7 @@ ParameterSet ParameterSet::load(const std::filesystem::path& file, Scale scale) 
         p.paper_text = toml_text(*paper);
         if (!assign(p, toml_text(chosen)))
             throw InputError(ctx + ": default " + toml_text(chosen) + " is not " + p.allowed_text());
+        p.line = long(spec.location().line());
         ordered.emplace_back(spec.location().line(), std::move(p));
     }
     std::stable_sort(ordered.begin(), ordered.end(),
@@ -292,6 +300,13 @@ void ParameterSet::limit_work(const std::vector<std::string>& names, double esti
     if (estimate <= limit) return; // false for NaN
     throw InputError(named_values(*this, names) + ": the run needs ~" + number_text(estimate) + " " + what +
                      " (at most " + number_text(limit) + " allowed)");
+}
+
+void ParameterSet::refuse_unread(const std::vector<std::string>& read) const {
+    for (const auto& p : params_)
+        if (std::find(read.begin(), read.end(), p.name) == read.end())
+            throw InputError(file_ + " (line " + std::to_string(p.line) + "): [parameters." + p.name +
+                             "] is read by no code of this experiment (a typo or a leftover); remove it");
 }
 
 nlohmann::json ParameterSet::to_json() const {

@@ -44,6 +44,7 @@ struct Parameter {
     std::vector<double> reals;
     std::string quick_text, paper_text; // defaults at both scales, for --help
     bool overridden = false;
+    long line = 0; // of its table in the experiment file, for messages
 
     std::string value_text() const;
     std::string allowed_text() const; // "a number in (0, 1] [1]" etc.
@@ -73,6 +74,11 @@ public:
     // is not finite): "t_end = 1e+308 s needs ~1e+312 events (at most 1e+11 allowed)". `what`
     // names the unit of work: "collisions", "time steps", "particles".
     void limit_work(const std::vector<std::string>& names, double estimate, double limit, const std::string& what) const;
+
+    // Refuses a parameter of the experiment file that is not in `read` (the names the experiment's
+    // spec lists): a [parameters.x] no code reads is a typo or a leftover, and changing it with
+    // --set would change nothing.
+    void refuse_unread(const std::vector<std::string>& read) const;
 
     const std::vector<Parameter>& all() const { return params_; }
     nlohmann::json to_json() const;

@@ -13,7 +13,9 @@
 // A field's C++ type picks the parameter kind: double (Real), long or int (Integer), bool (Flag),
 // std::string (Text), std::vector<double> (RealList), or an enum with a
 // `void parse_choice(const std::string&, E&)` found by argument-dependent lookup (Text choices).
-// A name the TOML does not have, or of another kind, throws, as ParameterSet::real() does.
+// A name the TOML does not have, or of another kind, throws, as ParameterSet::real() does; so does
+// a parameter of the TOML that the spec does not list (ParameterSet::refuse_unread): the spec is
+// the experiment's whole list of what it reads.
 #pragma once
 #include <string>
 #include <type_traits>
@@ -42,7 +44,12 @@ void assign(const ParameterSet& p, const char* name, E& x) {
 template <class Spec>
 Spec read_spec(const ParameterSet& p) {
     Spec s{};
-    s.fields([&](const char* name, auto& field) { spec_detail::assign(p, name, field); });
+    std::vector<std::string> read;
+    s.fields([&](const char* name, auto& field) {
+        spec_detail::assign(p, name, field);
+        read.emplace_back(name);
+    });
+    p.refuse_unread(read);
     return s;
 }
 

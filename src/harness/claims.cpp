@@ -6,6 +6,7 @@
 #include <toml.hpp>
 
 #include "core/input_error.hpp"
+#include "data/toml_file.hpp"
 
 namespace granrepro {
 
@@ -79,7 +80,7 @@ std::vector<Claim> load_claims(const std::filesystem::path& file, const std::str
     if (!std::filesystem::exists(file)) throw InputError(where + ": expected-claims file is missing");
     std::vector<Claim> claims;
     try {
-        const auto root = toml::parse(where);
+        const auto root = parse_toml_file(file, "expected-claims file");
         auto line = [](const toml::value& v) { return " (line " + std::to_string(v.location().line()) + ")"; };
         for (const auto& [key, v] : root.as_table())
             if (key != "experiment" && key != "claim")
@@ -120,6 +121,9 @@ std::vector<Claim> load_claims(const std::filesystem::path& file, const std::str
                 if (val && !(*val >= 0 && std::isfinite(*val)))
                     throw InputError(claim_where + line(c.at(key)) + ": " + key + " = " + num(*val) +
                                      " must be a finite number >= 0");
+            // The verdict would silently use rel_tol alone.
+            if (k.rel_tol && k.abs_tol)
+                throw InputError(claim_where + line(c.at("abs_tol")) + ": give rel_tol or abs_tol, not both");
             if (k.paper && !std::isfinite(*k.paper))
                 throw InputError(claim_where + line(c.at("paper")) + ": paper = " + num(*k.paper) + " must be finite");
             if (k.min && k.max && *k.min > *k.max)
@@ -171,8 +175,7 @@ std::vector<Claim> load_claims(const std::filesystem::path& file, const std::str
         if (std::string(e.what()).rfind(where, 0) == 0) throw;
         throw InputError(where + ": " + e.what());
     } catch (const std::exception& e) {
-        std::string msg = e.what();
-        throw InputError(where + ": corrupt expected-claims file: " + msg.substr(0, msg.find('\n')));
+        throw InputError(toml_error_line(where, e.what()));
     }
     return claims;
 }
@@ -213,13 +216,15 @@ std::vector<ClaimResult> evaluate_claims(const std::vector<Claim>& claims, const
     return out;
 }
 
-std::string format_claim_table(const std::string& experiment, const std::vector<ClaimResult>& results) {
+std::string format_claim_table(const std::string& experiment, const std::vector<ClaimResult>& results,
+                               const std::vector<std::string>& notes) {
     std::ostringstream os;
     auto pad = [](std::string s, std::size_t w) {
         if (s.size() > w) s = s.substr(0, w - 1) + "~";
         return s + std::string(w - s.size(), ' ');
     };
     os << "check " << experiment << "\n";
+    for (const auto& n : notes) os << "  " << n << "\n";
     os << "  " << pad("claim", 34) << pad("paper / relation", 22) << pad("our band (deviation)", 22)
        << pad("measured", 11) << pad("tolerance", 11) << "verdict\n";
     int explained = 0;

@@ -65,8 +65,10 @@ std::vector<Claim> load_claims(const std::filesystem::path& file, const std::str
 // scalars: name -> value (null or NaN for a measurement that could not be made).
 std::vector<ClaimResult> evaluate_claims(const std::vector<Claim>& claims,
                                          const nlohmann::json& scalars, Scale scale);
-// One row per claim: the paper's value or relation beside our deviation band.
-std::string format_claim_table(const std::string& experiment, const std::vector<ClaimResult>& results);
+// One row per claim: the paper's value or relation beside our deviation band. Each note is a line
+// under the title (the --set overrides, an unverified result).
+std::string format_claim_table(const std::string& experiment, const std::vector<ClaimResult>& results,
+                               const std::vector<std::string>& notes = {});
 // The known-deviation texts and band reasons of the claims that are not PASS (`check --explain`).
 std::string format_deviation_explanations(const std::vector<ClaimResult>& results);
 nlohmann::json claims_to_json(const std::vector<ClaimResult>& results);

@@ -2,6 +2,7 @@
 #include <toml.hpp>
 
 #include "core/input_error.hpp"
+#include "data/toml_file.hpp"
 #include "harness/experiment.hpp"
 
 namespace granrepro {
@@ -31,9 +32,8 @@ std::filesystem::path project_root() {
 }
 
 ExperimentInfo ExperimentInfo::load(const std::filesystem::path& file) {
-    if (!std::filesystem::exists(file)) throw InputError(file.string() + ": experiment file not found");
+    const auto root = parse_toml_file(file, "experiment file");
     try {
-        const auto root = toml::parse(file.string());
         ExperimentInfo info;
         info.file = file;
         info.name = toml::find<std::string>(root, "name");
@@ -46,8 +46,7 @@ ExperimentInfo ExperimentInfo::load(const std::filesystem::path& file) {
     } catch (const InputError&) {
         throw;
     } catch (const std::exception& e) {
-        std::string msg = e.what();
-        throw InputError(file.string() + ": " + msg.substr(0, msg.find('\n')));
+        throw InputError(toml_error_line(file.string(), e.what()));
     }
 }
 

@@ -1,12 +1,14 @@
 #include "harness/runner.hpp"
 
 #include <algorithm>
+#include <cerrno>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <ctime>
 #include <fstream>
+#include <limits>
 #include <optional>
 #include <sstream>
 
@@ -107,34 +109,116 @@ nlohmann::json read_summary(const fs::path& file, const std::string& name) {
     return j;
 }
 
-// data.h5 must open, carry the result schema of this experiment, hold the scalars summary.json
-// states (bit for bit; NaN for null), and every table must read back whole: a truncated file
-// fails one of these.
-void check_data_file(const fs::path& file, const std::string& name, const nlohmann::json& scalars) {
+// Where one of the two files disagrees with the other: bad input naming the file, what differs
+// and the way out.
+[[noreturn]] void disagree(const fs::path& file, const std::string& what, const std::string& name) {
+    throw InputError(file.string() + ": " + what + "; rerun `granrepro " + name + "`");
+}
+
+// Files written before 2026-12 store the seed as text.
+nlohmann::json seed_of(const H5File& f) {
+    try {
+        return f.read_u64_attr("seed");
+    } catch (const std::runtime_error&) {
+        const std::string text = f.read_string_attr("seed");
+        char* end = nullptr;
+        errno = 0;
+        const unsigned long long seed = std::strtoull(text.c_str(), &end, 10);
+        if (text.empty() || *end || errno || text[0] == '-') return text; // compares unequal to any number
+        return std::uint64_t(seed);
+    }
+}
+
+// data.h5 must open, carry the result schema of this experiment, agree with summary.json on
+// experiment, scale, seed and code version, hold the scalars summary.json states (bit for bit;
+// NaN for null), and every table must read back whole: a truncated file fails one of these.
+// From schema_version 2 on, each file also carries the other's content hash (docs/schema.md),
+// so an edit of either one is found. Returns false for files written before the hashes (both of
+// schema_version 1): they are checked as before, unverified.
+bool check_data_file(const fs::path& file, const std::string& name, const fs::path& summary_file,
+                     const nlohmann::json& summary) {
     if (!fs::exists(file)) throw InputError(file.string() + ": missing (summary.json has no data file beside it)");
     try {
         const H5File f = H5File::open(file.string());
-        f.require_schema("granrepro-result", 1);
+        const long version = f.require_schema("granrepro-result", 1, 2);
         if (const std::string e = f.read_string_attr("experiment"); e != name)
             throw std::runtime_error("holds results of experiment '" + e + "'");
+        // A one-sided edit of these would judge the data by the wrong claims ("paper" on quick
+        // data) or hide the paper-only ones as skipped.
+        auto same = [&](const char* field, const nlohmann::json& in_h5, bool optional) {
+            if (!summary.contains(field)) {
+                if (optional) return;
+                disagree(summary_file, std::string("has no '") + field + "' (data.h5 beside it has " + in_h5.dump() + ")",
+                         name);
+            }
+            if (summary[field] != in_h5)
+                disagree(summary_file, std::string("'") + field + "' is " + json_kind(summary[field]) +
+                                           " but data.h5 beside it has " + json_kind(in_h5) + " (one of the two was edited)",
+                         name);
+        };
+        same("experiment", name, false);
+        same("scale", f.read_string_attr("scale"), false);
+        same("seed", seed_of(f), false);
+        if (f.has_attr("code_version")) same("code_version", f.read_string_attr("code_version"), true);
+        const bool hashed = version >= 2 || summary.value("schema_version", 0) >= 2;
+        if (hashed) {
+            if (!f.has_attr("summary_json_hash"))
+                throw std::runtime_error("has no summary_json_hash (summary.json is of schema_version 2)");
+            if (f.read_string_attr("summary_json_hash") != summary_content_hash(summary))
+                disagree(summary_file, "content differs from the hash data.h5 beside it recorded for it (edited since the run?)",
+                         name);
+            if (!summary.contains("data_h5_hash") || !summary["data_h5_hash"].is_object())
+                disagree(summary_file, "has no 'data_h5_hash' object (data.h5 beside it is of schema_version 2)", name);
+        }
+        const nlohmann::json found = data_content_hash(file); // reads every table whole
+        if (hashed) {
+            const nlohmann::json& recorded = summary["data_h5_hash"];
+            if (recorded.value("scalars", "") != found["scalars"])
+                disagree(file, "its scalars differ from the hash summary.json recorded for them (edited since the run?)", name);
+            const nlohmann::json tables = recorded.value("tables", nlohmann::json::object());
+            const std::string omitted = f.has_attr("omitted_tables") ? f.read_string_attr("omitted_tables") : "";
+            for (auto it = found["tables"].begin(); it != found["tables"].end(); ++it)
+                if (!tables.contains(it.key()) || tables[it.key()] != it.value())
+                    disagree(file, "table '" + it.key() + "' differs from the hash summary.json recorded for it (edited since the run?)",
+                             name);
+            // A compact copy (export) leaves large tables out and names them.
+            for (auto it = tables.begin(); it != tables.end(); ++it)
+                if (!found["tables"].contains(it.key()) && omitted.find(it.key() + " (") == std::string::npos)
+                    disagree(file, "has no table '" + it.key() + "' (summary.json records it)", name);
+        }
         const H5Object sc = f.open_group("scalars");
+        const nlohmann::json& scalars = summary["scalars"];
         for (auto it = scalars.begin(); it != scalars.end(); ++it) {
             if (!sc.has(it.key())) throw std::runtime_error("has no scalar '" + it.key() + "' (summary.json has it)");
             const std::vector<double> v = sc.read_dataset(it.key());
-            const bool same = v.size() == 1 && (it.value().is_null() ? !std::isfinite(v[0])
-                                                                     : v[0] == it.value().get<double>());
-            if (!same) throw std::runtime_error("scalar '" + it.key() + "' differs from summary.json");
+            const bool same_value = v.size() == 1 && (it.value().is_null() ? !std::isfinite(v[0])
+                                                                           : v[0] == it.value().get<double>());
+            if (!same_value) throw std::runtime_error("scalar '" + it.key() + "' differs from summary.json");
         }
-        const H5Object tables = f.open_group("tables");
-        for (const auto& t : tables.children()) {
-            const H5Object g = tables.open_group(t);
-            for (const auto& c : g.children()) g.read_dataset(c);
-        }
+        return hashed;
+    } catch (const InputError&) {
+        throw;
     } catch (const std::exception& e) {
         std::string msg = e.what();
         throw InputError(file.string() + ": damaged or not this experiment's results (" + msg.substr(0, msg.find('\n')) +
                          "); rerun `granrepro " + name + "`");
     }
+}
+
+// The lines under a check table's title: the --set overrides, so that a modified run's table
+// cannot pass for the default's, and whether the two files could be verified against each other.
+std::vector<std::string> check_notes(const nlohmann::json& overrides, bool verified) {
+    std::vector<std::string> notes;
+    if (overrides.is_object() && !overrides.empty()) {
+        std::string sets;
+        for (auto it = overrides.begin(); it != overrides.end(); ++it)
+            sets += (sets.empty() ? "" : " ") + it.key() + "=" + (it.value().is_string() ? it.value().get<std::string>()
+                                                                                         : it.value().dump());
+        notes.push_back("parameters changed from the defaults (--set): " + sets);
+    }
+    if (!verified) notes.push_back("unverified: written before hashes (schema_version 1); data.h5 and summary.json "
+                                   "are compared field by field only");
+    return notes;
 }
 } // namespace
 
@@ -146,6 +230,7 @@ int run_experiment(const std::string& name, const RunOptions& opt, VerdictCounts
         if (!makes(info, f)) throw InputError("figure " + f + " is not made by experiment " + name);
     // Read the claims before spending time on the run: a broken file is an input error.
     const auto claims = load_claims(expected_file(name), name);
+    SweepPlan plan = sweep_plan(name, opt);
     ensure_writable_directory(opt.out, "--out");
 
     const fs::path final_dir = opt.out / name;
@@ -154,9 +239,6 @@ int run_experiment(const std::string& name, const RunOptions& opt, VerdictCounts
     // Shards of one sweep share the lock (each point is its own file), a whole run or `gather`
     // holds it alone; MPI ranks other than 0 run under rank 0's lock. Only a lone holder may
     // clean leftovers: a shard's in-flight point files look like a dead run's.
-    SweepPlan plan = opt.sweep;
-    if (plan.mode == SweepPlan::Mode::All && opt.shard_from_slurm && exp.distributed)
-        if (const auto shard = slurm_array_shard()) plan = *shard;
     const bool shard_run = plan.mode == SweepPlan::Mode::Shard;
     const int ranks = mpi::size();
     const bool rank0 = mpi::rank() == 0;
@@ -257,11 +339,11 @@ int run_experiment(const std::string& name, const RunOptions& opt, VerdictCounts
         for (const auto& id : to_render) plot_texts.emplace_back(id, read_file(project_root() / "plots" / (id + ".gp")));
         const Provenance prov{name,     info.paper, read_file(info.file),           opt.scale, opt.seed,
                               wall,     opt.threads, opt.command_line, read_file(expected_file(name)), plot_texts};
-        write_result_h5(stage->path() / "data.h5", prov, params, result);
-        write_tables_tsv(stage->path() / "tables", result);
         nlohmann::json summary = summary_json(prov, params, result);
         summary["claims"] = claims_to_json(verdicts);
-        write_file_durably(stage->path() / "summary.json", summary.dump(2) + "\n");
+        write_result_h5(stage->path() / "data.h5", prov, params, result, summary_content_hash(summary));
+        write_tables_tsv(stage->path() / "tables", result);
+        write_file_durably(stage->path() / "summary.json", summary_text(summary));
         for (const auto& id : to_render) {
             const RenderOutcome o = render_figure(id, stage->path(), final_dir);
             if ((o == RenderOutcome::Failed || o == RenderOutcome::Skipped) && requested(id)) not_drawn.push_back(id);
@@ -282,7 +364,11 @@ int run_experiment(const std::string& name, const RunOptions& opt, VerdictCounts
     std::error_code ec;
     fs::remove_all(work_dir, ec);
     if (!opt.quiet) std::fprintf(stderr, "%s: %.1f s, results in %s\n", name.c_str(), wall, final_dir.c_str());
-    std::fputs(format_claim_table(name + " (" + to_string(opt.scale) + " scale)", verdicts).c_str(), stdout);
+    nlohmann::json sets = nlohmann::json::object();
+    for (const auto& p : params.all())
+        if (p.overridden) sets[p.name] = p.value_text();
+    std::fputs(format_claim_table(name + " (" + to_string(opt.scale) + " scale)", verdicts, check_notes(sets, true)).c_str(),
+               stdout);
     std::fflush(stdout);
     if (totals) totals->add(verdicts);
     throw_if_interrupted(" after the results were written to " + final_dir.string());
@@ -304,14 +390,52 @@ SweepPlan parse_points(const std::string& text) {
     return plan;
 }
 
+namespace {
+// A Slurm job-array variable: unset, or a whole integer in [lo, hi]. Garbage is refused by name:
+// atol("abc") = 0 used to run shard 1 of 2 without a word.
+std::optional<long> slurm_number(const char* var, long lo, long hi) {
+    const char* text = std::getenv(var);
+    if (!text) return std::nullopt;
+    long x = 0;
+    if (!parse_long(text, x) || x < lo || x > hi)
+        throw InputError(std::string(var) + "=" + text + ": must be an integer " +
+                         (hi == std::numeric_limits<long>::max() ? ">= " + std::to_string(lo)
+                                                                  : "in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]") +
+                         " (Slurm job array; outside one, unset it or pass --points I/N)");
+    return x;
+}
+} // namespace
+
 std::optional<SweepPlan> slurm_array_shard() {
-    const char* id = std::getenv("SLURM_ARRAY_TASK_ID");
-    const char* count = std::getenv("SLURM_ARRAY_TASK_COUNT");
-    if (!id || !count) return std::nullopt;
-    const char* min = std::getenv("SLURM_ARRAY_TASK_MIN");
-    const char* step = std::getenv("SLURM_ARRAY_TASK_STEP");
-    const long i = std::atol(id), lo = min ? std::atol(min) : 0, st = step ? std::max(1L, std::atol(step)) : 1;
-    return parse_points(std::to_string((i - lo) / st + 1) + "/" + count);
+    const long most = std::numeric_limits<int>::max();
+    const auto id = slurm_number("SLURM_ARRAY_TASK_ID", 0, std::numeric_limits<long>::max());
+    const auto count = slurm_number("SLURM_ARRAY_TASK_COUNT", 1, most);
+    if (!id && !count) return std::nullopt;
+    if (!id || !count)
+        throw InputError(std::string(id ? "SLURM_ARRAY_TASK_COUNT" : "SLURM_ARRAY_TASK_ID") + " is not set but " +
+                         (id ? "SLURM_ARRAY_TASK_ID" : "SLURM_ARRAY_TASK_COUNT") +
+                         " is: cannot tell which shard this task is; pass --points I/N");
+    const long min = slurm_number("SLURM_ARRAY_TASK_MIN", 0, std::numeric_limits<long>::max()).value_or(0);
+    const long step = slurm_number("SLURM_ARRAY_TASK_STEP", 1, std::numeric_limits<long>::max()).value_or(1);
+    // Task IDs are MIN, MIN + STEP, ..., COUNT of them; shard I of COUNT is the I-th.
+    if (*id < min || (*id - min) % step != 0 || (*id - min) / step >= *count)
+        throw InputError("SLURM_ARRAY_TASK_ID=" + std::to_string(*id) + ": not one of the array's " +
+                         std::to_string(*count) + " task IDs " + std::to_string(min) + ", " + std::to_string(min) + "+" +
+                         std::to_string(step) + ", ... (SLURM_ARRAY_TASK_MIN=" + std::to_string(min) +
+                         ", SLURM_ARRAY_TASK_STEP=" + std::to_string(step) + ", SLURM_ARRAY_TASK_COUNT=" +
+                         std::to_string(*count) + ")");
+    SweepPlan plan;
+    plan.mode = SweepPlan::Mode::Shard;
+    plan.shard = int((*id - min) / step + 1);
+    plan.shards = int(*count);
+    return plan;
+}
+
+SweepPlan sweep_plan(const std::string& name, const RunOptions& opt) {
+    SweepPlan plan = opt.sweep;
+    if (plan.mode == SweepPlan::Mode::All && opt.shard_from_slurm && find_experiment(name).distributed)
+        if (const auto shard = slurm_array_shard()) plan = *shard;
+    return plan;
 }
 
 bool has_results(const std::string& name, const fs::path& out) { return fs::exists(out / name / "summary.json"); }
@@ -324,10 +448,11 @@ int check_experiment(const std::string& name, const fs::path& out, const CheckOp
         throw InputError("check " + name + ": no results in " + (out / name).string() + "; run `granrepro " +
                          name + "` first");
     const nlohmann::json summary = read_summary(summary_path, name);
-    check_data_file(out / name / "data.h5", name, summary["scalars"]);
+    const bool verified = check_data_file(out / name / "data.h5", name, summary_path, summary);
     const Scale scale = parse_scale(summary["scale"].get<std::string>());
     const auto verdicts = evaluate_claims(claims, summary["scalars"], scale);
-    std::fputs(format_claim_table(name + " (" + to_string(scale) + " scale)", verdicts).c_str(), stdout);
+    const auto notes = check_notes(summary.value("overridden_parameters", nlohmann::json::object()), verified);
+    std::fputs(format_claim_table(name + " (" + to_string(scale) + " scale)", verdicts, notes).c_str(), stdout);
     if (opt.explain) std::fputs(format_deviation_explanations(verdicts).c_str(), stdout);
     std::fflush(stdout);
     if (totals) totals->add(verdicts);

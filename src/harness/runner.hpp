@@ -29,7 +29,12 @@ struct RunOptions {
 SweepPlan parse_points(const std::string& text);
 // The shard of a Slurm job-array task ($SLURM_ARRAY_TASK_ID of $SLURM_ARRAY_TASK_COUNT, counted
 // from $SLURM_ARRAY_TASK_MIN in steps of $SLURM_ARRAY_TASK_STEP), or nothing outside an array job.
+// Throws InputError naming the variable if one is not a whole number in range or the ID is not
+// one of the array's.
 std::optional<SweepPlan> slurm_array_shard();
+// How a run of experiment `name` takes part in its sweep: opt.sweep, or the Slurm array task's
+// shard (a distributed experiment without --points). The run and --dry-run both ask here.
+SweepPlan sweep_plan(const std::string& name, const RunOptions& opt);
 
 const Experiment& find_experiment(const std::string& name);          // throws InputError
 ExperimentInfo experiment_info(const std::string& name);

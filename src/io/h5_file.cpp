@@ -245,6 +245,7 @@ std::string H5Object::read_string_attr(const std::string& name) const {
 }
 
 bool H5Object::has(const std::string& name) const { return H5Lexists(id_, name.c_str(), H5P_DEFAULT) > 0; }
+bool H5Object::has_attr(const std::string& name) const { return H5Aexists(id_, name.c_str()) > 0; }
 
 std::vector<std::string> H5Object::children(H5_index_t order) const {
     H5G_info_t info;
@@ -312,15 +313,18 @@ void H5Object::stamp_schema(const std::string& schema, long version) const {
     attr("schema_version", version);
 }
 
-void H5Object::require_schema(const std::string& schema, long version) const {
+long H5Object::require_schema(const std::string& schema, long oldest, long newest) const {
     std::string found;
     try {
         found = read_string_attr("schema");
     } catch (const std::exception&) {
     }
     if (found != schema) throw std::runtime_error("not a " + schema + " group (schema attribute: '" + found + "')");
-    if (read_long_attr("schema_version") != version)
-        throw std::runtime_error(schema + ": unsupported schema_version (this build reads " + std::to_string(version) + ")");
+    const long version = read_long_attr("schema_version");
+    if (version < oldest || version > newest)
+        throw std::runtime_error(schema + ": unsupported schema_version " + std::to_string(version) + " (this build reads " +
+                                 std::to_string(oldest) + (newest > oldest ? " to " + std::to_string(newest) : "") + ")");
+    return version;
 }
 
 } // namespace granrepro

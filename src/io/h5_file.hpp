@@ -47,6 +47,7 @@ public:
     template <class T>
     std::vector<T> read_array(const std::string& name) const;
     bool has(const std::string& name) const; // a link (group or dataset) of that name exists
+    bool has_attr(const std::string& name) const;
     // Names of the links in this group (H5_INDEX_CRT_ORDER: in creation order, where it was tracked).
     std::vector<std::string> children(H5_index_t order = H5_INDEX_NAME) const;
     std::vector<std::string> attribute_names() const;
@@ -62,7 +63,9 @@ public:
     // Attributes "schema" and "schema_version" name the layout of a group.
     void stamp_schema(const std::string& schema, long version) const;
     // Throws std::runtime_error unless the group carries exactly this schema and version.
-    void require_schema(const std::string& schema, long version) const;
+    void require_schema(const std::string& schema, long version) const { require_schema(schema, version, version); }
+    // The same for a reader of several versions; returns the one found.
+    long require_schema(const std::string& schema, long oldest, long newest) const;
 
 protected:
     hid_t id_ = -1;

@@ -1,11 +1,13 @@
 #include "io/result_writer.hpp"
 
+#include <bit>
 #include <cmath>
 #include <ctime>
 #include <iomanip>
 #include <sstream>
 
 #include "core/provenance.hpp"
+#include "core/stable_hash.hpp"
 #include "io/durable_file.hpp"
 #include "io/h5_file.hpp"
 
@@ -91,6 +93,31 @@ void copy_table(const H5Object& tables_in, const std::string& name, const H5Obje
     }
 }
 
+// The canonical bytes of a hash: every text ends with a NUL, so no two sequences of names run
+// together into the same bytes; numbers are their 8 little-endian bytes, NaN payloads included.
+struct ContentHash {
+    std::uint64_t h = kFnv1a64Start;
+    void text(const std::string& s) { h = fnv1a64(std::string_view(s.c_str(), s.size() + 1), h); }
+    void u64(std::uint64_t x) {
+        char b[8];
+        for (int i = 0; i < 8; ++i) b[i] = char((x >> (8 * i)) & 0xff);
+        h = fnv1a64(std::string_view(b, 8), h);
+    }
+    void column(const std::string& name, const std::string& unit, const std::vector<double>& values) {
+        text(name);
+        text(unit);
+        u64(values.size());
+        for (const double v : values) u64(std::bit_cast<std::uint64_t>(v));
+    }
+    std::string hex() const { return "fnv1a64:" + hex64(h); }
+};
+
+H5Object open_dataset(const H5Object& g, const std::string& name) {
+    const hid_t id = H5Dopen2(g.id(), name.c_str(), H5P_DEFAULT);
+    if (id < 0) throw std::runtime_error("cannot open dataset " + name);
+    return H5Object(id, &H5Dclose);
+}
+
 std::string utc_now() {
     const std::time_t t = std::time(nullptr);
     std::tm tm{};
@@ -102,9 +129,9 @@ std::string utc_now() {
 } // namespace
 
 void write_result_h5(const std::filesystem::path& file, const Provenance& prov, const ParameterSet& params,
-                     const Result& result) {
+                     const Result& result, const std::string& summary_hash) {
     H5File f = H5File::create(file.string());
-    f.stamp_schema("granrepro-result", 1);
+    f.stamp_schema("granrepro-result", 2);
     f.attr("experiment", prov.experiment);
     f.attr("paper", prov.paper);
     f.attr("scale", std::string(to_string(prov.scale)));
@@ -114,6 +141,7 @@ void write_result_h5(const std::filesystem::path& file, const Provenance& prov, 
     f.attr("threads", long(prov.threads));
     f.attr("created_utc", utc_now());
     f.attr("experiment_file", prov.experiment_file_text);
+    f.attr("summary_json_hash", summary_hash);
     {
         const H5Object g = f.group("parameters");
         for (const auto& p : params.all()) {
@@ -198,17 +226,60 @@ nlohmann::json summary_json(const Provenance& prov, const ParameterSet& params, 
     for (const auto& p : params.all())
         if (p.overridden) sets[p.name] = p.value_text();
     for (const auto& s : result.scalars) units[s.name] = s.unit;
-    return {{"schema", "granrepro-summary"}, {"schema_version", 1}, {"experiment", prov.experiment},
+    return {{"schema", "granrepro-summary"}, {"schema_version", 2}, {"experiment", prov.experiment},
             {"scale", to_string(prov.scale)}, {"seed", prov.seed}, {"code_version", code_version()},
             {"wall_time_s", prov.wall_time_s}, {"command_line", prov.command_line},
             {"overridden_parameters", sets}, {"scalars", scalars_json(result)}, {"units", units},
-            {"parameters", params.to_json()}};
+            {"parameters", params.to_json()}, {"data_h5_hash", data_content_hash(result)}};
+}
+
+nlohmann::json data_content_hash(const Result& result) {
+    ContentHash scalars;
+    for (const auto& s : result.scalars) scalars.column(s.name, s.unit, {s.value});
+    nlohmann::json tables = nlohmann::json::object();
+    for (const auto& t : result.tables) {
+        ContentHash h;
+        h.text(t.name);
+        for (const auto& c : t.columns) h.column(c.name, c.unit, c.values);
+        tables[t.name] = h.hex();
+    }
+    return {{"scalars", scalars.hex()}, {"tables", tables}};
+}
+
+nlohmann::json data_content_hash(const std::filesystem::path& h5) {
+    const H5File f = H5File::open(h5.string());
+    auto column = [](ContentHash& h, const H5Object& g, const std::string& name) {
+        h.column(name, open_dataset(g, name).read_string_attr("unit"), g.read_dataset(name));
+    };
+    ContentHash scalars;
+    const H5Object sg = f.open_group("scalars");
+    for (const auto& s : links_in_creation_order(sg)) column(scalars, sg, s);
+    nlohmann::json tables = nlohmann::json::object();
+    const H5Object tg = f.open_group("tables");
+    for (const auto& t : links_in_creation_order(tg)) {
+        const H5Object g = tg.open_group(t);
+        ContentHash h;
+        h.text(t);
+        for (const auto& c : links_in_creation_order(g)) column(h, g, c);
+        tables[t] = h.hex();
+    }
+    return {{"scalars", scalars.hex()}, {"tables", tables}};
+}
+
+// Bytes that are not UTF-8 (an --out path in Latin-1, in command_line) become U+FFFD: dump() would
+// throw, and the replacement reads back as itself, so the hash still matches the file.
+std::string summary_content_hash(const nlohmann::json& summary) {
+    return "fnv1a64:" + hex64(fnv1a64(summary.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace)));
+}
+
+std::string summary_text(const nlohmann::json& summary) {
+    return summary.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
 }
 
 std::vector<std::string> write_compact_result_h5(const std::filesystem::path& src, const std::filesystem::path& dst,
                                                  std::size_t max_values) {
     const H5File in = H5File::open(src.string());
-    in.require_schema("granrepro-result", 1);
+    in.require_schema("granrepro-result", 1, 2);
     H5File out = H5File::create(dst.string());
     for (const auto& a : in.attribute_names()) in.copy_attr_to(a, out);
     for (const char* g : {"parameters", "scalars", "provenance"})

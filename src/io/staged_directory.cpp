@@ -13,6 +13,7 @@
 
 #include "core/input_error.hpp"
 #include "core/interrupt.hpp"
+#include "data/parameter_set.hpp"
 #include "io/durable_file.hpp"
 #include "io/write_error.hpp"
 
@@ -34,6 +35,26 @@ long pid_suffix(const std::string& name, const std::string& prefix) {
     const std::string digits = name.substr(prefix.size());
     if (digits.find_first_not_of("0123456789") != std::string::npos || digits.size() > 9) return -1;
     return std::stol(digits);
+}
+
+// A folder that cannot be removed (a file in it we may not delete) would stay hidden beside the
+// results for ever, each run trying again in silence: say so, in one line per process.
+void remove_or_warn(const std::vector<fs::path>& folders, const char* what) {
+    static bool warned = false;
+    std::vector<std::string> left;
+    std::string reason;
+    for (const auto& p : folders) {
+        std::error_code ec;
+        fs::remove_all(p, ec);
+        if (ec && fs::exists(p)) {
+            left.push_back(p.string());
+            if (reason.empty()) reason = ec.message();
+        }
+    }
+    if (left.empty() || warned) return;
+    warned = true;
+    std::fprintf(stderr, "granrepro: warning: cannot remove %s %s (%s); remove %s by hand\n", what,
+                 joined(left).c_str(), reason.c_str(), left.size() == 1 ? "it" : "them");
 }
 
 void rename_or_throw(const fs::path& from, const fs::path& to, const fs::path& shown) {
@@ -97,7 +118,7 @@ void StagedDirectory::commit() {
         committed_ = true;
         fsync_path(parent);
         if (test_hook("after-exchange")) ::raise(SIGKILL);
-        fs::remove_all(staging_, ec); // the old results; a failure leaves them for the next run to clean
+        remove_or_warn({staging_}, "the previous results, now in"); // the next run tries again
         return;
     }
     if (!exchange_refused_for_test && errno != EINVAL && errno != ENOSYS)
@@ -114,7 +135,7 @@ void StagedDirectory::commit() {
     }
     committed_ = true;
     fsync_path(parent);
-    fs::remove_all(old, ec);
+    remove_or_warn({old}, "the previous results, now in");
 }
 
 void clean_staging_leftovers(const fs::path& final_path, bool quiet) {
@@ -138,8 +159,8 @@ void clean_staging_leftovers(const fs::path& final_path, bool quiet) {
             olds.erase(olds.begin());
         }
     }
-    for (const auto* list : {&partials, &olds})
-        for (const auto& p : *list) fs::remove_all(p, ec);
+    partials.insert(partials.end(), olds.begin(), olds.end());
+    remove_or_warn(partials, "what an earlier run left:");
 }
 
 void clean_temporary_leftovers(const fs::path& dir) {

@@ -124,6 +124,7 @@ TEST(Cli, WrongDataFilesAreInputErrorsNamingFileAndKey) {
         const char* from;  // first occurrence replaced ...
         const char* to;    // ... by this
         std::vector<std::string> must_mention;
+        bool at_line = false; // must also mention "<file>:<line of from>:" (toml11's location kept)
     };
     const std::vector<Case> cases{
         {"expected/emergency-brake.toml", "rel_tol = ", "rel_tol = -1 #", {"emergency-brake.toml", "claim ", "rel_tol", "line"}},
@@ -139,19 +140,80 @@ TEST(Cli, WrongDataFilesAreInputErrorsNamingFileAndKey) {
         {"experiments/emergency-brake.toml", "value = 2000.0", "value = \"2000\"", {"emergency-brake.toml", "k_N", "must be a number"}},
         {"experiments/emergency-brake.toml", "[parameters.k_N]", "[parameters.k_n]", {"emergency-brake.toml", "k_N"}},
         {"experiments/emergency-brake.toml", "[parameters.k_N]", "[parameters.k_N]\nrnage = 1", {"unknown key 'rnage'", "k_N"}},
+        // Issue 25 item 6: syntax and type errors keep toml11's line; a bad range names the
+        // parameter; two tolerances and a parameter no code reads are refused.
+        {"experiments/emergency-brake.toml", "value = 1.0e-3", "value = ", {"missing value"}, true},
+        {"experiments/emergency-brake.toml", "name = \"emergency-brake\"", "name = 5", {"expected a string value"}, true},
+        {"experiments/emergency-brake.toml", "range = \"(0, 1]\"", "range = \"(0, x]\"",
+         {"emergency-brake.toml", "parameter d_free", "range '(0, x]'", "line"}},
+        {"experiments/emergency-brake.toml", "[parameters.d_free]",
+         "[parameters.unused_x]\nvalue = 1.0\nunit = \"1\"\nsource = \"s\"\n\n[parameters.d_free]",
+         {"emergency-brake.toml", "[parameters.unused_x] is read by no code", "line"}},
+        {"expected/emergency-brake.toml", "id = \"t_col\"", "id = \"t_col", {"emergency-brake.toml"}, true},
+        {"expected/emergency-brake.toml", "id = \"t_col\"", "id = 5", {"expected a string value"}, true},
+        {"expected/emergency-brake.toml", "rel_tol = ", "abs_tol = 0.1\nrel_tol = ", {"claim t_col", "rel_tol or abs_tol, not both", "line"}},
     };
     for (const Case& c : cases) {
         SCOPED_TRACE(std::string(c.file) + ": " + c.to);
         const ProjectCopy home("data-home");
+        const std::string before = slurp(home / c.file);
         replace_in(home / c.file, c.from, c.to);
+        std::vector<std::string> must_mention = c.must_mention;
+        if (c.at_line)
+            must_mention.push_back((home / c.file).string() + ":" +
+                                   std::to_string(1 + std::count(before.begin(), before.begin() + before.find(c.from), '\n')) + ": ");
         const TempPath out("data-out");
         for (const char* mode : {"--dry-run", ""}) {
             const Outcome o = run(std::string("emergency-brake --quiet ") + mode + " --out " + out.string(),
                                   "GRANREPRO_HOME=" + home.string());
-            expect_one_line_exit(o, 2, c.must_mention);
+            expect_one_line_exit(o, 2, must_mention);
             EXPECT_FALSE(fs::exists(out / "emergency-brake"));
             EXPECT_FALSE(fs::exists(out / ".emergency-brake.checkpoint"));
         }
+    }
+}
+
+// A directory where a data file should be is exit 2 naming it (toml11 threw std::bad_alloc).
+TEST(Cli, DataFileThatIsADirectoryIsAnInputError) {
+    for (const char* file : {"experiments/emergency-brake.toml", "expected/emergency-brake.toml"}) {
+        SCOPED_TRACE(file);
+        const ProjectCopy home("dir-home");
+        fs::remove(home / file);
+        fs::create_directory(home / file);
+        const TempPath out("dir-out");
+        for (const char* mode : {"--dry-run", ""})
+            expect_one_line_exit(run(std::string("emergency-brake --quiet ") + mode + " --out " + out.string(),
+                                     "GRANREPRO_HOME=" + home.string()),
+                                 2, {(home / file).string() + ": ", "not a regular file (a directory)"});
+        EXPECT_FALSE(fs::exists(out / "emergency-brake"));
+    }
+}
+
+// Issue 25 item 6: Slurm's job-array variables are parsed strictly and named; an ID outside the
+// array names SLURM_ARRAY_TASK_ID, not --points (which nobody passed). --dry-run agrees.
+TEST(Cli, SlurmArrayVariablesAreParsedStrictly) {
+    const std::vector<std::pair<std::string, std::string>> cases{
+        {"SLURM_ARRAY_TASK_ID=abc SLURM_ARRAY_TASK_COUNT=2", "SLURM_ARRAY_TASK_ID=abc: must be an integer"},
+        {"SLURM_ARRAY_TASK_ID=1x SLURM_ARRAY_TASK_COUNT=2", "SLURM_ARRAY_TASK_ID=1x: must be an integer"},
+        {"SLURM_ARRAY_TASK_ID=0 SLURM_ARRAY_TASK_COUNT=two", "SLURM_ARRAY_TASK_COUNT=two: must be an integer"},
+        {"SLURM_ARRAY_TASK_ID=0 SLURM_ARRAY_TASK_COUNT=0", "SLURM_ARRAY_TASK_COUNT=0"},
+        {"SLURM_ARRAY_TASK_ID=0 SLURM_ARRAY_TASK_COUNT=2 SLURM_ARRAY_TASK_MIN=x", "SLURM_ARRAY_TASK_MIN=x"},
+        {"SLURM_ARRAY_TASK_ID=0 SLURM_ARRAY_TASK_COUNT=2 SLURM_ARRAY_TASK_STEP=0", "SLURM_ARRAY_TASK_STEP=0"},
+        {"SLURM_ARRAY_TASK_ID=0 SLURM_ARRAY_TASK_COUNT=2 SLURM_ARRAY_TASK_STEP=-1", "SLURM_ARRAY_TASK_STEP=-1"},
+        {"SLURM_ARRAY_TASK_ID=7 SLURM_ARRAY_TASK_COUNT=2", "SLURM_ARRAY_TASK_ID=7: not one of the array's 2 task IDs"},
+        {"SLURM_ARRAY_TASK_ID=2 SLURM_ARRAY_TASK_MIN=3 SLURM_ARRAY_TASK_COUNT=2", "SLURM_ARRAY_TASK_ID=2: not one of"},
+        {"SLURM_ARRAY_TASK_ID=4 SLURM_ARRAY_TASK_STEP=3 SLURM_ARRAY_TASK_COUNT=2", "SLURM_ARRAY_TASK_ID=4: not one of"},
+        {"SLURM_ARRAY_TASK_ID=1", "SLURM_ARRAY_TASK_COUNT is not set"},
+    };
+    for (const auto& [env, message] : cases) {
+        SCOPED_TRACE(env);
+        const TempPath out("slurm");
+        for (const char* mode : {"--dry-run", ""}) {
+            const Outcome o = run(std::string("parameter-study --quiet ") + mode + " --out " + out.string(), env);
+            expect_one_line_exit(o, 2, {message});
+            EXPECT_EQ(o.err.find("expected I/N"), std::string::npos) << "blames --points, which nobody passed: " << o.err;
+        }
+        EXPECT_FALSE(fs::exists(out)) << "written for bad input";
     }
 }
 

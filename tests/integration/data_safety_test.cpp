@@ -413,3 +413,144 @@ TEST(DataSafety, CheckRefusesDamagedResultsFiles) {
     put(dir / "data.h5", data);
     EXPECT_EQ(run("check " + kExp + " --out " + out.string()).code, 0);
 }
+
+namespace {
+// Opens a result file for writing, as someone editing it by hand with the HDF5 API would.
+H5Object open_for_edit(const fs::path& h5) { return H5Object(H5Fopen(h5.c_str(), H5F_ACC_RDWR, H5P_DEFAULT), &H5Fclose); }
+
+void overwrite_dataset(const fs::path& h5, const std::string& path, const std::vector<double>& values) {
+    const H5Object f = open_for_edit(h5);
+    ASSERT_GE(f.id(), 0);
+    const H5Object d(H5Dopen2(f.id(), path.c_str(), H5P_DEFAULT), &H5Dclose);
+    ASSERT_GE(d.id(), 0) << path;
+    ASSERT_GE(H5Dwrite(d.id(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()), 0) << path;
+}
+
+void overwrite_root_attr(const fs::path& h5, const std::string& name, const std::string& value) {
+    const H5Object f = open_for_edit(h5);
+    ASSERT_GE(H5Adelete(f.id(), name.c_str()), 0) << name;
+    f.attr(name, value);
+}
+} // namespace
+
+// Issue 25 item 5: summary.json and data.h5 vouch for each other. An edit of either one is exit 2
+// naming the file (and the field where one is compared), never quick data judged as paper scale
+// or paper-only claims hidden as skipped.
+TEST(DataSafety, CheckRefusesOneSidedEdits) {
+    const TempPath out("check-one-sided");
+    const std::string check = "check brake-failure --out " + out.string();
+    ASSERT_EQ(run("brake-failure --quiet --out " + out.string()).code, 0);
+    const fs::path dir = out / "brake-failure", json_file = dir / "summary.json", h5 = dir / "data.h5";
+    const std::string summary_text = slurp(json_file), data = slurp(h5);
+    const nlohmann::json summary = nlohmann::json::parse(summary_text);
+    ASSERT_EQ(summary.at("schema_version"), 2);
+    ASSERT_TRUE(summary.at("data_h5_hash").at("tables").contains("fig3"));
+    const Outcome clean = run(check);
+    ASSERT_EQ(clean.code, 0) << clean.err;
+    EXPECT_EQ(clean.out.find("unverified"), std::string::npos) << clean.out;
+    EXPECT_EQ(clean.out.find("--set"), std::string::npos) << "a default run shows no overrides: " << clean.out;
+
+    // The same content in another layout is the same summary.
+    put(json_file, summary.dump() + "\n");
+    EXPECT_EQ(run(check).code, 0);
+
+    auto edited = [&](const char* field, const nlohmann::json& value) {
+        nlohmann::json j = summary;
+        j[field] = value;
+        return j.dump(2);
+    };
+    struct Case {
+        std::string text;
+        std::vector<std::string> must_mention;
+    };
+    nlohmann::json scalars = summary.at("scalars");
+    scalars["e_N_eq4"] = scalars.at("e_N_eq4").get<double>() * 1.01;
+    nlohmann::json no_hash = summary;
+    no_hash.erase("data_h5_hash");
+    const Case cases[] = {
+        {edited("scale", "paper"), {"'scale' is \"paper\" but data.h5 beside it has \"quick\""}},
+        {edited("seed", 2), {"'seed' is 2 but data.h5 beside it has 1"}},
+        {edited("code_version", "0.0+forged"), {"'code_version'"}},
+        {edited("scalars", scalars), {"content differs from the hash data.h5"}},
+        {edited("overridden_parameters", {{"mu", "0.9"}}), {"content differs from the hash data.h5"}},
+        {no_hash.dump(2), {"content differs from the hash data.h5"}},
+    };
+    for (const auto& c : cases) {
+        SCOPED_TRACE(c.text.substr(0, 200));
+        put(json_file, c.text);
+        std::vector<std::string> parts = c.must_mention;
+        parts.push_back(json_file.string() + ": ");
+        expect_one_line_exit(run(check), 2, parts);
+    }
+    put(json_file, summary_text);
+
+    // data.h5 edited with the HDF5 API: a table value, a scalar, the scale.
+    std::vector<double> dvy = H5File::open(h5.string()).read_dataset("tables/fig3/dvy");
+    dvy[3] *= 1.5;
+    overwrite_dataset(h5, "tables/fig3/dvy", dvy);
+    expect_one_line_exit(run(check), 2, {h5.string() + ": ", "table 'fig3' differs from the hash summary.json recorded"});
+    put(h5, data);
+    overwrite_dataset(h5, "scalars/e_N_eq4", {summary.at("scalars").at("e_N_eq4").get<double>() * 1.01});
+    expect_one_line_exit(run(check), 2, {h5.string() + ": ", "scalars differ from the hash summary.json recorded"});
+    put(h5, data);
+    overwrite_root_attr(h5, "scale", "paper");
+    expect_one_line_exit(run(check), 2, {json_file.string() + ": ", "'scale' is \"quick\" but data.h5 beside it has \"paper\""});
+    put(h5, data);
+    EXPECT_EQ(run(check).code, 0);
+
+    // A compact copy leaves tables out; what it keeps still verifies.
+    const TempPath exported("check-one-sided-export");
+    ASSERT_EQ(run("export brake-failure --max-table-values 100 --out " + out.string() + " --to " + exported.string()).code, 0);
+    EXPECT_EQ(run("check brake-failure --out " + exported.string()).code, 0);
+}
+
+// Results written before the hashes (the committed paper_figures/, schema_version 1) still check,
+// and say that they are unverified.
+TEST(DataSafety, CheckAcceptsResultsWrittenBeforeHashesAsUnverified) {
+    const Outcome o = run("check brake-failure --out " + std::string(GRANREPRO_SOURCE_DIR) + "/paper_figures");
+    EXPECT_EQ(o.code, 0) << o.err;
+    EXPECT_NE(o.out.find("check brake-failure (paper scale)\n  unverified: written before hashes"), std::string::npos)
+        << o.out;
+}
+
+// A modified run's table names its overrides, in the run's output and in `check`'s.
+TEST(DataSafety, CheckTableNamesTheOverrides) {
+    const TempPath out("check-overrides");
+    const Outcome ran = run(kSmallRun + "--out " + out.string());
+    ASSERT_LE(ran.code, 1) << ran.err;
+    const std::string line = "parameters changed from the defaults (--set): n_positions=3 n_vy=15\n";
+    EXPECT_NE(ran.out.find(line), std::string::npos) << ran.out;
+    const Outcome checked = run("check " + kExp + " --out " + out.string());
+    EXPECT_NE(checked.out.find("check " + kExp + " (quick scale)\n  " + line), std::string::npos) << checked.out;
+}
+
+// Issue 25 item 6: previous results that cannot be removed stay as .<exp>.partial-PID; the run
+// says so in one line (and the next run, which cannot remove them either, once more), and a run
+// that can remove them cleans them without a word.
+TEST(DataSafety, UnremovableOldResultsAreNamedOnce) {
+    const TempPath out("undeletable");
+    ASSERT_EQ(run("brake-failure --quiet --out " + out.string()).code, 0);
+    put(out / "brake-failure" / "undeletable", "x");
+    const std::string env = shim_env("GRANREPRO_SHIM_FAIL_UNLINK=undeletable");
+    const Outcome first = run("brake-failure --quiet --out " + out.string(), env);
+    ASSERT_EQ(first.code, 0) << first.err;
+    const auto left = leftovers(out, "brake-failure");
+    ASSERT_EQ(left.size(), 1u);
+    expect_one_line_exit(first, 0, {"warning: cannot remove the previous results", left[0], "remove it by hand"});
+    const Outcome second = run("brake-failure --quiet --out " + out.string(), env);
+    expect_one_line_exit(second, 0, {"warning: cannot remove what an earlier run left", left[0]});
+    const Outcome third = run("brake-failure --quiet --out " + out.string());
+    EXPECT_EQ(third.code, 0);
+    EXPECT_EQ(third.err, "");
+    EXPECT_TRUE(leftovers(out, "brake-failure").empty());
+}
+
+// A folder name that is not UTF-8 (Latin-1 "\xff") used to end the run with exit 1 and a JSON
+// library message when summary.json was written; the text keeps U+FFFD in its place and checks.
+TEST(DataSafety, OutPathThatIsNotUtf8IsWrittenAndChecks) {
+    const TempPath out("latin1-\xff");
+    const Outcome ran = run("brake-failure --quiet --out " + out.string());
+    EXPECT_EQ(ran.code, 0) << ran.err;
+    EXPECT_NE(summary(out / "brake-failure").at("command_line").get<std::string>().find("\xef\xbf\xbd"), std::string::npos);
+    EXPECT_EQ(run("check brake-failure --out " + out.string()).code, 0);
+}

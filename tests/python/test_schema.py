@@ -65,7 +65,7 @@ def test_every_group_dataset_and_attribute_is_documented(quick_out):
 def test_the_documented_root_attributes_are_there(quick_out):
     with h5py.File(os.path.join(quick_out, "brake-failure", "data.h5"), "r") as f:
         for a in ("schema", "schema_version", "experiment", "paper", "scale", "seed", "code_version",
-                  "wall_time_s", "threads", "created_utc", "experiment_file"):
+                  "wall_time_s", "threads", "created_utc", "experiment_file", "summary_json_hash"):
             assert a in f.attrs, a
         for a in ("command_line", "overridden_parameters", "version_compiler", "version_hdf5",
                   "version_fftw", "version_gsl", "expected_file"):

@@ -2,7 +2,10 @@
  *   GRANREPRO_SHIM_FAIL_WRITE=<substring>  write/pwrite to a file whose path contains it fail with
  *                                          ENOSPC once GRANREPRO_SHIM_FAIL_AFTER bytes (default 0)
  *                                          were written to such files by this process;
- *   GRANREPRO_SHIM_FAIL_FSYNC=<substring>  fsync/fdatasync of such a file fail with EIO.
+ *   GRANREPRO_SHIM_FAIL_FSYNC=<substring>  fsync/fdatasync of such a file fail with EIO;
+ *   GRANREPRO_SHIM_FAIL_UNLINK=<substring> unlink/unlinkat/remove of a path (or, for unlinkat, a
+ *                                          name) that contains it fail with EPERM, as for a file
+ *                                          that root cannot delete either (chattr +i).
  * The path of a descriptor is read from /proc/self/fd. Writes inside libc (fwrite, e.g. gnuplot's)
  * are not seen; ours (write(2)) and HDF5's (pwrite(2)) are. */
 #define _GNU_SOURCE
@@ -73,3 +76,28 @@ int fsync(int fd) {
 }
 
 int fdatasync(int fd) { return fsync(fd); }
+
+static int undeletable(const char* path) {
+    const char* want = getenv("GRANREPRO_SHIM_FAIL_UNLINK");
+    if (!want || !*want || !path || !strstr(path, want)) return 0;
+    errno = EPERM;
+    return 1;
+}
+
+int unlink(const char* path) {
+    static int (*real)(const char*);
+    if (!real) real = (int (*)(const char*))dlsym(RTLD_NEXT, "unlink");
+    return undeletable(path) ? -1 : real(path);
+}
+
+int unlinkat(int dirfd, const char* path, int flags) {
+    static int (*real)(int, const char*, int);
+    if (!real) real = (int (*)(int, const char*, int))dlsym(RTLD_NEXT, "unlinkat");
+    return undeletable(path) ? -1 : real(dirfd, path, flags);
+}
+
+int remove(const char* path) {
+    static int (*real)(const char*);
+    if (!real) real = (int (*)(const char*))dlsym(RTLD_NEXT, "remove");
+    return undeletable(path) ? -1 : real(path);
+}

@@ -403,14 +403,15 @@ TEST(ResultExport, CompactCopyKeepsScalarsAndCurvesAndNamesWhatItLeavesOut) {
     snap.add("y", "m").values = std::vector<double>(600, 0.2);
     result.scalar("slope", -0.9731, "1", "fitted slope");
     Provenance prov{"demo", "p", "file text", Scale::Paper, 7, 12.5, 2, "granrepro demo", "expected text", {}};
-    write_result_h5(dir.path / "data.h5", prov, params, result);
+    write_result_h5(dir.path / "data.h5", prov, params, result, "fnv1a64:0123456789abcdef");
     const auto omitted = write_compact_result_h5(dir.path / "data.h5", dir.path / "small.h5", 1000);
     EXPECT_EQ(omitted, std::vector<std::string>{"snapshot_0"});
     const H5File f = H5File::open((dir.path / "small.h5").string());
     EXPECT_EQ(f.read_string_attr("experiment"), "demo");
     EXPECT_EQ(f.read_u64_attr("seed"), 7u);
     EXPECT_EQ(f.read_string_attr("scale"), "paper");
-    EXPECT_EQ(f.read_long_attr("schema_version"), 1);
+    EXPECT_EQ(f.read_long_attr("schema_version"), 2);
+    EXPECT_EQ(f.read_string_attr("summary_json_hash"), "fnv1a64:0123456789abcdef");
     EXPECT_DOUBLE_EQ(f.read_double_attr("wall_time_s"), 12.5);
     EXPECT_EQ(f.read_dataset("scalars/slope"), std::vector<double>{-0.9731});
     EXPECT_EQ(f.read_dataset("tables/curve/K"), (std::vector<double>{1.0, 0.25, 1.0 / 3.0}));

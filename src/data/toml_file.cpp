@@ -1,0 +1,66 @@
+#include "data/toml_file.hpp"
+
+#include <cctype>
+#include <sstream>
+#include <vector>
+
+#include "core/input_error.hpp"
+
+namespace granrepro {
+
+namespace {
+std::string trimmed(const std::string& s) {
+    const auto a = s.find_first_not_of(' ');
+    if (a == std::string::npos) return {};
+    return s.substr(a, s.find_last_not_of(' ') - a + 1);
+}
+} // namespace
+
+std::string toml_error_line(const std::string& file, const std::string& what) {
+    std::istringstream in(what);
+    std::string message, l;
+    std::getline(in, message);
+    if (message.rfind("[error] ", 0) == 0) message.erase(0, 8);
+    // "toml::parse_key_value_pair: missing ..." names the parser's function, not the problem.
+    if (message.rfind("toml::", 0) == 0)
+        if (const auto colon = message.find(": "); colon != std::string::npos) message.erase(0, colon + 2);
+    if (message.rfind("bad_cast to ", 0) == 0) message = "expected a " + message.substr(12) + " value"; // a type error
+    long first = 0, current = 0;
+    std::vector<std::pair<long, std::string>> hints;
+    while (std::getline(in, l)) {
+        const std::string t = trimmed(l);
+        const auto bar = t.find(" |");
+        if (!t.empty() && std::isdigit(static_cast<unsigned char>(t[0])) && bar != std::string::npos &&
+            t.find_first_not_of("0123456789") == bar) {
+            current = std::stol(t.substr(0, bar));
+            if (!first) first = current;
+        } else if (t.rfind("|", 0) == 0) {
+            // "|     ^--- expected value": the hint after the caret or tildes.
+            const std::string mark = trimmed(t.substr(1));
+            const auto text = mark.find_first_not_of("^~-");
+            if (!mark.empty() && (mark[0] == '^' || mark[0] == '~') && text != std::string::npos)
+                hints.emplace_back(current, trimmed(mark.substr(text)));
+        }
+    }
+    std::string out = file + (first ? ":" + std::to_string(first) : "") + ": " + message;
+    std::string hint;
+    for (const auto& [line, text] : hints)
+        hint += (hint.empty() ? "" : "; ") + (hints.size() > 1 ? "line " + std::to_string(line) + ": " : "") + text;
+    return hint.empty() ? out : out + " (" + hint + ")";
+}
+
+toml::value parse_toml_file(const std::filesystem::path& file, const std::string& role) {
+    std::error_code ec;
+    const auto status = std::filesystem::status(file, ec);
+    if (!std::filesystem::exists(status)) throw InputError(file.string() + ": " + role + " not found");
+    if (!std::filesystem::is_regular_file(status))
+        throw InputError(file.string() + ": " + role + " is not a regular file (" +
+                         (std::filesystem::is_directory(status) ? "a directory" : "a special file") + ")");
+    try {
+        return toml::parse(file.string());
+    } catch (const std::exception& e) {
+        throw InputError(toml_error_line(file.string(), e.what()));
+    }
+}
+
+} // namespace granrepro
