@@ -47,6 +47,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "core/interrupt.hpp"
 #include "engines/soft/pipe_detect.hpp"
 #include "engines/soft/pipe_drift.hpp"
 #include "engines/soft/spin_team.hpp"
@@ -197,7 +198,10 @@ public:
     // Largest overlap seen in the last force evaluation, relative to the smaller diameter.
     double max_overlap_ratio() const { return max_overlap_; }
 
-    void step() { advance(1); }
+    void step() {
+        if ((++pause_count_ & 1023) == 0) engine_pause_point();
+        advance(1);
+    }
 
     // `steps` time steps; the same as calling step() that often, with one hand-off to the threads.
     void advance(long steps) {
@@ -904,6 +908,7 @@ private:
     std::vector<Scratch> scratch_ = std::vector<Scratch>(1);
     std::vector<Completion> merged_;
     long version_ = 0;
+    unsigned long pause_count_ = 0; // step() calls, for the pause point
     mutable std::pair<long, std::vector<double>> out_[8];
 };
 
