@@ -107,6 +107,11 @@ void validate(const ParameterSet& p) {
     if (w.size() < 2) p.reject("bd_windows", "needs at least two edges");
     if (c.box() / double(c.n_side) < c.d * 1.0000001)
         p.reject("rho", "too dense for a square-lattice start (lattice spacing below d)");
+    // g(r) is measured up to 5 d, at most half the box (rho = 0.7 at n_side = 8 failed inside the run).
+    if (c.box() < 10 * c.d) p.reject(std::vector<std::string>{"n_side", "rho"}, "the box must be at least 10 d wide for g(r) up to r = 5 d");
+    // A step far below the mean free time multiplies the DSMC steps (1e-300 never ended).
+    if (c.dsmc_mft_fraction > 0 && c.dsmc_mft_fraction < 1e-3)
+        p.reject("dsmc_mft_fraction", "must be 0 (off) or at least 1e-3 of the mean free time");
     const auto& a2w = c.a2_window;
     if (a2w.size() != 2 || !(a2w[1] > a2w[0]) || !(a2w[0] > 0)) p.reject("a2_window", "two increasing positive times in units of t0");
     const auto& snaps = c.snapshot_times;
