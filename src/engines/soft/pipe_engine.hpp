@@ -827,8 +827,15 @@ private:
     bool wall_row(std::size_t i, double xw, double shift, double& fx_sum, double& fy_sum, double& worst) {
         const double reach = rad_[i] + geo_.wall_radius;
         const double lam = geo_.wall_spacing;
-        const long k0 = long(std::floor((y_[i] - shift - reach) / lam));
-        const long k1 = long(std::ceil((y_[i] - shift + reach) / lam));
+        const double f0 = std::floor((y_[i] - shift - reach) / lam), f1 = std::ceil((y_[i] - shift + reach) / lam);
+        // y is wrapped into [0, length), so the rows are within the pipe's count unless a grain
+        // blew up (NaN): then the casts would be undefined. Worker threads must not throw, so
+        // the grain gets no wall force and max_overlap_ratio() says inf.
+        if (!(std::fabs(f0) < 1e15 && std::fabs(f1) < 1e15)) {
+            worst = std::numeric_limits<double>::infinity();
+            return false;
+        }
+        const long k0 = long(f0), k1 = long(f1);
         bool touched = false;
         for (long k = k0; k <= k1; ++k) {
             const double dx = x_[i] - xw;
