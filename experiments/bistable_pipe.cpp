@@ -76,11 +76,15 @@ void validate(const ParameterSet& p) {
     const auto b = read_spec<BistablePipeSpec>(p);
     for (double e : b.eN_list)
         if (!(e > 0 && e < 1)) p.reject("eN_list", "each e_N must be in (0, 1): e_N = 1 has no dashpot and Eq. (4) no solution");
+    double longest_budget = 0;
     for (double k : b.kN_list)
-        for (double e : b.eN_list)
+        for (double e : b.eN_list) {
+            longest_budget = std::max(longest_budget, time_budget(b, k, e));
             if (time_budget(b, k, e) < b.window + b.t_average)
-                p.reject("budget_tcol", "the budget of k_N = " + number_text(k) + " N/m, e_N = " + number_text(e) +
+                p.reject(std::vector<std::string>{"budget_tcol", "m_mean", "kN_list", "eN_list", "window", "t_average"},
+                         "the budget of k_N = " + number_text(k) + " N/m, e_N = " + number_text(e) +
                                             " is shorter than window + t_average: no steady state could be detected");
+        }
     // The start: phi of the channel as grains on a lattice (phi = 0.79 failed late with "area
     // fraction too high for a lattice start"), then every run's cost in grain-steps.
     const PipeSpec s = pipe_spec(b, 0);
@@ -113,6 +117,15 @@ void validate(const ParameterSet& p) {
                  "or grains fall through the wall");
     if (b.sample_dt > b.window / 3) p.reject("sample_dt", "must be at most window / 3 so that a drift can be fitted");
     if (b.eq9_window < b.sample_dt) p.reject("eq9_window", "must be at least sample_dt");
+    // Windows become sample counts (size_t(eq9_window / sample_dt)): bounded by the budget's
+    // samples, they cannot overflow (eq9_window = 1e308 hung).
+    if (!(b.eq9_window <= longest_budget))
+        p.reject(std::vector<std::string>{"eq9_window", "budget_tcol"},
+                 "eq9_window must be at most the longest run's time budget, " + number_text(longest_budget) + " s");
+    // The check pipe's grains, like the main pipe's (length_check = 1e308 aborted in GSL).
+    // Estimated in double: pipe_grain_count's lround has no defined result beyond a long.
+    if (b.length_check > 0)
+        p.limit_work({"length_check", "phi", "width", "d_mean"}, double(n) * b.length_check / s.geo.length, 1e7, "grains");
     const double range = b.d_mean * (1 + b.polydispersity) + b.skin;
     if (b.length < 4 * range)
         p.reject(std::vector<std::string>{"length", "d_mean", "polydispersity", "skin"},

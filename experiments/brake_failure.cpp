@@ -42,8 +42,8 @@ void validate(const ParameterSet& p) {
     const auto s = read_spec<BrakeFailureSpec>(p);
     const double dt = validate_free_wall_law(p, s);
     if (s.offset >= s.reach())
-        p.reject("offset", "must be below (d_free + d_wall)/2 = " + number_text(s.reach()) + " m or the grains never touch");
-    if (s.vy_min >= s.vy_max) p.reject("vy_min", "must be below vy_max");
+        p.reject(std::vector<std::string>{"offset", "d_free", "d_wall"}, "offset must be below (d_free + d_wall)/2 = " + number_text(s.reach()) + " m or the grains never touch");
+    if (s.vy_min >= s.vy_max) p.reject(std::vector<std::string>{"vy_min", "vy_max"}, "vy_min must be below vy_max");
     // The slowest shot (vy_min, dt/fine_factor) starts 1e-3 d_free before contact and crosses the
     // chord 2 y_c; each shot must end within max_steps (d_free = 1e10 ran for ever).
     const double yc = s.half_chord();

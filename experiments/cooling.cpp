@@ -15,6 +15,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <numbers>
 #include <numeric>
 #include <optional>
 #include <string>
@@ -24,6 +25,7 @@
 #include "core/rng_stream.hpp"
 #include "data/spec.hpp"
 #include "engines/dsmc/dsmc_engine.hpp"
+#include "engines/dsmc/dsmc_rules.hpp"
 #include "engines/ed/ed_engine.hpp"
 #include "engines/ed/ed_initial_states.hpp"
 #include "experiments/work_limits.hpp"
@@ -92,6 +94,23 @@ struct CoolingSpec {
     }
 };
 
+DsmcConfig dsmc_config(const CoolingSpec& c, double L) {
+    DsmcConfig cfg;
+    cfg.lx = cfg.ly = L;
+    cfg.r = c.r;
+    cfg.t_c = c.dsmc_t_c;
+    cfg.min_cell_diameters = c.dsmc_cell_diameters;
+    cfg.step_factor = c.dsmc_step_factor;
+    const std::string& fv = c.dsmc_free_volume;
+    cfg.free_volume = fv == "cell" ? DsmcFreeVolume::cell : fv == "mean" ? DsmcFreeVolume::mean : DsmcFreeVolume::off;
+    cfg.free_volume_block = std::uint32_t(c.dsmc_free_volume_block);
+    cfg.displacement = c.dsmc_displacement;
+    cfg.partner = c.dsmc_partner == "nearest" ? DsmcPartner::nearest : DsmcPartner::uniform;
+    cfg.no_repeat_partner = c.dsmc_no_repeat;
+    cfg.mft_fraction = c.dsmc_mft_fraction;
+    return cfg;
+}
+
 void validate(const ParameterSet& p) {
     const auto c = read_spec<CoolingSpec>(p);
     // Collisions of the ED and DSMC runs, bounded above at the initial Enskog rate (cooling only
@@ -107,6 +126,29 @@ void validate(const ParameterSet& p) {
     if (w.size() < 2) p.reject("bd_windows", "needs at least two edges");
     if (c.box() / double(c.n_side) < c.d * 1.0000001)
         p.reject("rho", "too dense for a square-lattice start (lattice spacing below d)");
+    // g(r) is measured up to 5 d, at most half the box (rho = 0.7 at n_side = 8 failed inside the run).
+    if (c.box() < 10 * c.d) p.reject(std::vector<std::string>{"n_side", "rho"}, "the box must be at least 10 d wide for g(r) up to r = 5 d");
+    // A step far below the mean free time multiplies the DSMC steps (1e-300 never ended).
+    if (c.dsmc_mft_fraction > 0 && c.dsmc_mft_fraction < 1e-3)
+        p.reject("dsmc_mft_fraction", "must be 0 (off) or at least 1e-3 of the mean free time");
+    // The DSMC cell count as the engine's constructor computes it (same sums, same order): a
+    // free-volume block wider than the cells per side was refused seconds into the run, naming
+    // no parameter (dsmc_free_volume_block = 99).
+    if (c.run_dsmc) {
+        if (c.dsmc_free_volume_block % 2 == 0) p.reject("dsmc_free_volume_block", "must be odd (a block centred on its cell)");
+        const DsmcConfig cfg = dsmc_config(c, c.box());
+        const double r = 0.5 * c.d, box = cfg.lx * cfg.ly;
+        double asum = 0, area = 0;
+        for (double i = 0; i < n; ++i) { asum += r; area += std::numbers::pi * r * r; }
+        const double chi = cfg.free_volume == DsmcFreeVolume::off
+                               ? 1.0
+                               : 1.0 / std::max(1.0 - area / box / cfg.rcp_fraction, cfg.free_volume_floor);
+        const double lambda = dsmc_mean_free_path(n / box, 2.0 * asum / n, chi);
+        const std::size_t cells = dsmc_cells_per_side(cfg.lx, lambda, cfg.min_cell_diameters * 2.0 * r);
+        if (std::size_t(c.dsmc_free_volume_block) > cells)
+            p.reject(std::vector<std::string>{"dsmc_free_volume_block", "n_side", "rho", "dsmc_cell_diameters"},
+                     "the block is wider than the " + std::to_string(cells) + " DSMC cells per side");
+    }
     const auto& a2w = c.a2_window;
     if (a2w.size() != 2 || !(a2w[1] > a2w[0]) || !(a2w[0] > 0)) p.reject("a2_window", "two increasing positive times in units of t0");
     const auto& snaps = c.snapshot_times;
@@ -297,23 +339,6 @@ Setup prepare(const CoolingSpec& c, std::uint64_t seed, long seed_index) {
     static_cast<EquilibratedGas&>(s) =
         equilibrated_lattice_gas(s.L, initial_velocities(c, s.mass, rng), s.rad, s.mass, c.vbar, c.equilibration, true);
     return s;
-}
-
-DsmcConfig dsmc_config(const CoolingSpec& c, double L) {
-    DsmcConfig cfg;
-    cfg.lx = cfg.ly = L;
-    cfg.r = c.r;
-    cfg.t_c = c.dsmc_t_c;
-    cfg.min_cell_diameters = c.dsmc_cell_diameters;
-    cfg.step_factor = c.dsmc_step_factor;
-    const std::string& fv = c.dsmc_free_volume;
-    cfg.free_volume = fv == "cell" ? DsmcFreeVolume::cell : fv == "mean" ? DsmcFreeVolume::mean : DsmcFreeVolume::off;
-    cfg.free_volume_block = std::uint32_t(c.dsmc_free_volume_block);
-    cfg.displacement = c.dsmc_displacement;
-    cfg.partner = c.dsmc_partner == "nearest" ? DsmcPartner::nearest : DsmcPartner::uniform;
-    cfg.no_repeat_partner = c.dsmc_no_repeat;
-    cfg.mft_fraction = c.dsmc_mft_fraction;
-    return cfg;
 }
 
 // One method's run from seed index k's initial state. Checkpoint names: "ed" and "dsmc" for the

@@ -44,7 +44,7 @@ void validate(const ParameterSet& p) {
     if (s.x_start < s.reach())
         p.reject("x_start", "the free grain would start overlapping the wall grains; must be at least (d_free + d_wall)/2 = " +
                                 number_text(s.reach()) + " m");
-    if (s.vy_min >= s.vy_max) p.reject("vy_min", "must be below vy_max");
+    if (s.vy_min >= s.vy_max) p.reject(std::vector<std::string>{"vy_min", "vy_max"}, "vy_min must be below vy_max");
     // A wall: the free grain must not fit through the gap between two wall grains, or it never
     // comes back and each shot runs to max_steps.
     for (const auto& [name, spacing] : {std::pair{"wall_spacing", s.wall_spacing}, std::pair{"pipe_wall_spacing", s.pipe_wall_spacing}}) {

@@ -231,8 +231,16 @@ void validate(const ParameterSet& p) {
     if (!(s.stress_t_begin < t_end)) p.reject("stress_t_begin", "must be below t_end = " + number_text(t_end) + " s");
     if (s.n_bins % 5 != 0) p.reject("n_bins", "must be a multiple of 5 so that bins end at b/d = 0.2 and 0.8");
     if (s.restitutions.empty()) p.reject("restitutions", "needs at least one value");
-    // The start lattice must fit (it throws InputError naming rho otherwise).
+    // The periodic box must be 3 cells of one diameter wide for the minimum image, else the
+    // engine refuses seconds into the run naming no parameter (N = 2). L/d depends on N and rho.
     const auto n = static_cast<std::size_t>(s.N);
+    for (double rho : s.elastic_densities)
+        if (EdCellGrid::cells_along(box_side(n, s.d, rho), 0.5 * s.d, EdConfig{}.cell_size_factor) < 3)
+            p.reject(std::vector<std::string>{"N", "elastic_densities"},
+                     "the periodic box at rho = " + number_text(rho) + " is below 3 diameters wide (N >= 36 rho / pi needed)");
+    if (EdCellGrid::cells_along(box_side(n, s.d, s.rho), 0.5 * s.d, EdConfig{}.cell_size_factor) < 3)
+        p.reject(std::vector<std::string>{"N", "rho"}, "the periodic box is below 3 diameters wide (N >= 36 rho / pi needed)");
+    // The start lattice must fit (it throws InputError naming rho otherwise).
     staggered_lattice(n, box_side(n, s.d, s.rho), s.d);
     for (double rho : s.elastic_densities) {
         try {

@@ -318,7 +318,12 @@ void report_points(Result& res, Sweep& sw, const std::vector<double>& cn_grid) {
         sw.mean_cn.push_back(mean_curve(sw.traces[k], cn_grid, ln_k_at_cn));
         double t_lo = INFINITY;
         for (const auto& s : sw.traces[k]) t_lo = std::min(t_lo, s.t.back());
-        const std::vector<double> t_grid = log_space(1e-3, t_lo, int(std::round(20 * std::log10(t_lo / 1e-3))) + 1);
+        // From 1e-3 s, where Fig. 9(a)'s axis starts; a run that ends before 1 s (times scale as
+        // d / vbar) gets the three decades below its end instead: from 1e-3 s its grid would run
+        // backwards (d = 1e-6 m: "cannot create std::vector larger than max_size()").
+        const double t_first = std::min(1e-3, 1e-3 * t_lo);
+        const std::vector<double> t_grid =
+            t_lo > 0 ? log_space(t_first, t_lo, int(std::round(20 * std::log10(t_lo / t_first))) + 1) : std::vector<double>{};
         sw.mean_t.push_back(mean_curve(sw.traces[k], t_grid, ln_k_at_t));
         mean_table("mean_cn_" + tag, "C/N", "C_over_N", "1", sw.mean_cn[k]);
         mean_table("mean_t_" + tag, "t", "t", "s", sw.mean_t[k]);
@@ -449,7 +454,7 @@ Fig9 report_fig9_rows(Result& res, const ParameterStudySpec& s, const Sweep& sw,
     Fig9 f;
     const auto &e1 = s.zeta_fit_early, &e2 = s.zeta_fit_late, &e3 = s.zeta_fit_tail;
     for (std::size_t k : sw.fig9_idx) f.mean_t.push_back(sw.mean_t[k]);
-    for (const MeanCurve& m : f.mean_t) f.t_common = std::min(f.t_common, m.x.back());
+    for (const MeanCurve& m : f.mean_t) f.t_common = std::min(f.t_common, m.x.empty() ? 0.0 : m.x.back());
     res.scalar("fig9_common_end_time", f.t_common, "s", "latest time every Fig. 9 run reached");
     for (std::size_t b = 0; b < s.fig9_t_c.size(); ++b) {
         const std::size_t k = sw.fig9_idx[b];

@@ -30,6 +30,7 @@
 #include <optional>
 #include <string>
 #include <tuple>
+#include <utility>
 
 #include "analysis/crack_detector.hpp"
 #include "analysis/disjoint_sets.hpp"
@@ -103,6 +104,12 @@ void validate(const ParameterSet& p) {
     on_grid("dist_times_before", s.dist_times_before, s.dist_dt);
     on_grid("dist_times_after", s.dist_times_after, s.dist_dt);
     if (s.dist_dt < fdt) p.reject("dist_dt", "must be >= frame_dt");
+    // Each window becomes a frame count (long(ceil(t / frame_dt))): bounded by the run's frames
+    // (limited above), it cannot overflow (t_detect_min = 1e308 crashed the run).
+    for (const auto& [name, t] : {std::pair{"t_detect_min", s.t_detect_min}, std::pair{"precursor_window", s.precursor_window},
+                                  std::pair{"arch_window", s.arch_window}, std::pair{"frame_dt", fdt}})
+        if (!(t <= s.t_end))
+            p.reject(std::vector<std::string>{name, "t_end"}, std::string(name) + " must be at most t_end");
     if (s.width < 2 * s.lattice) p.reject("width", "must hold at least two lattice sites");
     if (s.crack_min_particles + s.crack_min_above >= s.n_particles)
         p.reject("crack_min_above", "crack_min_particles + crack_min_above must be below n_particles");

@@ -1,6 +1,7 @@
 #include "core/interrupt.hpp"
 
 #include <atomic>
+#include <chrono>
 #include <csignal>
 #include <cstdio>
 #include <ctime>
@@ -13,6 +14,7 @@ namespace granrepro {
 
 namespace {
 std::atomic<int> g_signal{0};
+std::atomic<std::chrono::steady_clock::rep> g_signal_time{0}; // steady_clock ticks, set before g_signal
 
 // Never destroyed: the watcher may use them while static objects are torn down at exit.
 std::mutex& cleanup_mutex() {
@@ -29,6 +31,7 @@ const char* name_of(int sig) { return sig == SIGINT ? "SIGINT" : sig == SIGTERM 
 void watch(sigset_t set) {
     int sig = 0;
     if (sigwait(&set, &sig) != 0) return;
+    g_signal_time = std::chrono::steady_clock::now().time_since_epoch().count();
     g_signal = sig;
     // Wait for the run to reach a pause point (it then exits itself), a second signal, or the
     // end of the grace period.
@@ -68,6 +71,16 @@ bool interrupt_requested() { return g_signal.load(std::memory_order_relaxed) != 
 void throw_if_interrupted(const std::string& detail) {
     if (const int sig = g_signal.load(); sig != 0)
         throw Interrupted(sig, std::string("interrupted by ") + name_of(sig) + detail);
+}
+
+void engine_pause_point_slow() {
+    const int sig = g_signal.load();
+    if (sig == 0) return;
+    const auto since = std::chrono::steady_clock::now().time_since_epoch() -
+                       std::chrono::steady_clock::duration(g_signal_time.load());
+    if (std::chrono::duration<double>(since).count() >= kEnginePauseSeconds)
+        throw Interrupted(sig, std::string("interrupted by ") + name_of(sig) +
+                                   " inside a long engine loop");
 }
 
 void register_for_cleanup(const std::filesystem::path& p) {

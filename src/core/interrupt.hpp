@@ -19,6 +19,9 @@
 namespace granrepro {
 
 inline constexpr double kInterruptGraceSeconds = 8.0;
+// How long an engine's inner loop leaves the run to reach its own pause point (a sample time,
+// the end of a sweep point: those save a final checkpoint) before it stops the run itself.
+inline constexpr double kEnginePauseSeconds = 1.0;
 
 class Interrupted : public std::runtime_error {
 public:
@@ -34,6 +37,15 @@ void install_interrupt_handling();
 bool interrupt_requested();
 // Throws Interrupted("interrupted by SIG...<detail>") if a signal arrived.
 void throw_if_interrupted(const std::string& detail = "");
+
+// The pause point of an engine's inner loop (an RK4 step, an event, a DSMC step), polled every
+// few thousand iterations so that a run whose outer pause points are far apart (one long point, a
+// sample interval of minutes, an input that makes every step crawl) still stops within about a
+// second: throws Interrupted once a signal has waited kEnginePauseSeconds. Costs one relaxed load.
+void engine_pause_point_slow();
+inline void engine_pause_point() {
+    if (interrupt_requested()) engine_pause_point_slow();
+}
 
 // Folders the watcher removes if it has to stop the process without a pause point.
 void register_for_cleanup(const std::filesystem::path& p);

@@ -38,7 +38,7 @@ INSTANTIATE_TEST_SUITE_P(
                       BadInput{"kN_not_a_number", "brake-failure --set k_N=abc", "k_N must be a number in (0, inf)"},
                       BadInput{"kN_zero", "brake-failure --set k_N=0", "k_N must be a number in (0, inf)"},
                       BadInput{"kN_negative", "brake-failure --set k_N=-5", "k_N"},
-                      BadInput{"mu_negative", "brake-failure --set mu=-0.1", "mu must be a number in [0, inf)"},
+                      BadInput{"mu_negative", "brake-failure --set mu=-0.1", "mu must be a number in [0, 10]"},
                       BadInput{"gammaN_overdamped", "brake-failure --set gamma_N=1e6", "e_N is in (0, 1]"},
                       BadInput{"steps_per_contact_too_few", "brake-failure --set steps_per_contact=5", "steps_per_contact"},
                       BadInput{"offset_too_large", "brake-failure --set offset=0.9e-3", "offset"},

@@ -38,6 +38,7 @@
 // (rj - ri) (x) dP is the hard-disk virial of the collisional stress), b_over_d = |u|.
 #pragma once
 #include "core/collision_record.hpp"
+#include "core/interrupt.hpp"
 #include "core/rng_stream.hpp"
 #include "core/vec2.hpp"
 #include "engines/dsmc/dsmc_config.hpp"
@@ -50,6 +51,7 @@
 #include <cstdint>
 #include <limits>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 namespace granrepro {
@@ -89,7 +91,14 @@ public:
     // called run_until(t) on the way.
     template <class Obs>
     void run_until(double t_end, Obs& obs) {
-        while (time_ < t_end) step(obs, t_end - time_);
+        while (time_ < t_end) {
+            if ((steps_ & 63) == 0) engine_pause_point();
+            const double before = time_;
+            step(obs, t_end - time_);
+            if (!(time_ > before)) // a step too short for the clock's resolution would loop for ever
+                throw std::runtime_error("DSMC: a time step of " + std::to_string(tau_) + " s does not advance t = " +
+                                         std::to_string(time_) + " s");
+        }
     }
     void run_until(double t_end) { NoObserver o; run_until(t_end, o); }
 

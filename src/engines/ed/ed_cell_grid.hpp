@@ -20,15 +20,20 @@ public:
     void setup(const EdConfig& cfg, double max_rad) {
         if (!(cfg.lx > 0.0) || !(cfg.ly > 0.0)) throw InputError("ED: box sizes must be > 0");
         if (!(cfg.cell_size_factor >= 1.0)) throw InputError("ED: cell_size_factor must be >= 1");
-        // A margin above the largest diameter keeps round-off excursions of a disk out of its
-        // cell from hiding a contact across two cells.
-        const double cmin = 2.0 * max_rad * cfg.cell_size_factor * (1.0 + 1e-9);
-        nx_ = std::max(1, static_cast<int>(std::floor(cfg.lx / cmin)));
-        ny_ = std::max(1, static_cast<int>(std::floor(cfg.ly / cmin)));
+        nx_ = cells_along(cfg.lx, max_rad, cfg.cell_size_factor);
+        ny_ = cells_along(cfg.ly, max_rad, cfg.cell_size_factor);
         if ((cfg.periodic_x && nx_ < 3) || (cfg.periodic_y && ny_ < 3))
             throw InputError("ED: a periodic box must be at least 3 cell widths (> 3 diameters) wide");
         px_ = cfg.periodic_x; py_ = cfg.periodic_y; lx_ = cfg.lx; ly_ = cfg.ly;
         sx_ = lx_ / nx_; sy_ = ly_ / ny_; hx_ = 0.5 * lx_; hy_ = 0.5 * ly_;
+    }
+    // Cells along a box side l for disks up to max_rad; public so that a driver's validate() can
+    // refuse a box too small for the minimum image (< 3 cells) before the run, by the same count.
+    static int cells_along(double l, double max_rad, double cell_size_factor) {
+        // A margin above the largest diameter keeps round-off excursions of a disk out of its
+        // cell from hiding a contact across two cells.
+        const double cmin = 2.0 * max_rad * cell_size_factor * (1.0 + 1e-9);
+        return static_cast<int>(std::clamp(std::floor(l / cmin), 1.0, 1e9)); // 1e9: no overflow in the cast
     }
     int cells_x() const { return nx_; }
     int cells_y() const { return ny_; }

@@ -7,6 +7,7 @@
 // unset observer costs nothing and smooth runs skip the tangential algebra.
 #pragma once
 #include "core/input_error.hpp"
+#include "core/interrupt.hpp"
 #include "engines/ed/calendar_queue.hpp"
 #include "engines/ed/dary_heap_queue.hpp"
 #include "engines/ed/ed_cell_grid.hpp"
@@ -237,7 +238,7 @@ private:
                 __builtin_prefetch(&ps_.p[nx]);
                 __builtin_prefetch(&ps_.e[nx]);
             }
-            ++events_;
+            if ((++events_ & 0xFFFF) == 0) engine_pause_point();
             if (t == t_last_event_) {
                 if (++zero_time_run_ > kZeroTimeLimit) fail_loop(i, t);
             } else {

@@ -14,8 +14,11 @@
 // (Eq. (17) in 3D).
 #pragma once
 #include <cstdint>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
+#include "core/interrupt.hpp"
 #include "core/vec3.hpp"
 
 namespace granrepro {
@@ -26,13 +29,22 @@ public:
     // overlaps, on a box smaller than 3 d, or on size mismatch.
     HardSphereGas3D(std::vector<Vec3> pos, std::vector<Vec3> vel, double diameter, double box);
 
-    // Runs until n more collisions happened; obs(b_over_d) is called for each.
+    // Runs until n more collisions happened; obs(b_over_d) is called for each. Throws
+    // std::runtime_error after 1000 N events in a row without a collision (a gas so dilute that
+    // horizon events crowd out collisions would otherwise run for ever).
     template <class Obs>
     void run_collisions(std::uint64_t n, Obs&& obs) {
+        const std::uint64_t idle_limit = 1000 * std::uint64_t(r_.size());
+        std::uint64_t idle = 0;
         for (std::uint64_t k = 0; k < n;) {
+            if ((++events_ & 1023) == 0) engine_pause_point();
             if (step()) {
                 obs(last_b_);
                 ++k;
+                idle = 0;
+            } else if (++idle > idle_limit) {
+                throw std::runtime_error("HardSphereGas3D: " + std::to_string(idle_limit) +
+                                         " events without a collision; the gas is too dilute for its box");
             }
         }
     }
@@ -59,7 +71,7 @@ private:
     std::vector<int> partner_; // -1: horizon
     double d_, box_, t_ = 0, last_b_ = 0;
     double vmax_ = 0; // the speed bound the horizons were computed with [m/s]
-    std::uint64_t collisions_ = 0;
+    std::uint64_t collisions_ = 0, events_ = 0;
 };
 
 } // namespace granrepro

@@ -17,8 +17,10 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
+#include "core/interrupt.hpp"
 #include "core/vec2.hpp"
 #include "engines/soft/hermite_crossing.hpp"
 #include "engines/soft/soft_grain.hpp"
@@ -68,6 +70,7 @@ public:
 
     // Advance by one time step dt.
     void step() {
+        if ((++steps_ & 4095) == 0) engine_pause_point();
         double remaining = dt_;
         // Each pass either finishes the step or toggles one contact; a bound guards against a
         // pathological sequence of switches.
@@ -104,6 +107,12 @@ public:
             remaining -= first;
             toggle(candidates_[which]);
         }
+        // A force the step cannot resolve (an absurd friction or stiffness) sends the grains to
+        // inf/NaN, where no contact ever ends and every later step would be wasted.
+        for (const SoftGrain& g : grains_)
+            if (!std::isfinite(g.r.x) || !std::isfinite(g.r.y) || !std::isfinite(g.v.x) || !std::isfinite(g.v.y))
+                throw std::runtime_error("few-body engine: the grains' positions or velocities are no longer finite after " +
+                                         std::to_string(steps_) + " steps; the time step does not resolve the contact forces");
     }
 
     // Total force on free grain i from contacts with the current set of touching pairs [N].
@@ -263,8 +272,13 @@ private:
             for (int r = 0; r < int(rows_.size()); ++r) {
                 const GrainRow& row = rows_[r];
                 const double span = grains_[i].radius + row.radius + reach;
-                const long lo = long(std::floor((grains_[i].r.y - span - row.y0) / row.spacing));
-                const long hi = long(std::ceil((grains_[i].r.y + span - row.y0) / row.spacing));
+                const double lo_k = std::floor((grains_[i].r.y - span - row.y0) / row.spacing);
+                const double hi_k = std::ceil((grains_[i].r.y + span - row.y0) / row.spacing);
+                // Checked before the conversion to long, which overflows for a grain far out.
+                if (!(hi_k - lo_k <= 1e6 && std::abs(lo_k) < 1e15))
+                    throw std::runtime_error("few-body engine: a grain could reach " + std::to_string(hi_k - lo_k) +
+                                             " wall grains within one step; the time step does not resolve its motion");
+                const long lo = long(lo_k), hi = long(hi_k);
                 for (long k = lo; k <= hi; ++k) consider({i, {Partner::Kind::Row, r, k}}, reach);
             }
         }
@@ -276,6 +290,7 @@ private:
     Vec2 gravity_;
     double t_ = 0.0;
     long substeps_ = 0;
+    unsigned long steps_ = 0; // counts step() calls for the pause point
     std::vector<SoftGrain> grains_;
     std::vector<FixedGrain> fixed_;
     std::vector<GrainRow> rows_;

@@ -47,6 +47,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "core/interrupt.hpp"
 #include "engines/soft/pipe_detect.hpp"
 #include "engines/soft/pipe_drift.hpp"
 #include "engines/soft/spin_team.hpp"
@@ -197,7 +198,10 @@ public:
     // Largest overlap seen in the last force evaluation, relative to the smaller diameter.
     double max_overlap_ratio() const { return max_overlap_; }
 
-    void step() { advance(1); }
+    void step() {
+        if ((++pause_count_ & 1023) == 0) engine_pause_point();
+        advance(1);
+    }
 
     // `steps` time steps; the same as calling step() that often, with one hand-off to the threads.
     void advance(long steps) {
@@ -823,8 +827,15 @@ private:
     bool wall_row(std::size_t i, double xw, double shift, double& fx_sum, double& fy_sum, double& worst) {
         const double reach = rad_[i] + geo_.wall_radius;
         const double lam = geo_.wall_spacing;
-        const long k0 = long(std::floor((y_[i] - shift - reach) / lam));
-        const long k1 = long(std::ceil((y_[i] - shift + reach) / lam));
+        const double f0 = std::floor((y_[i] - shift - reach) / lam), f1 = std::ceil((y_[i] - shift + reach) / lam);
+        // y is wrapped into [0, length), so the rows are within the pipe's count unless a grain
+        // blew up (NaN): then the casts would be undefined. Worker threads must not throw, so
+        // the grain gets no wall force and max_overlap_ratio() says inf.
+        if (!(std::fabs(f0) < 1e15 && std::fabs(f1) < 1e15)) {
+            worst = std::numeric_limits<double>::infinity();
+            return false;
+        }
+        const long k0 = long(f0), k1 = long(f1);
         bool touched = false;
         for (long k = k0; k <= k1; ++k) {
             const double dx = x_[i] - xw;
@@ -904,6 +915,7 @@ private:
     std::vector<Scratch> scratch_ = std::vector<Scratch>(1);
     std::vector<Completion> merged_;
     long version_ = 0;
+    unsigned long pause_count_ = 0; // step() calls, for the pause point
     mutable std::pair<long, std::vector<double>> out_[8];
 };
 
