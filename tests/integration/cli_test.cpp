@@ -144,8 +144,8 @@ TEST(Cli, WrongDataFilesAreInputErrorsNamingFileAndKey) {
         // parameter; two tolerances and a parameter no code reads are refused.
         {"experiments/emergency-brake.toml", "value = 1.0e-3", "value = ", {"missing value"}, true},
         {"experiments/emergency-brake.toml", "name = \"emergency-brake\"", "name = 5", {"expected a string value"}, true},
-        {"experiments/emergency-brake.toml", "range = \"(0, 1]\"", "range = \"(0, x]\"",
-         {"emergency-brake.toml", "parameter d_free", "range '(0, x]'", "line"}},
+        {"experiments/emergency-brake.toml", "range = \"[1e-9, 1]\"", "range = \"[1e-9, x]\"",
+         {"emergency-brake.toml", "parameter d_free", "range '[1e-9, x]'", "line"}},
         {"experiments/emergency-brake.toml", "[parameters.d_free]",
          "[parameters.unused_x]\nvalue = 1.0\nunit = \"1\"\nsource = \"s\"\n\n[parameters.d_free]",
          {"emergency-brake.toml", "[parameters.unused_x] is read by no code", "line"}},
