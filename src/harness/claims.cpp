@@ -179,7 +179,8 @@ std::vector<Claim> load_claims(const std::filesystem::path& file, const std::str
             const bool has_band = k.deviation_band || !k.deviation_band_by_scale.empty();
             if (k.known_deviation.empty()) {
                 if (has_band || !k.deviation_band_reason.empty() || c.contains("deviation_band_kind"))
-                    throw InputError(claim_where + ": deviation_band belongs only to a claim with known_deviation");
+                    throw InputError(claim_where +
+                                     ": deviation_band (and its reason and kind) belongs only to a claim with known_deviation");
             } else {
                 // A known deviation is a measured result: it needs its own band at every scale
                 // where the claim applies, so that the deviation itself can still fail.

@@ -305,7 +305,8 @@ TEST(Claims, FailingDeviationFailsTheRunAndTheTableShowsTheBand) {
     // ... and where each tolerance comes from; --explain names both kinds with their reasons.
     EXPECT_NE(table.find("abs 0.1 (errbar)"), std::string::npos) << table;
     EXPECT_NE(table.find("range (paper)"), std::string::npos) << table;
-    const std::string why = format_deviation_explanations(evaluate_claims(claims, {{"x", 1.5}, {"y", 7.0}}, Scale::Paper));
+    const std::string why =
+        format_deviation_explanations(evaluate_claims(claims, {{"x", 1.5}, {"y", 7.0}}, Scale::Paper));
     EXPECT_NE(why.find("band (seed_spread): mean ± 4 sigma over seeds"), std::string::npos) << why;
     EXPECT_NE(why.find("tolerance (error_bar)"), std::string::npos) << why;
     EXPECT_NE(why.find("band (single_run): r"), std::string::npos) << why;
@@ -425,7 +426,8 @@ TEST(Claims, MissingOrUnknownKindIsAnInputError) {
              {"tolerance_kind = \"grid\"\n" + deviation + "deviation_band_kind = \"physical_bound\"\n",
               {"deviation_band_kind 'physical_bound' is unknown", band_kinds}},
              // A band kind without a known deviation is as wrong as a band without one.
-             {"tolerance_kind = \"grid\"\ndeviation_band_kind = \"grid\"\n", {"deviation_band belongs only"}},
+             {"tolerance_kind = \"grid\"\ndeviation_band_kind = \"grid\"\n",
+              {"deviation_band (and its reason and kind) belongs only"}},
          }) {
         const std::string m = error(rest);
         SCOPED_TRACE(rest);
