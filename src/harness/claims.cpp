@@ -24,9 +24,18 @@ std::string num(double x) { return number_text(x, 4); }
 
 std::string band_text(const Band& b) { return "[" + num(b.lo) + ", " + num(b.hi) + "]"; }
 
-const std::string kClaimKeys[] = {"id",     "statement", "source",           "measured",        "paper",
-                                  "rel_tol", "abs_tol",  "min",              "max",             "tolerance_reason",
-                                  "scales", "known_deviation", "deviation_band", "deviation_band_reason"};
+const std::string kClaimKeys[] = {"id",      "statement",       "source",         "measured",
+                                  "paper",   "rel_tol",         "abs_tol",        "min",
+                                  "max",     "tolerance_reason", "tolerance_kind", "scales",
+                                  "known_deviation", "deviation_band", "deviation_band_reason", "deviation_band_kind"};
+
+// The tolerance column shows the kind in a word, so the table stays narrow.
+std::string short_kind(const std::string& kind) {
+    if (kind == "paper_precision") return "paper";
+    if (kind == "error_bar") return "errbar";
+    if (kind == "physical_bound") return "bound";
+    return kind; // "grid"
+}
 
 double number(const toml::value& v) {
     if (v.is_integer()) return double(v.as_integer());
@@ -139,6 +148,19 @@ std::vector<Claim> load_claims(const std::filesystem::path& file, const std::str
                 throw InputError(claim_where + " needs paper with rel_tol/abs_tol, or min/max");
             if (k.known_deviation.empty() && k.tolerance_reason.empty())
                 throw InputError(claim_where + " needs a tolerance_reason");
+            // A band without its kind could be one set around our own output; the kind is checked
+            // here so that no claim file can leave it out (expected/README.md, "How bands are set").
+            auto kind = [&](const char* key, const auto& allowed) {
+                const std::string allowed_text = joined(allowed);
+                if (!c.contains(key))
+                    throw InputError(claim_where + ": " + key + " is missing; allowed: " + allowed_text);
+                const std::string value = toml::find<std::string>(c, key);
+                if (std::find(std::begin(allowed), std::end(allowed), value) == std::end(allowed))
+                    throw InputError(claim_where + line(c.at(key)) + ": " + key + " '" + value +
+                                     "' is unknown; allowed: " + allowed_text);
+                return value;
+            };
+            k.tolerance_kind = kind("tolerance_kind", kToleranceKinds);
 
             if (c.contains("deviation_band")) {
                 const toml::value& b = c.at("deviation_band");
@@ -156,8 +178,9 @@ std::vector<Claim> load_claims(const std::filesystem::path& file, const std::str
                 k.deviation_band_reason = toml::find<std::string>(c, "deviation_band_reason");
             const bool has_band = k.deviation_band || !k.deviation_band_by_scale.empty();
             if (k.known_deviation.empty()) {
-                if (has_band || !k.deviation_band_reason.empty())
-                    throw InputError(claim_where + ": deviation_band belongs only to a claim with known_deviation");
+                if (has_band || !k.deviation_band_reason.empty() || c.contains("deviation_band_kind"))
+                    throw InputError(claim_where +
+                                     ": deviation_band (and its reason and kind) belongs only to a claim with known_deviation");
             } else {
                 // A known deviation is a measured result: it needs its own band at every scale
                 // where the claim applies, so that the deviation itself can still fail.
@@ -168,6 +191,7 @@ std::vector<Claim> load_claims(const std::filesystem::path& file, const std::str
                                          " (deviation_band = [lo, hi] or { quick = [lo, hi], paper = [lo, hi] })");
                 if (k.deviation_band_reason.empty())
                     throw InputError(claim_where + ": known_deviation needs deviation_band_reason (where the band comes from)");
+                k.deviation_band_kind = kind("deviation_band_kind", kDeviationBandKinds);
             }
             claims.push_back(std::move(k));
         }
@@ -226,13 +250,14 @@ std::string format_claim_table(const std::string& experiment, const std::vector<
     os << "check " << experiment << "\n";
     for (const auto& n : notes) os << "  " << n << "\n";
     os << "  " << pad("claim", 34) << pad("paper / relation", 22) << pad("our band (deviation)", 22)
-       << pad("measured", 11) << pad("tolerance", 11) << "verdict\n";
+       << pad("measured", 11) << pad("tolerance (kind)", 20) << "verdict\n";
     int explained = 0;
     for (const auto& r : results) {
         std::string measured = r.measured ? num(*r.measured) : "missing";
         if (r.measured && !std::isfinite(*r.measured)) measured = "non-finite";
         os << "  " << pad(r.claim.id, 34) << pad(r.expected_text, 22) << pad(r.band_text, 22) << pad(measured, 11)
-           << pad(r.tolerance_text, 11) << to_string(r.verdict) << "\n";
+           << pad(r.tolerance_text + " (" + short_kind(r.claim.tolerance_kind) + ")", 20) << to_string(r.verdict)
+           << "\n";
         explained += !r.claim.known_deviation.empty() && r.verdict != Verdict::Pass && r.verdict != Verdict::Skipped;
     }
     if (explained)
@@ -248,7 +273,10 @@ std::string format_deviation_explanations(const std::vector<ClaimResult>& result
         if (r.claim.known_deviation.empty() || r.verdict == Verdict::Pass || r.verdict == Verdict::Skipped) continue;
         os << "  " << r.claim.id << " (" << to_string(r.verdict) << ", band " << r.band_text << "):\n"
            << "      known deviation: " << r.claim.known_deviation << "\n"
-           << "      band: " << r.claim.deviation_band_reason << "\n";
+           << "      tolerance (" << r.claim.tolerance_kind << "): "
+           << (r.claim.tolerance_reason.empty() ? "(no reason beyond the known deviation)" : r.claim.tolerance_reason)
+           << "\n"
+           << "      band (" << r.claim.deviation_band_kind << "): " << r.claim.deviation_band_reason << "\n";
     }
     return os.str();
 }
@@ -260,12 +288,14 @@ nlohmann::json claims_to_json(const std::vector<ClaimResult>& results) {
         nlohmann::json j = {{"id", r.claim.id}, {"statement", r.claim.statement}, {"source", r.claim.source},
                             {"expected", r.expected_text}, {"tolerance", r.tolerance_text},
                             {"tolerance_reason", r.claim.tolerance_reason},
+                            {"tolerance_kind", r.claim.tolerance_kind},
                             {"measured", finite ? nlohmann::json(*r.measured) : nlohmann::json()},
                             {"verdict", to_string(r.verdict)}};
         if (!r.claim.known_deviation.empty()) {
             j["known_deviation"] = r.claim.known_deviation;
             j["deviation_band"] = r.band_text; // text: JSON has no infinity
             j["deviation_band_reason"] = r.claim.deviation_band_reason;
+            j["deviation_band_kind"] = r.claim.deviation_band_kind;
         }
         arr.push_back(j);
     }

@@ -20,6 +20,10 @@
 
 namespace granrepro {
 
+// The allowed values of tolerance_kind and deviation_band_kind (expected/README.md explains them).
+inline constexpr const char* kToleranceKinds[] = {"paper_precision", "error_bar", "grid", "physical_bound"};
+inline constexpr const char* kDeviationBandKinds[] = {"seed_spread", "error_bar", "grid", "single_run"};
+
 // A closed interval [lo, hi]; either end may be infinite.
 struct Band {
     double lo = 0, hi = 0;
@@ -32,10 +36,14 @@ struct Claim {
     std::optional<double> paper; // the paper's number, if it states one
     std::optional<double> rel_tol, abs_tol, min, max;
     std::string tolerance_reason;
+    // Where the tolerance comes from (expected/README.md, "How bands are set"): one of
+    // kToleranceKinds; a referee sees at once which bands rest on the paper and which on statistics.
+    std::string tolerance_kind;
     std::string known_deviation;     // non-empty: not reproduced, with the reason
     std::optional<Band> deviation_band;                  // our value and spread, every scale
     std::map<std::string, Band> deviation_band_by_scale; // ... or per scale ("quick", "paper")
     std::string deviation_band_reason;                   // where the band comes from
+    std::string deviation_band_kind;                     // one of kDeviationBandKinds
     std::vector<std::string> scales; // empty: every scale
 
     bool applies_to(Scale scale) const;
@@ -60,7 +68,8 @@ struct VerdictCounts {
 };
 
 // Throws InputError naming the file, the claim and the key for a malformed claim, including a
-// known deviation without a band (or without its reason) at a scale where it applies.
+// known deviation without a band (or without its reason) at a scale where it applies, and a
+// missing or unknown tolerance_kind / deviation_band_kind.
 std::vector<Claim> load_claims(const std::filesystem::path& file, const std::string& experiment);
 // scalars: name -> value (null or NaN for a measurement that could not be made).
 std::vector<ClaimResult> evaluate_claims(const std::vector<Claim>& claims,

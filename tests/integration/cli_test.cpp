@@ -133,9 +133,9 @@ TEST(Cli, WrongDataFilesAreInputErrorsNamingFileAndKey) {
         {"expected/emergency-brake.toml", "measured = ", "scales = [\"bogus\"]\nmeasured = ", {"scale 'bogus'"}},
         {"expected/emergency-brake.toml", "min = 0.75", "min = 1e300", {"is above max", "line"}},
         {"expected/emergency-brake.toml", "[[claim]]", "[[claim]]\nid = \"dup\"\nstatement = \"s\"\nsource = \"s\"\n"
-                                                     "measured = \"e_N\"\nmin = 0\ntolerance_reason = \"r\"\n[[claim]]\n"
+                                                     "measured = \"e_N\"\nmin = 0\ntolerance_reason = \"r\"\ntolerance_kind = \"grid\"\n[[claim]]\n"
                                                      "id = \"dup\"\nstatement = \"s\"\nsource = \"s\"\nmeasured = \"e_N\"\n"
-                                                     "min = 0\ntolerance_reason = \"r\"\n\n[[claim]]",
+                                                     "min = 0\ntolerance_reason = \"r\"\ntolerance_kind = \"grid\"\n\n[[claim]]",
          {"claim dup", "given twice"}},
         {"experiments/emergency-brake.toml", "value = 2000.0", "value = \"2000\"", {"emergency-brake.toml", "k_N", "must be a number"}},
         {"experiments/emergency-brake.toml", "[parameters.k_N]", "[parameters.k_n]", {"emergency-brake.toml", "k_N"}},
@@ -152,6 +152,12 @@ TEST(Cli, WrongDataFilesAreInputErrorsNamingFileAndKey) {
         {"expected/emergency-brake.toml", "id = \"t_col\"", "id = \"t_col", {"emergency-brake.toml"}, true},
         {"expected/emergency-brake.toml", "id = \"t_col\"", "id = 5", {"expected a string value"}, true},
         {"expected/emergency-brake.toml", "rel_tol = ", "abs_tol = 0.1\nrel_tol = ", {"claim t_col", "rel_tol or abs_tol, not both", "line"}},
+        // Issue 27 §4: every band names its kind.
+        {"expected/emergency-brake.toml", "tolerance_kind = \"paper_precision\"", "tolerance_kind = \"roughly\"",
+         {"emergency-brake.toml", "claim t_col", "tolerance_kind 'roughly' is unknown",
+          "paper_precision, error_bar, grid, physical_bound", "line"}},
+        {"expected/emergency-brake.toml", "tolerance_kind = \"paper_precision\"\n", "",
+         {"emergency-brake.toml", "claim t_col", "tolerance_kind is missing"}},
     };
     for (const Case& c : cases) {
         SCOPED_TRACE(std::string(c.file) + ": " + c.to);

@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 #include <hdf5_hl.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -12,6 +13,7 @@
 #include "core/input_error.hpp"
 #include "core/spawn.hpp"
 #include "harness/claims.hpp"
+#include "harness/experiment.hpp"
 #include "harness/plotter.hpp"
 #include "data/parameter_set.hpp"
 #include "io/h5_file.hpp"
@@ -166,6 +168,7 @@ measured = "x"
 paper = 1.0
 rel_tol = 0.1
 tolerance_reason = "r"
+tolerance_kind = "paper_precision"
 [[claim]]
 id = "b"
 statement = "s"
@@ -174,6 +177,7 @@ measured = "y"
 min = 0.0
 max = 1.0
 tolerance_reason = "r"
+tolerance_kind = "paper_precision"
 [[claim]]
 id = "c"
 statement = "s"
@@ -184,6 +188,8 @@ abs_tol = 0.1
 known_deviation = "because"
 deviation_band = [1.5, 2.5]
 deviation_band_reason = "r"
+tolerance_kind = "grid"
+deviation_band_kind = "grid"
 [[claim]]
 id = "d"
 statement = "s"
@@ -191,6 +197,7 @@ source = "s"
 measured = "missing"
 min = 0.0
 tolerance_reason = "r"
+tolerance_kind = "paper_precision"
 scales = ["paper"]
 )toml");
     const auto claims = load_claims(f, "e");
@@ -236,6 +243,8 @@ abs_tol = 0.1
 known_deviation = "we measure 1.5"
 deviation_band = [1.4, 1.6]
 deviation_band_reason = "mean ± 4 sigma over seeds"
+tolerance_kind = "error_bar"
+deviation_band_kind = "seed_spread"
 [[claim]]
 id = "per_scale"
 statement = "s"
@@ -245,6 +254,8 @@ min = 10.0
 known_deviation = "we measure 3 at quick and 7 at paper scale"
 deviation_band = { quick = [2.0, 4.0], paper = [6.0, inf] }
 deviation_band_reason = "r"
+tolerance_kind = "paper_precision"
+deviation_band_kind = "single_run"
 )toml";
 
 Verdict deviation_verdict(const nlohmann::json& scalars, Scale scale, std::size_t claim) {
@@ -291,6 +302,14 @@ TEST(Claims, FailingDeviationFailsTheRunAndTheTableShowsTheBand) {
     EXPECT_NE(table.find("[1.4, 1.6]"), std::string::npos) << table;
     EXPECT_NE(table.find("[6, inf]"), std::string::npos) << table;
     EXPECT_NE(table.find("in [10, inf]"), std::string::npos) << table;
+    // ... and where each tolerance comes from; --explain names both kinds with their reasons.
+    EXPECT_NE(table.find("abs 0.1 (errbar)"), std::string::npos) << table;
+    EXPECT_NE(table.find("range (paper)"), std::string::npos) << table;
+    const std::string why =
+        format_deviation_explanations(evaluate_claims(claims, {{"x", 1.5}, {"y", 7.0}}, Scale::Paper));
+    EXPECT_NE(why.find("band (seed_spread): mean ± 4 sigma over seeds"), std::string::npos) << why;
+    EXPECT_NE(why.find("tolerance (error_bar)"), std::string::npos) << why;
+    EXPECT_NE(why.find("band (single_run): r"), std::string::npos) << why;
     VerdictCounts n;
     n.add(evaluate_claims(claims, {{"x", 1.0}, {"y", 3.0}}, Scale::Paper));
     EXPECT_EQ(n.text(), "1 PASS, 1 FAIL, 0 DEVIATION, 0 skipped");
@@ -307,6 +326,7 @@ source = "s"
 measured = "x"
 max = 1.0
 tolerance_reason = "r"
+tolerance_kind = "paper_precision"
 )toml"), "e");
     EXPECT_EQ(evaluate_claims(claims, nlohmann::json::object(), Scale::Quick)[0].verdict, Verdict::Fail);
     EXPECT_EQ(evaluate_claims(claims, {{"x", NAN}}, Scale::Quick)[0].verdict, Verdict::Fail);
@@ -318,7 +338,8 @@ tolerance_reason = "r"
 TEST(Claims, DeviationWithoutBandIsAnInputError) {
     const test::TempDir dir;
     const std::string head = "experiment = \"e\"\n[[claim]]\nid = \"dev\"\nstatement = \"s\"\nsource = \"s\"\n"
-                             "measured = \"x\"\npaper = 1.0\nabs_tol = 0.1\nknown_deviation = \"k\"\n";
+                             "measured = \"x\"\npaper = 1.0\nabs_tol = 0.1\nknown_deviation = \"k\"\n"
+                             "tolerance_kind = \"grid\"\ndeviation_band_kind = \"grid\"\n";
     auto error = [&](const std::string& rest) {
         try {
             load_claims(write(dir.path / "e.toml", head + rest), "e");
@@ -346,9 +367,74 @@ TEST(Claims, DeviationWithoutBandIsAnInputError) {
     // A band on a claim that is no known deviation is a mistake too.
     const fs::path plain = write(dir.path / "p.toml",
                                  "experiment = \"e\"\n[[claim]]\nid = \"p\"\nstatement = \"s\"\nsource = \"s\"\n"
-                                 "measured = \"x\"\nmax = 1.0\ntolerance_reason = \"r\"\n"
+                                 "measured = \"x\"\nmax = 1.0\ntolerance_reason = \"r\"\ntolerance_kind = \"grid\"\n"
                                  "deviation_band = [0, 2]\ndeviation_band_reason = \"r\"\n");
     EXPECT_THROW(load_claims(plain, "e"), InputError);
+}
+
+// Issue 27 §4: every committed claim names where its tolerance comes from, and every known
+// deviation where its band comes from, so a referee can tell a paper's precision from a band
+// set by statistics (expected/README.md, "How bands are set").
+TEST(Claims, EveryCommittedClaimNamesItsKinds) {
+    auto allowed = [](const auto& kinds, const std::string& k) {
+        return std::find(std::begin(kinds), std::end(kinds), k) != std::end(kinds);
+    };
+    int files = 0, claims = 0, deviations = 0;
+    for (const auto& e : fs::directory_iterator(project_root() / "expected")) {
+        if (e.path().extension() != ".toml") continue;
+        ++files;
+        for (const Claim& c : load_claims(e.path(), e.path().stem().string())) {
+            SCOPED_TRACE(e.path().filename().string() + ": " + c.id);
+            ++claims;
+            EXPECT_TRUE(allowed(kToleranceKinds, c.tolerance_kind)) << c.tolerance_kind;
+            if (c.known_deviation.empty()) {
+                EXPECT_EQ(c.deviation_band_kind, "");
+            } else {
+                ++deviations;
+                EXPECT_TRUE(allowed(kDeviationBandKinds, c.deviation_band_kind)) << c.deviation_band_kind;
+            }
+        }
+    }
+    EXPECT_EQ(files, 8);
+    EXPECT_GE(claims, 173);
+    EXPECT_GE(deviations, 37);
+}
+
+// A missing or unknown kind is refused with the file, the claim and the allowed values.
+TEST(Claims, MissingOrUnknownKindIsAnInputError) {
+    const test::TempDir dir;
+    const std::string head = "experiment = \"e\"\n[[claim]]\nid = \"k\"\nstatement = \"s\"\nsource = \"s\"\n"
+                             "measured = \"x\"\nmin = 0.0\ntolerance_reason = \"r\"\n";
+    const std::string deviation = "known_deviation = \"k\"\ndeviation_band = [1, 2]\ndeviation_band_reason = \"r\"\n";
+    auto error = [&](const std::string& rest) {
+        try {
+            load_claims(write(dir.path / "e.toml", head + rest), "e");
+        } catch (const InputError& e) {
+            return std::string(e.what());
+        }
+        return std::string("no error");
+    };
+    EXPECT_EQ(error("tolerance_kind = \"grid\"\n"), "no error");
+    EXPECT_EQ(error("tolerance_kind = \"grid\"\n" + deviation + "deviation_band_kind = \"single_run\"\n"), "no error");
+    const std::string tolerance_kinds = "paper_precision, error_bar, grid, physical_bound";
+    const std::string band_kinds = "seed_spread, error_bar, grid, single_run";
+    for (const auto& [rest, mentions] : std::vector<std::pair<std::string, std::vector<std::string>>>{
+             {"", {"tolerance_kind is missing", tolerance_kinds}},
+             {"tolerance_kind = \"roughly\"\n", {"tolerance_kind 'roughly' is unknown", tolerance_kinds, "line 9"}},
+             {"tolerance_kind = \"seed_spread\"\n", {"tolerance_kind 'seed_spread' is unknown"}},
+             {"tolerance_kind = \"grid\"\n" + deviation, {"deviation_band_kind is missing", band_kinds}},
+             {"tolerance_kind = \"grid\"\n" + deviation + "deviation_band_kind = \"physical_bound\"\n",
+              {"deviation_band_kind 'physical_bound' is unknown", band_kinds}},
+             // A band kind without a known deviation is as wrong as a band without one.
+             {"tolerance_kind = \"grid\"\ndeviation_band_kind = \"grid\"\n",
+              {"deviation_band (and its reason and kind) belongs only"}},
+         }) {
+        const std::string m = error(rest);
+        SCOPED_TRACE(rest);
+        EXPECT_NE(m.find("e.toml"), std::string::npos) << m;
+        EXPECT_NE(m.find("claim k"), std::string::npos) << m;
+        for (const auto& s : mentions) EXPECT_NE(m.find(s), std::string::npos) << m;
+    }
 }
 
 TEST(CurveAnalysis, RecoversPowerLawAndPeak) {
