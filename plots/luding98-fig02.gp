@@ -1,13 +1,13 @@
 # Luding (1998) Fig. 2: K/K0 against t/t0 from ED (solid) and DSMC (dash-dotted) with identical
 # initial conditions, and Eq. (18) dashed as in the caption. t0 from kinetic theory (sqrt(2 pi) in
 # Eq. 19; see experiments/cooling.cpp). The x axis starts at the first sample after t = 0.
-# Variables set by granrepro: datadir, outbase.
+# Variables set by granrepro: datadir, outbase, tables, has().
 set datafile separator "\t"
 set datafile missing "NaN"
 set key autotitle columnhead
 ed = datadir.'/energy_ed.tsv'
 ds = datadir.'/energy_dsmc.tsv'
-have_dsmc = system("test -f ".ds." && echo 1 || echo 0") + 0
+have_dsmc = has('energy_dsmc')
 # First sample after t = 0 (the log axis cannot show t = 0).
 stats ed using (column("t_over_t0") > 0 ? column("t_over_t0") : NaN) nooutput
 xlo = STATS_min

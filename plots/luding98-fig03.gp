@@ -1,12 +1,18 @@
 # Luding (1998) Fig. 3: normalised P(b/d) of the ED run of Fig. 2 in successive time windows
 # [t_begin, t_end) (impact_parameter_windows.tsv; columns P_t<begin> of impact_parameter_ed.tsv).
-# Variables set by granrepro: datadir, outbase.
+# Variables set by granrepro: datadir, outbase, tables.
 set datafile separator "\t"
 f = datadir.'/impact_parameter_ed.tsv'
 w = datadir.'/impact_parameter_windows.tsv'
-header = system("head -1 ".f)
-ncol = words(header)
-wlabel(k) = system(sprintf("awk -F'\t' '/^#/{u++; next} (NR-u)==%d{printf \"%%g s ≤ t < %%g s\", $1, $2}' ", k+1).w)
+stats f skip 1 nooutput
+ncol = STATS_columns
+# The label of window k (row k of the windows table).
+stats w using (0) skip 1 nooutput  # every row, whatever it holds
+array wl[STATS_records]
+do for [k=1:|wl|] {
+  stats w using (wl[k] = sprintf("%g s ≤ t < %g s", column(1), column(2)), 0) skip 1 every ::(k-1)::(k-1) nooutput
+}
+wlabel(k) = wl[k]
 colors = "#0072B2 #D55E00 #009E73 #CC79A7 #E69F00 #56B4E9 #000000"
 do for [fmt in "png pdf"] {
   if (fmt eq "png") { set terminal pngcairo size 800,600 enhanced font "Sans,11" }

@@ -1,17 +1,16 @@
-# Luding (1998) Fig. 8: N = 784, L = 50, t_c = 1e-6 s, r as in the key. Single runs (seed 0), as
+# Luding (1998) Fig. 8: N = 784, L = 50, t_c = fig8_t_c (1e-6 s), r as in the key. Single runs (seed 0), as
 # the paper shows them. (a) K/K0 against C/N = 2 (pair collisions)/N, with the line
 # exp(-(1-r^2) C/N / 2) that Eq. (18) implies (dashed, same colour; see parameter_study.cpp).
 # (b) (K_x - K_y)/K against C/N: ~0 while homogeneous, near +-1 in the shearing mode.
 # Variables set by granrepro: datadir, outbase.
+# Parameters set by granrepro: fig8_r, fig8_t_c
 set datafile separator "\t"
 set datafile missing "NaN"
-summary = datadir.'/fig8_summary.tsv'
-rlist = system("awk -F'\t' '/^#/{u++; next} (NR-u)>1{printf \"%s \", $1}' ".summary)
+rlist = fig8_r
 n = words(rlist)
-tc = "1e-06"
 # Okabe-Ito: colour-blind safe
 colors = "#0072B2 #D55E00 #009E73 #CC79A7 #E69F00 #56B4E9 #000000"
-f(k) = datadir.'/run_r'.word(rlist, k).'_tc'.tc.'.tsv'
+f(k) = datadir.'/run_r'.word(rlist, k).'_tc'.fig8_t_c.'.tsv'
 do for [fmt in "png pdf"] {
   if (fmt eq "png") { set terminal pngcairo size 1400,560 enhanced font "Sans,11" }
   else { set terminal pdfcairo size 10in,4in enhanced font "Sans,9" }
@@ -25,7 +24,7 @@ do for [fmt in "png pdf"] {
   set yrange [1e-12:1.5]
   set xrange [0:*]
   set key top right box opaque
-  set title "(a) t_c = 10^{-6} s, single runs; dashed: exp(-(1-r^2) C/N / 2)"
+  set title "(a) t_c = ".fig8_t_c." s, single runs; dashed: exp(-(1-r^2) C/N / 2)"
   plot for [k=1:n] f(k) using "C_over_N":"K_over_K0" with lines lw 2 lc rgb word(colors, (k-1)%7+1) title "r = ".word(rlist, k), \
        for [k=1:n] f(k) using "C_over_N":"exp_line" with lines lw 1 dt 2 lc rgb word(colors, (k-1)%7+1) notitle
   unset logscale y

@@ -1,18 +1,18 @@
-# Luding (1998) Fig. 9: N = 784, L = 50, r = 0.6, t_c as in the key (-log10 t_c in the paper's
+# Luding (1998) Fig. 9: N = 784, L = 50, r = fig9_r (0.6), t_c as in the key (-log10 t_c in the paper's
 # inset). Thin lines: single runs (seed 0), as in the paper; thick: geometric mean over the
 # seeds (the claims use it). (a) K/K0 against t; (b) K/K0 against C/N with the paper's power
 # laws (C/N)^-2.5 and (C/N)^-7 as guides. Variables set by granrepro: datadir, outbase.
+# Parameters set by granrepro: fig9_r, fig9_t_c
 set datafile separator "\t"
 set datafile missing "NaN"
-summary = datadir.'/fig9_summary.tsv'
-tlist = system("awk -F'\t' '/^#/{u++; next} (NR-u)>1{printf \"%s \", $1}' ".summary)
+tlist = fig9_t_c
 n = words(tlist)
 # Five t_c in distinct hues (no two oranges) and dash types, so that every curve can be told apart
 # in print and by colour-blind readers.
 colors = "#000000 #0072B2 #009E73 #D55E00 #CC79A7 #56B4E9 #E69F00"
-run(k) = datadir.'/run_r0.6_tc'.word(tlist, k).'.tsv'
-mt(k) = datadir.'/mean_t_r0.6_tc'.word(tlist, k).'.tsv'
-mc(k) = datadir.'/mean_cn_r0.6_tc'.word(tlist, k).'.tsv'
+run(k) = datadir.'/run_r'.fig9_r.'_tc'.word(tlist, k).'.tsv'
+mt(k) = datadir.'/mean_t_r'.fig9_r.'_tc'.word(tlist, k).'.tsv'
+mc(k) = datadir.'/mean_cn_r'.fig9_r.'_tc'.word(tlist, k).'.tsv'
 lab(k) = sprintf("t_c = %s s", word(tlist, k))
 set print $guide25
 print sprintf("10\t0.4\n100\t%g", 0.4*10**-2.5)
@@ -32,12 +32,12 @@ do for [fmt in "png pdf"] {
   set key bottom left box opaque
   set xlabel "t [s]"
   set xrange [1e-3:*]
-  set title "(a) r = 0.6: K against t (thin: seed 0, thick: seed mean)"
+  set title "(a) r = ".fig9_r.": K against t (thin: seed 0, thick: seed mean)"
   plot for [k=1:n] run(k) using "t":"K_over_K0" with lines lw 0.8 lc rgb word(colors, (k-1)%7+1) notitle, \
        for [k=1:n] mt(k) using "t":(10**column("log10_K_over_K0")) with lines lw 2.5 lc rgb word(colors, (k-1)%7+1) title lab(k)
   set xlabel "C/N"
   set xrange [0.1:*]
-  set title "(b) r = 0.6: K against C/N; dashed: (C/N)^{-2.5}, dotted: (C/N)^{-7}"
+  set title "(b) r = ".fig9_r.": K against C/N; dashed: (C/N)^{-2.5}, dotted: (C/N)^{-7}"
   # The guides are straight lines in log-log axes, drawn through two points each (a function
   # sampled over a sub-range of a log axis makes gnuplot warn about the linked axis mapping):
   # (C/N)^-2.5 from (10, 0.4) to C/N = 100, then (C/N)^-7 for half a decade.

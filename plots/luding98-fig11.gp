@@ -5,13 +5,20 @@
 # Variables set by granrepro: datadir, outbase.
 set datafile separator "\t"
 sel = datadir.'/fig11_selection.tsv'
-n = int(system("awk '/^#/{u++; next} END{print (NR-u)-1}' ".sel))
-tt(k) = system(sprintf("awk -F'\t' '/^#/{u++; next} (NR-u)==%d{printf \"%%.4g\", $1}' ", k+1).sel)
-cc(k) = system(sprintf("awk -F'\t' '/^#/{u++; next} (NR-u)==%d{printf \"%%.0f\", $2}' ", k+1).sel)
-lo = real(system("awk -F'\t' '/^#/{u++; next} (NR-u)==2{print $3}' ".sel))
-hi = real(system("awk -F'\t' '/^#/{u++; next} (NR-u)==2{print $4}' ".sel))
-L = real(system("awk -F'\t' '/^#/{u++; next} (NR-u)>1{if($1>m)m=$1; if($2>m)m=$2}END{print m}' ".datadir.'/snapshot_0.tsv'))
-L = ceil(L)
+# Row k of the selection: the panel's t and C/N; the colour range is in row 1.
+stats sel using (0) skip 1 nooutput  # every row, whatever it holds
+n = STATS_records
+array tts[n]
+array ccs[n]
+do for [k=1:n] {
+  stats sel using (tts[k] = sprintf("%.4g", column(1)), ccs[k] = sprintf("%.0f", column(2)), 0) skip 1 every ::(k-1)::(k-1) nooutput
+}
+tt(k) = tts[k]
+cc(k) = ccs[k]
+stats sel using (lo = column(3), hi = column(4), 0) skip 1 every ::0::0 nooutput
+# The box: the largest coordinate of the first snapshot, rounded up.
+stats datadir.'/snapshot_0.tsv' using ($1 > $2 ? $1 : $2) skip 1 nooutput
+L = ceil(STATS_max)
 nc = (n+1)/2
 set palette defined (0 '#440154', 1 '#482878', 2 '#3E4989', 3 '#31688E', 4 '#26828E', 5 '#1F9E89', 6 '#35B779', 7 '#6DCD59', 8 '#B4DE2C', 9 '#FDE725')
 do for [fmt in "png pdf"] {

@@ -8,10 +8,14 @@
 set datafile separator "\t"
 set datafile missing "NaN"
 sel = datadir.'/fig12_selection.tsv'
-n = int(system("awk '/^#/{u++; next} END{print (NR-u)-1}' ".sel))
-cc(k) = system(sprintf("awk -F'\t' '/^#/{u++; next} (NR-u)==%d{printf \"%%.0f\", $2}' ", k+2).sel)
-tt(k) = system(sprintf("awk -F'\t' '/^#/{u++; next} (NR-u)==%d{printf \"%%.3g\", $3}' ", k+2).sel)
-lab(k) = sprintf("C/N = %s (t = %s s)", cc(k), tt(k))
+# lab(k): our C/N and t of row k+1 of the selection (the table of P(N_c) pnc_<k>).
+stats sel using (0) skip 1 nooutput  # every row, whatever it holds
+n = STATS_records
+array labs[n]
+do for [k=1:n] {
+  stats sel using (labs[k] = sprintf("C/N = %.0f (t = %.3g s)", column(2), column(3)), 0) skip 1 every ::(k-1)::(k-1) nooutput
+}
+lab(k) = labs[k+1]
 f(k) = datadir.'/pnc_'.k.'.tsv'
 colors = "#0072B2 #D55E00 #009E73 #CC79A7 #E69F00 #56B4E9 #000000"
 col(k) = word(colors, k%7+1)

@@ -4,11 +4,13 @@
 # first arch (the paper's black bar), ringed in red; disks of the arch the detector finds in that
 # frame are ringed in orange; a visible crack (a wall-to-wall gap >= crack_opening, any shape) is
 # drawn as a red line along its course, and each title gives the widest wall-to-wall gap.
-# Variables set by granrepro: datadir, outbase.
+# Variables set by granrepro: datadir, outbase, tables.
 set datafile separator "\t"
 set datafile missing "NaN"
-files = system("ls ".datadir."/snapshot_t*.tsv")
-n = words(files)
+# The snapshot_t<time> tables, in time order (granrepro lists them so).
+snaps = ''
+do for [i=1:words(tables)] { if (strstrt(word(tables, i), 'snapshot_t') == 1) { snaps = snaps.' '.word(tables, i) } }
+n = words(snaps)
 mk = datadir.'/marks.tsv'
 do for [fmt in "png pdf"] {
   if (fmt eq "png") { set terminal pngcairo size 240*n+120,900 enhanced font "Sans,10" }
@@ -24,14 +26,11 @@ do for [fmt in "png pdf"] {
   set xtics 0,10,20
   unset colorbox
   do for [k=1:n] {
-    f = word(files, k)
-    tt = substr(f, strstrt(f, "snapshot_t")+10, strstrt(f, ".tsv")-1)
+    tt = word(snaps, k)[11:]
+    f = datadir.'/snapshot_t'.tt.'.tsv'
     cf = datadir.'/crack_t'.tt.'.tsv'
     # this snapshot's marks (row k of the marks table)
-    px = real(system(sprintf("awk -F'\\t' '/^#/{u++; next} (NR-u)==%d {print $2}' %s", k+1, mk)))
-    py = real(system(sprintf("awk -F'\\t' '/^#/{u++; next} (NR-u)==%d {print $3}' %s", k+1, mk)))
-    op = real(system(sprintf("awk -F'\\t' '/^#/{u++; next} (NR-u)==%d {print $5}' %s", k+1, mk)))
-    vis = int(real(system(sprintf("awk -F'\\t' '/^#/{u++; next} (NR-u)==%d {print $6}' %s", k+1, mk))))
+    stats mk using (px = column(2), py = column(3), op = column(5), vis = int(column(6)), 0) skip 1 every ::(k-1)::(k-1) nooutput
     stats f using 2 skip 1 nooutput
     set yrange [STATS_min-2:STATS_min+84]
     unset arrow

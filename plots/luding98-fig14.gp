@@ -5,25 +5,30 @@
 # (table fits) - the value `granrepro check` compares with the paper (claims A_rate, B_rate),
 # printed with the check table's four digits, in both readings of the paper's unit: 1e3 1/s, or
 # collisions per Δt.
-# Variables set by granrepro: datadir, outbase.
+# Variables set by granrepro: datadir, outbase, tables.
 set datafile separator "\t"
 set datafile missing "NaN"
-files = system("ls ".datadir."/pnc_t*.tsv")
-n = words(files)
+# The pnc_t<time> tables, in time order (granrepro lists them so): four before arches, then after.
+pnc = ''
+do for [i=1:words(tables)] { if (strstrt(word(tables, i), 'pnc_t') == 1) { pnc = pnc.' '.word(tables, i) } }
+n = words(pnc)
+file(k) = datadir.'/'.word(pnc, k).'.tsv'
 fits = datadir.'/fits.tsv'
 pt = datadir.'/fits_per_time.tsv'
-col(file, row, c) = real(system(sprintf("awk -F'\\t' '/^#/{u++; next} (NR-u)==%d{print $%d}' %s", row, c, file)))
-A = col(fits, 2, 1)
-B = col(fits, 2, 5)
-ns = int(col(fits, 2, 9))
-dt = col(fits, 2, 10)
+stats fits using (A = column(1), B = column(5), ns = int(column(9)), dt = column(10), 0) skip 1 every ::0::0 nooutput
+# Row k of fits_per_time: time k's own fit and its error.
+array vals[n]
+array errs[n]
+do for [k=1:n] {
+  stats pt using (vals[k] = column(2), errs[k] = column(3), 0) skip 1 every ::(k-1)::(k-1) nooutput
+}
 colors = "#0072B2 #D55E00 #009E73 #CC79A7"
 points = "7 5 9 11"
 Pe(x, a) = exp(-x/a)/a
 Pp(x, b) = b/(b+x)**2
-tl(k) = substr(word(files,k), strstrt(word(files,k),"pnc_t")+5, strstrt(word(files,k),".tsv")-1)
-val(k) = col(pt, k+1, 2)
-err(k) = col(pt, k+1, 3)
+tl(k) = word(pnc, k)[6:]
+val(k) = vals[k]
+err(k) = errs[k]
 g4(x) = gprintf("%.4g", x)
 do for [fmt in "png pdf"] {
   if (fmt eq "png") { set terminal pngcairo size 1300,560 enhanced font "Sans,11" }
@@ -41,7 +46,7 @@ do for [fmt in "png pdf"] {
   set xrange [0:8000]
   set yrange [1e-8:1e-2]
   set title sprintf("(a) before arches (semi-log): A = %s s^{-1} = %s × 10^3 s^{-1} = %s per Δt", g4(A), gprintf("%.2f", A/1e3), gprintf("%.2f", A*dt))
-  plot for [k=1:4] word(files,k) using 1:($2>0?$2:1/0):3 skip 1 with yerrorbars pt int(word(points,k)) ps 0.8 \
+  plot for [k=1:4] file(k) using 1:($2>0?$2:1/0):3 skip 1 with yerrorbars pt int(word(points,k)) ps 0.8 \
          lc rgb word(colors,k) title sprintf("t = %s s: A = %s ± %s s^{-1}", tl(k), g4(val(k)), g4(err(k))), \
        for [k=1:4] Pe(x, val(k)) with lines lw 1 dt 2 lc rgb word(colors,k) notitle, \
        Pe(x, A) with lines lw 2.5 lc rgb "black" title sprintf("Eq. (21), pooled: A = %s s^{-1} (median, %d seeds)", g4(A), ns)
@@ -50,7 +55,7 @@ do for [fmt in "png pdf"] {
   set xrange [100:1e6]
   set yrange [1e-10:1e-2]
   set title sprintf("(b) after arches (log-log): B = %s s^{-1} = %s × 10^3 s^{-1} = %s per Δt", g4(B), gprintf("%.2f", B/1e3), gprintf("%.2f", B*dt))
-  plot for [k=5:n] word(files,k) using 1:($2>0?$2:1/0):3 skip 1 with yerrorbars pt int(word(points,k-4)) ps 0.8 \
+  plot for [k=5:n] file(k) using 1:($2>0?$2:1/0):3 skip 1 with yerrorbars pt int(word(points,k-4)) ps 0.8 \
          lc rgb word(colors,k-4) title sprintf("t = %s s: B = %s ± %s s^{-1}", tl(k), g4(val(k)), g4(err(k))), \
        for [k=5:n] Pp(x, val(k)) with lines lw 1 dt 2 lc rgb word(colors,k-4) notitle, \
        Pp(x, B) with lines lw 2.5 lc rgb "black" title sprintf("Eq. (22), pooled: B = %s s^{-1} (median, %d seeds)", g4(B), ns)

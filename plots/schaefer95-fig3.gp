@@ -5,14 +5,17 @@
 # range: Δv_y (solid) and its shear part alone, the integral of Eq. (6) (dashed); the paper's 1/v
 # argument is about the shear part; the undamped law (γ_N = 0) for reference. Panel (c): Δv_x.
 # Variables set by granrepro: datadir, outbase.
+# Parameters set by granrepro: betas
 set datafile separator "\t"
 set datafile missing "NaN"
 set key autotitle columnhead
 f3 = datadir.'/fig3.tsv'
 hv = datadir.'/high_velocity.tsv'
 rx = datadir.'/readings_extended.tsv'
-b01 = datadir.'/collapse_beta0.1.tsv'
-b100 = datadir.'/collapse_beta100.tsv'
+# One table per beta of the run (collapse_beta<beta>.tsv); the paper's are 0.1 and 100.
+beta(k) = datadir.'/collapse_beta'.word(betas, k).'.tsv'
+bcolors = "#009E73 #CC79A7 #E69F00 #56B4E9"
+bsizes = "0.8 0.7"
 readings = "magnitude clipped elastic signed"
 rcolors = "#0072B2 #E69F00 #009E73 #CC79A7"
 
@@ -33,8 +36,8 @@ do for [fmt in "png pdf"] {
   plot f3 using "vy_i":"dvy" with lines lw 2 lc rgb "#0072B2" title "Δv_y", \
        f3 using "vy_i":"dvx" with lines lw 2 dt 2 lc rgb "#D55E00" title "Δv_x", \
        f3 using "vy_i":"dvy_fine" every 2 with points pt 6 ps 0.8 lc rgb "#0072B2" title "Δv_y, Δt/100", \
-       b01 using "vy_i_scaled":"dvy_scaled" every 3 with points pt 2 ps 0.8 lc rgb "#009E73" title "β = 0.1, axes / √β", \
-       b100 using "vy_i_scaled":"dvy_scaled" every 3::1 with points pt 4 ps 0.7 lc rgb "#CC79A7" title "β = 100, axes / √β", \
+       for [k=1:words(betas)] beta(k) using "vy_i_scaled":"dvy_scaled" every 3::((k-1)%3) with points pt 2*k ps real(word(bsizes, (k-1)%2+1)) \
+         lc rgb word(bcolors, (k-1)%4+1) title "β = ".word(betas, k).", axes / √β", \
        f3 using "vy_i":"dvy_hkk" with lines lw 1.5 dt 4 lc rgb "#555555" title "Δv_y, Hertz-Kuwabara-Kono"
 
   set title "(b) readings of F_N in Eq. (2): Δv_y (solid), its shear part, Eq. (6) (dashed)"

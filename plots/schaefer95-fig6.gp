@@ -4,21 +4,25 @@
 # is drawn as an arrow pointing up from its last speed (outcome 1: free fall, 2: still drifting).
 # Lines join a start's states within one regime (normal or emergency brake) only.
 # The speed axis is logarithmic: the slow and fast branches differ by up to a factor 100.
-# Variables set by granrepro: datadir, outbase.
+# Variables set by granrepro: datadir, outbase, tables.
 set datafile separator "\t"
 set datafile missing "NaN"
-files = system("ls ".datadir."/steady_k*.tsv 2>/dev/null | sort -t k -k3 -g")
-kname(i) = system("basename ".word(files, i)." .tsv | sed 's/steady_k//'")
+# The steady_k<k_N> tables, k_N ascending (granrepro lists them in numeric order).
+steady = ''
+do for [i=1:words(tables)] { if (strstrt(word(tables, i), 'steady_k') == 1) { steady = steady.' '.word(tables, i) } }
+kname(i) = word(steady, i)[9:]
+file(i) = datadir.'/'.word(steady, i).'.tsv'
 # A start's steady speed if its regime is em (0 normal, 1 emergency brake), else NaN.
 regv(s, em) = (column("v_".s) == column("v_".s) && (column("impact_contacts_".s) >= 2 ? 1 : 0) == em) ? column("v_".s) : NaN
 colors = "#0072B2 #D55E00 #009E73"
 filled = "7 5 9"
 open = "6 4 8"
 # A series with no row to draw (a column that is NaN throughout: NaN != NaN) is left out of the
-# plot command, instead of drawing nothing with a warning.
+# plot command, instead of drawing nothing with a warning. The command names each table as
+# file(i), never by its path: a path with a quote in it would end the string and be run as code.
 cmd = "plot '+' using (0.5):(1) every ::0::0 with dots lc rgb 'white' notitle"
-do for [i=1:words(files)] {
-  f = word(files, i)
+do for [i=1:words(steady)] {
+  f = file(i)
   do for [s in "slow fast"] {
     shift = (s eq "fast") ? "0.006" : "0"
     style = sprintf("with linespoints pt %s ps %s lw 1.5 dt %s lc rgb '%s'", (s eq "slow") ? word(filled, i) : word(open, i), \
@@ -31,13 +35,13 @@ do for [i=1:words(files)] {
     do for [em=0:1] {
       stats f using (regv(s, em) == regv(s, em) ? 1 : 0) nooutput
       if (STATS_sum > 0) {
-        cmd = cmd.sprintf(", '%s' using ($1 + %s):(regv('%s', %d)) %s notitle", f, shift, s, em, style)
+        cmd = cmd.sprintf(", file(%d) using ($1 + %s):(regv('%s', %d)) %s notitle", i, shift, s, em, style)
       }
     }
     stats f using (column("outcome_".s) > 0 ? 1 : 0) nooutput
     if (STATS_sum > 0) {
-      cmd = cmd.sprintf(", '%s' using ($1 + %s):(column('outcome_%s') > 0 ? column('v_last_%s') : NaN):(0):(column('v_last_%s') * 0.6) with vectors head %s size screen 0.008,20 lw 1.5 lc rgb '%s' notitle", \
-        f, shift, s, s, s, (s eq "slow") ? "filled" : "empty", word(colors, i))
+      cmd = cmd.sprintf(", file(%d) using ($1 + %s):(column('outcome_%s') > 0 ? column('v_last_%s') : NaN):(0):(column('v_last_%s') * 0.6) with vectors head %s size screen 0.008,20 lw 1.5 lc rgb '%s' notitle", \
+        i, shift, s, s, s, (s eq "slow") ? "filled" : "empty", word(colors, i))
     }
   }
 }

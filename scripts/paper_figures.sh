@@ -25,7 +25,8 @@ mkdir -p paper_figures
 for dir in "$out"/*/; do
   name=$(basename "$dir")
   [ -f "$dir/summary.json" ] || continue
-  scale=$(python3 -c "import json; print(json.load(open('$dir/summary.json'))['scale'])")
+  # The path goes in as an argument, never into the Python text (a folder name is not code).
+  scale=$(python3 -c 'import json, sys; print(json.load(open(sys.argv[1]))["scale"])' "$dir/summary.json")
   if [ "$scale" != paper ]; then
     echo "paper_figures: skipping $dir ($scale scale)" >&2
     continue
@@ -44,7 +45,8 @@ done
   for dir in paper_figures/*/; do
     name=$(basename "$dir")
     [ -f "$dir/summary.json" ] || continue
-    version=$(python3 -c "import json; d=json.load(open('$dir/summary.json')); print(d['code_version'], 'seed', d['seed'], '%.0f s' % d['wall_time_s'])" 2>/dev/null || echo "?")
+    version=$(python3 -c 'import json, sys; d = json.load(open(sys.argv[1])); print(d["code_version"], "seed", d["seed"], "%.0f s" % d["wall_time_s"])' \
+                "$dir/summary.json" 2>/dev/null || echo "?")
     echo "# $name: $version"
     ./build/granrepro check "$name" --out paper_figures --explain || true
     echo

@@ -7,10 +7,11 @@ file(GLOB _repro_experiments CONFIGURE_DEPENDS ${CMAKE_SOURCE_DIR}/experiments/*
 foreach(_file ${_repro_experiments})
   get_filename_component(_name ${_file} NAME_WE)
   # The run passes when it completes (exit 0, or 1 for failing claims): judging the claims is
-  # the .check test's job, and the figures are still rendered and checked.
+  # the .check test's job, and the figures are still rendered and checked (exit 4, a figure not
+  # drawn, fails it). The output folder goes in as an argument, not into the shell's text.
   add_test(NAME repro.${_name}.run
-           COMMAND sh -c "\"$1\" ${_name} --scale quick --quiet --threads 2 --out '${REPRO_OUT}'; [ $? -le 1 ]"
-                   sh $<TARGET_FILE:granrepro>)
+           COMMAND sh -c "\"$1\" ${_name} --scale quick --quiet --threads 2 --out \"$2\"; [ $? -le 1 ]"
+                   sh $<TARGET_FILE:granrepro> ${REPRO_OUT})
   set_tests_properties(repro.${_name}.run PROPERTIES LABELS repro FIXTURES_SETUP repro_${_name} TIMEOUT 1800)
   add_test(NAME repro.${_name}.check COMMAND granrepro check ${_name} --out ${REPRO_OUT})
   set_tests_properties(repro.${_name}.check PROPERTIES LABELS repro FIXTURES_REQUIRED repro_${_name})

@@ -46,15 +46,15 @@ case "${1:-}" in
     header
     for r in magnitude clipped elastic signed; do
       for sp in 0.66e-3 1e-3; do
-        row "friction_normal=$r wall_spacing=$sp" --set friction_normal=$r --set wall_spacing=$sp
+        row "friction_normal=$r wall_spacing=$sp" --set "friction_normal=$r" --set "wall_spacing=$sp"
       done
     done ;;
   parameters)
     header
-    for sp in 0.66e-3 0.8e-3 1e-3 1.32e-3; do row "wall_spacing=$sp" --set wall_spacing=$sp; done
-    for a in 0.3 3; do row "agitation=$a" --set agitation=$a; done
-    for pd in 0 0.2; do row "polydispersity=$pd" --set polydispersity=$pd; done
+    for sp in 0.66e-3 0.8e-3 1e-3 1.32e-3; do row "wall_spacing=$sp" --set "wall_spacing=$sp"; done
+    for a in 0.3 3; do row "agitation=$a" --set "agitation=$a"; done
+    for pd in 0 0.2; do row "polydispersity=$pd" --set "polydispersity=$pd"; done
     row "length=0.04" --set length=0.04
-    for v in 5 10; do row "fast_v0=$v" --set fast_v0=$v; done ;;
+    for v in 5 10; do row "fast_v0=$v" --set "fast_v0=$v"; done ;;
   *) echo "usage: $0 readings|parameters" >&2; exit 2 ;;
 esac

@@ -14,6 +14,7 @@
 #include <unistd.h>
 #include <vector>
 
+#include "core/spawn.hpp"
 #include "core/stable_hash.hpp"
 #include "scenarios/pipe_setup.hpp"
 
@@ -81,37 +82,32 @@ std::uint64_t state_hash(const Engine& eng) {
 
 double median(std::vector<double> v) { return v.empty() ? NAN : gsl_stats_median(v.data(), 1, v.size()); }
 
-std::string shell_output(const std::string& cmd) {
-    std::string out;
-    if (FILE* f = popen(cmd.c_str(), "r")) {
-        char buf[512];
-        while (std::fgets(buf, sizeof buf, f)) out += buf;
-        pclose(f);
-    }
-    while (!out.empty() && (out.back() == '\n' || out.back() == ' ')) out.pop_back();
-    return out;
-}
-
 // ---- LAMMPS ----------------------------------------------------------------------------------
 
 struct Lammps {
-    std::string lmp;     // the binary, empty if absent
-    std::string mpirun;  // mpirun with its flags, empty if absent
-    std::string version; // first line of its output
-    std::string why_not; // why the comparison is skipped
+    std::string lmp;                 // the binary, empty if absent
+    std::vector<std::string> mpirun; // mpirun with its flags, empty if absent
+    std::string version;             // first line of its output
+    std::string why_not;             // why the comparison is skipped
 };
 
 Lammps find_lammps() {
     Lammps l;
-    l.lmp = shell_output("for b in lmp lmp_serial lmp_openmpi lmp_mpich lmp_mpi; do command -v $b && break; done 2>/dev/null");
+    for (const char* b : {"lmp", "lmp_serial", "lmp_openmpi", "lmp_mpich", "lmp_mpi"})
+        if (l.lmp = find_in_path(b); !l.lmp.empty()) break;
     if (l.lmp.empty()) {
         l.why_not = "LAMMPS is not installed (no lmp, lmp_serial, lmp_openmpi on PATH; Debian package lammps)";
         return l;
     }
-    l.version = shell_output("echo | '" + l.lmp + "' -log none 2>&1 | head -1");
-    const std::string mpirun = shell_output("command -v mpirun 2>/dev/null");
+    // With no input (stdin is /dev/null) LAMMPS prints its version line and stops.
+    const std::string out = program_output({l.lmp, "-log", "none"});
+    l.version = out.substr(0, out.find('\n'));
     // OpenMPI refuses root without --allow-run-as-root; --oversubscribe lets np exceed its slot count.
-    if (!mpirun.empty()) l.mpirun = mpirun + (geteuid() == 0 ? " --allow-run-as-root" : "") + " --oversubscribe";
+    if (const std::string mpirun = find_in_path("mpirun"); !mpirun.empty()) {
+        l.mpirun = {mpirun};
+        if (geteuid() == 0) l.mpirun.push_back("--allow-run-as-root");
+        l.mpirun.push_back("--oversubscribe");
+    }
     return l;
 }
 
@@ -182,9 +178,13 @@ struct LammpsRun {
 };
 
 LammpsRun run_lammps(const Lammps& l, const std::filesystem::path& dir, int np) {
-    const std::string exe = (np > 1 ? l.mpirun + " -np " + std::to_string(np) + " " : std::string()) + "'" + l.lmp + "'";
-    const std::string cmd = "cd '" + dir.string() + "' && " + exe + " -in in.pipe -log none > lmp.out 2>&1";
-    const int rc = std::system(cmd.c_str());
+    std::vector<std::string> argv;
+    if (np > 1) {
+        argv = l.mpirun;
+        argv.insert(argv.end(), {"-np", std::to_string(np)});
+    }
+    argv.insert(argv.end(), {l.lmp, "-in", "in.pipe", "-log", "none"});
+    const int rc = run_program(argv, dir, dir / "lmp.out");
     LammpsRun r;
     std::ifstream out(dir / "lmp.out");
     for (std::string line; std::getline(out, line);) {
@@ -198,8 +198,8 @@ LammpsRun run_lammps(const Lammps& l, const std::filesystem::path& dir, int np) 
         if (line.rfind("Neighbor list builds = ", 0) == 0) r.neighbor_builds = std::atol(line.c_str() + 23);
     }
     if (rc != 0 || !(r.time.wall > 0)) {
-        std::fprintf(stderr, "granrepro: LAMMPS run failed (%s); input and output kept in %s\n", cmd.c_str(),
-                     dir.c_str());
+        std::fprintf(stderr, "granrepro: LAMMPS run failed (%s in %s); input and output kept there\n",
+                     argv_text(argv).c_str(), dir.c_str());
         r.time.wall = NAN;
     }
     return r;

@@ -1,8 +1,9 @@
 // granrepro: reproduce the figures of Luding (1998) and Schäfer & Wolf (1995) and check the
 // papers' claims. Exit codes: 0 every claim passed (or is a known deviation inside its band),
-// 1 a claim failed (or a run or a figure failed, or check --all found experiments without
-// results), 2 bad input, 3 results could not be written (disk full, I/O error; the previous
-// results are untouched), 130/143 interrupted by SIGINT/SIGTERM (core/interrupt.hpp).
+// 1 a claim failed (or a run failed, or check --all found experiments without results), 2 bad
+// input, 3 results could not be written (disk full, I/O error; the previous results are
+// untouched), 4 a requested figure was not drawn (kFigureNotDrawn), 130/143 interrupted by
+// SIGINT/SIGTERM (core/interrupt.hpp).
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <charconv>
@@ -15,6 +16,7 @@
 #include "core/input_error.hpp"
 #include "core/interrupt.hpp"
 #include "core/provenance.hpp"
+#include "core/spawn.hpp"
 #include "harness/mpi_world.hpp"
 #include "data/interval.hpp"
 #include "harness/runner.hpp"
@@ -35,6 +37,10 @@ const char* const kExitCodes =
     "results); 2 bad input (one line on stderr naming the parameter and what is allowed; also a\n"
     "damaged results file given to check, or an --out another run is writing); 3 the results could\n"
     "not be written (disk full, I/O error: one line; the previous results are untouched);\n"
+    "4 a figure the command was to draw was not drawn (every figure of a run, the figure of\n"
+    "`figure`, those of `plot`; gnuplot failed or is missing, or a table or parameter its script\n"
+    "needs is missing; one warning per figure, the data are written; `plot --strict`: also a\n"
+    "gnuplot warning; a failed claim gives 1 instead);\n"
     "130/143 interrupted by SIGINT/SIGTERM (a final checkpoint is saved where the run has one and\n"
     "the same command resumes; a second signal, or 8 s without a pause point, stops at once).";
 
@@ -172,13 +178,18 @@ int run_all(const RunOptions& base) {
     }
     int rc = 0;
     VerdictCounts totals;
-    for (const auto& e : experiment_registry()) rc |= run_experiment(e.name, base, &totals);
+    // A failed claim (1) outranks a figure not drawn (kFigureNotDrawn).
+    for (const auto& e : experiment_registry()) {
+        const int r = run_experiment(e.name, base, &totals);
+        rc = rc == 1 || r == 1 ? 1 : std::max(rc, r);
+    }
     if (mpi::rank() == 0) std::printf("totals: %s\n", totals.text().c_str());
     return rc;
 }
 
 // plot --all: every experiment with results; the missing ones are listed and fail.
-int plot_all_experiments(const std::filesystem::path& out, const std::vector<std::string>& figures, bool strict) {
+int plot_all_experiments(const std::filesystem::path& out, const std::vector<std::string>& figures, bool strict,
+                         bool edited) {
     for (const auto& f : figures) experiment_of_figure(f); // an unknown figure is bad input
     int rc = 0;
     std::string missing;
@@ -187,7 +198,7 @@ int plot_all_experiments(const std::filesystem::path& out, const std::vector<std
         for (const auto& f : figures)
             if (experiment_of_figure(f) == e.name) mine.push_back(f);
         if (!figures.empty() && mine.empty()) continue;
-        if (std::filesystem::exists(out / e.name / "tables")) rc |= plot_experiment(e.name, out, mine, strict);
+        if (std::filesystem::exists(out / e.name / "tables")) rc = std::max(rc, plot_experiment(e.name, out, mine, strict, edited));
         else missing += (missing.empty() ? "" : ", ") + e.name;
     }
     if (!missing.empty()) {
@@ -210,15 +221,7 @@ std::string version_text() {
 
 // Everything but MPI's set-up: the command line and the subcommands.
 static int run_main(int argc, char** argv) {
-    for (int i = 0; i < argc; ++i) {
-        std::string a = argv[i];
-        if (a.empty() || a.find_first_of(" \t\n'\"\\$`*?[]{}()<>|&;#~") != std::string::npos) {
-            std::string q = "'";
-            for (char c : a) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
-            a = q + "'";
-        }
-        command_line += (i ? " " : "") + a;
-    }
+    command_line = argv_text(std::vector<std::string>(argv, argv + argc));
     CLI::App app{"granrepro: reproduce Luding (1998) and Schäfer & Wolf (1995), figure by figure"};
     app.footer(std::string(kDataFiles) + kExitCodes);
     app.require_subcommand(1);
@@ -300,13 +303,17 @@ static int run_main(int argc, char** argv) {
     plot->add_option("experiment", plot_name, "experiment whose figures to render");
     plot->add_flag("--all", plot_all, "every experiment");
     plot->add_option("--figure", plot_figures, "only this figure (repeatable)");
-    bool plot_strict = false;
-    plot->add_flag("--strict", plot_strict, "exit 1 if gnuplot prints any warning for a figure");
+    bool plot_strict = false, plot_edited = false;
+    plot->add_flag("--strict", plot_strict, "exit 4 if gnuplot prints any warning for a figure");
+    plot->add_flag("--edited", plot_edited,
+                   "render the scripts you edited (<figure>.edited.gp, or an edited <figure>.gp) instead of "
+                   "the ones from plots/; without it an edited script is kept but never run, as a results "
+                   "folder from elsewhere may hold gnuplot lines that run programs");
     plot->add_option("--out", common.out, "output directory")->capture_default_str();
     plot->callback([&] {
         if (plot_all == !plot_name.empty()) throw InputError("plot: give one experiment or --all");
-        rc = plot_all ? plot_all_experiments(common.out, plot_figures, plot_strict)
-                      : plot_experiment(plot_name, common.out, plot_figures, plot_strict);
+        rc = plot_all ? plot_all_experiments(common.out, plot_figures, plot_strict, plot_edited)
+                      : plot_experiment(plot_name, common.out, plot_figures, plot_strict, plot_edited);
     });
 
     std::string export_name;

@@ -1,11 +1,18 @@
 #include "harness/plotter.hpp"
 
-#include <cstdlib>
+#include <algorithm>
+#include <cctype>
+#include <charconv>
+#include <cmath>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <regex>
 #include <sstream>
+#include <vector>
 
+#include "core/spawn.hpp"
 #include "core/stable_hash.hpp"
+#include "data/parameter_set.hpp"
 #include "harness/experiment.hpp"
 #include "harness/run_log.hpp"
 #include "io/durable_file.hpp"
@@ -45,57 +52,153 @@ std::string missing_table(const std::string& script, const std::filesystem::path
     return "";
 }
 
-std::string emitted_script(const std::string& id, const std::string& body) {
+std::string parameter_assignments(const std::string& script, const std::filesystem::path& summary_file) {
+    static const std::regex declared(R"(# Parameters set by granrepro: ([A-Za-z0-9_, ]+))");
+    std::smatch m;
+    if (!std::regex_search(script, m, declared)) return "";
+    nlohmann::json params;
+    try {
+        params = nlohmann::json::parse(read_file(summary_file)).at("parameters");
+    } catch (const std::exception& e) {
+        throw std::runtime_error("its parameters are read from " + summary_file.string() + ": " + e.what());
+    }
+    std::string lines;
+    std::istringstream names(std::regex_replace(m[1].str(), std::regex(","), " "));
+    for (std::string name; names >> name;) {
+        const auto p = params.find(name);
+        const nlohmann::json v = p == params.end() ? nlohmann::json() : p->value("value", nlohmann::json());
+        std::string words;
+        bool numbers = v.is_number() || (v.is_array() && !v.empty());
+        for (const auto& x : v.is_array() ? v : nlohmann::json::array({v})) {
+            numbers = numbers && x.is_number() && std::isfinite(x.get<double>());
+            // The drivers name tables with number_text (e.g. run_r0.6_tc1e-06.tsv), so the
+            // script gets the same text.
+            if (numbers) words += (words.empty() ? "" : " ") + number_text(x.get<double>());
+        }
+        if (!numbers) throw std::runtime_error("it needs parameter " + name + " (numbers) from " + summary_file.string());
+        lines += name + " = '" + words + "'\n";
+    }
+    return lines;
+}
+
+namespace {
+
+// "steady_k200" before "steady_k2000" before "steady_k30000": runs of digits (with a decimal point
+// or exponent, as in "tc1e-06") compare by value, so scripts can take tables in numeric order.
+bool natural_less(const std::string& a, const std::string& b) {
+    std::size_t i = 0, j = 0;
+    while (i < a.size() && j < b.size()) {
+        if (std::isdigit(static_cast<unsigned char>(a[i])) && std::isdigit(static_cast<unsigned char>(b[j]))) {
+            double x = 0, y = 0;
+            const auto ra = std::from_chars(a.data() + i, a.data() + a.size(), x);
+            const auto rb = std::from_chars(b.data() + j, b.data() + b.size(), y);
+            if (x != y) return x < y;
+            i = std::size_t(ra.ptr - a.data());
+            j = std::size_t(rb.ptr - b.data());
+        } else {
+            if (a[i] != b[j]) return a[i] < b[j];
+            ++i, ++j;
+        }
+    }
+    if (a.size() - i != b.size() - j) return a.size() - i < b.size() - j;
+    return a < b; // equal values written differently ("0.8", "0.80"): still a strict order
+}
+
+// The tables (names without .tsv) in tables_dir, in natural order, as one gnuplot string: the
+// scripts choose from it instead of listing the folder through a shell. Our code makes every name;
+// one with any other character is left out all the same, as it could end the quoted string.
+std::string table_list(const std::filesystem::path& tables_dir) {
+    static const std::regex safe("[A-Za-z0-9_.-]+");
+    std::vector<std::string> names;
+    std::error_code ec;
+    for (const auto& e : std::filesystem::directory_iterator(tables_dir, ec)) {
+        const std::string name = e.path().stem().string();
+        if (e.path().extension() == ".tsv" && e.is_regular_file(ec) && std::regex_match(name, safe)) names.push_back(name);
+    }
+    std::sort(names.begin(), names.end(), natural_less);
+    std::string out;
+    for (const auto& n : names) out += (out.empty() ? "" : " ") + n;
+    return out;
+}
+
+} // namespace
+
+std::string emitted_script(const std::string& id, const std::string& body, const std::filesystem::path& tables_dir,
+                           const std::string& assignments) {
     // The data and output are found next to the script (gnuplot sets ARG0 to the script's path),
     // so `gnuplot path/to/<id>.gp` works from any working directory.
     const std::string rest =
-        "# Emitted by granrepro from plots/" + id + ".gp; `gnuplot " + id +
-        ".gp` re-renders it from any directory. Edit it freely: `granrepro plot` then renders your\n"
-        "# version instead of overwriting it (the line above is the hash of the emitted text).\n"
+        "# Emitted by granrepro from plots/" + id + ".gp; `gnuplot " + id + ".gp` re-renders it from any\n"
+        "# directory. Edited, it is kept as " + id + ".edited.gp by `granrepro plot` and reruns, which render\n"
+        "# this one; `granrepro plot --edited` renders yours (the line above is the hash of the emitted text).\n"
         "here = ''\n"
         "if (exists('ARG0') && strlen(ARG0) > 0) {\n"
         "  _i = strlen(ARG0)\n"
         "  while (_i > 0 && ARG0[_i:_i] ne '/') { _i = _i - 1 }\n"
         "  if (_i > 0) { here = ARG0[1:_i] }\n"
         "}\n"
-        "datadir = here.'tables'\noutbase = here.'" + id + "'\n\n" + body;
+        "datadir = here.'tables'\noutbase = here.'" + id + "'\n"
+        "# The tables that were in datadir when this was emitted; has(name) tells if one was.\n"
+        "tables = '" + table_list(tables_dir) + "'\n"
+        "has(name) = strstrt(' '.tables.' ', ' '.name.' ') > 0\n" + assignments + "\n" + body;
     return kHashTag + fnv1a_hex(rest) + "\n" + rest;
 }
 
 RenderOutcome render_figure(const std::string& id, const std::filesystem::path& run_dir,
-                            const std::filesystem::path& shown_dir) {
+                            const std::filesystem::path& shown_dir, bool edited) {
     const auto script = project_root() / "plots" / (id + ".gp");
     std::ifstream in(script);
     if (!in) {
-        warn("no plot script " + script.string());
+        warn(id + " not drawn: no plot script " + script.string());
         return RenderOutcome::Failed;
     }
     std::stringstream body;
     body << in.rdbuf();
+    const std::filesystem::path shown = shown_dir.empty() ? run_dir : shown_dir;
+    // A script the user edited (in the run folder, or in the folder a new run replaces) is data
+    // someone may have sent along with the results: it is kept as <id>.edited.gp, and only
+    // `plot --edited` runs it.
+    const auto emitted = run_dir / (id + ".gp"), kept = run_dir / (id + ".edited.gp");
+    const auto previous = shown / (id + ".gp"), previous_kept = shown / (id + ".edited.gp");
+    std::error_code ec;
+    const bool just_edited = std::filesystem::exists(previous, ec) && !unedited(read_file(previous));
+    if (just_edited) {
+        write_file_durably(kept, read_file(previous));
+        warn(previous.string() + " was edited; " +
+             (edited ? "rendering it (--edited)" : "rendering plots/" + id + ".gp; `granrepro plot --edited` renders the edited one") +
+             ", kept as " + previous_kept.string());
+    } else if (previous_kept != kept && std::filesystem::exists(previous_kept, ec)) {
+        write_file_durably(kept, read_file(previous_kept)); // a new run keeps it too
+    }
+    const bool run_kept = edited && std::filesystem::exists(kept, ec);
+    if (run_kept && !just_edited) warn("rendering the edited script " + previous_kept.string() + " (--edited)");
+    const std::string text = run_kept ? read_file(kept) : body.str();
     // A table the script names that this run did not make (e.g. cooling with run_ed = false has
     // no ED tables): the figure is not drawn, and no figure of an earlier run stays beside the data.
-    std::error_code ec;
-    if (const std::string table = missing_table(body.str(), run_dir / "tables"); !table.empty()) {
+    if (const std::string table = missing_table(text, run_dir / "tables"); !table.empty()) {
         remove_figure(run_dir, id);
         warn(id + " not drawn: the run made no table " + table);
         return RenderOutcome::Skipped;
     }
-    const auto emitted = run_dir / (id + ".gp");
-    // A script the user edited (in the run folder, or in the folder a new run replaces) is kept
-    // and rendered instead of the one from plots/.
-    const auto previous = (shown_dir.empty() ? run_dir : shown_dir) / (id + ".gp");
-    if (std::filesystem::exists(previous, ec) && !unedited(read_file(previous))) {
-        if (previous != emitted) std::filesystem::copy_file(previous, emitted, std::filesystem::copy_options::overwrite_existing);
-        warn(previous.string() + " was edited: rendering the edited script, not plots/" + id +
-             ".gp (delete it to get the current one)");
-    } else {
-        write_file_durably(emitted, emitted_script(id, body.str())); // a full disk is a WriteError, not a 0-byte script
+    std::string assignments;
+    try {
+        assignments = parameter_assignments(body.str(), run_dir / "summary.json");
+    } catch (const std::runtime_error& e) {
+        remove_figure(run_dir, id);
+        warn(id + " not drawn: " + e.what());
+        return RenderOutcome::Failed;
     }
-    const std::string cmd = "cd '" + run_dir.string() + "' && gnuplot '" + id + ".gp' > '" + id +
-                            ".gnuplot.log' 2>&1";
-    const int rc = std::system(cmd.c_str());
+    write_file_durably(emitted, emitted_script(id, body.str(), run_dir / "tables", assignments)); // a full disk is a WriteError, not a 0-byte script
+    // "./": a name is never read as an option; the working directory, not a shell, finds it.
     const auto log = run_dir / (id + ".gnuplot.log");
-    const auto shown_log = (shown_dir.empty() ? run_dir : shown_dir) / (id + ".gnuplot.log");
+    const int rc = run_program({"gnuplot", "./" + id + (run_kept ? ".edited.gp" : ".gp")}, run_dir, log);
+    const auto shown_log = shown / (id + ".gnuplot.log");
+    if (rc == kNotStarted) {
+        remove_figure(run_dir, id);
+        std::filesystem::remove(log, ec);
+        warn(id + " not drawn: gnuplot could not be started (is it installed? Debian package gnuplot-nox)");
+        return RenderOutcome::Failed;
+    }
     if (rc != 0 || !std::filesystem::exists(run_dir / (id + ".png"))) {
         // Whatever gnuplot wrote before it failed is not a figure (and not a sign of a full disk).
         remove_figure(run_dir, id);

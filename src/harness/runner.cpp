@@ -246,6 +246,12 @@ int run_experiment(const std::string& name, const RunOptions& opt, VerdictCounts
     // Every write is checked; a failure names the file where it would have ended up, and the
     // old results stay as they were (nothing is renamed into place).
     const auto verdicts = evaluate_claims(claims, scalars_json(result), opt.scale);
+    // A figure the command asked for (every figure of a plain run; the one of `figure`) that is
+    // not drawn makes the exit code say so; the other figures a `figure` run re-renders only warn.
+    auto requested = [&](const std::string& id) {
+        return opt.figures.empty() || std::find(opt.figures.begin(), opt.figures.end(), id) != opt.figures.end();
+    };
+    std::vector<std::string> not_drawn;
     try {
         std::vector<std::pair<std::string, std::string>> plot_texts;
         for (const auto& id : to_render) plot_texts.emplace_back(id, read_file(project_root() / "plots" / (id + ".gp")));
@@ -257,7 +263,8 @@ int run_experiment(const std::string& name, const RunOptions& opt, VerdictCounts
         summary["claims"] = claims_to_json(verdicts);
         write_file_durably(stage->path() / "summary.json", summary.dump(2) + "\n");
         for (const auto& id : to_render) {
-            render_figure(id, stage->path(), final_dir);
+            const RenderOutcome o = render_figure(id, stage->path(), final_dir);
+            if ((o == RenderOutcome::Failed || o == RenderOutcome::Skipped) && requested(id)) not_drawn.push_back(id);
             const fs::path png = stage->path() / (id + ".png");
             if (fs::exists(png) && !png_complete(png)) throw WriteError(png.string(), "figure cut short (disk full?)");
         }
@@ -279,7 +286,11 @@ int run_experiment(const std::string& name, const RunOptions& opt, VerdictCounts
     std::fflush(stdout);
     if (totals) totals->add(verdicts);
     throw_if_interrupted(" after the results were written to " + final_dir.string());
-    return all_pass(verdicts) ? 0 : 1;
+    if (!all_pass(verdicts)) return 1;
+    if (!not_drawn.empty())
+        std::fprintf(stderr, "granrepro: %s: figure%s not drawn: %s (exit %d)\n", name.c_str(),
+                     not_drawn.size() == 1 ? "" : "s", joined(not_drawn).c_str(), kFigureNotDrawn);
+    return not_drawn.empty() ? 0 : kFigureNotDrawn;
 }
 
 SweepPlan parse_points(const std::string& text) {
@@ -368,7 +379,7 @@ int export_experiment(const std::string& name, const fs::path& out, const fs::pa
 }
 
 int plot_experiment(const std::string& name, const fs::path& out, const std::vector<std::string>& figures,
-                    bool strict) {
+                    bool strict, bool edited) {
     const ExperimentInfo info = experiment_info(name);
     const std::string known = joined(info.figures, [](const auto& f) { return f.id; });
     for (const auto& id : figures)
@@ -380,10 +391,10 @@ int plot_experiment(const std::string& name, const fs::path& out, const std::vec
     int failures = 0;
     for (const auto& f : info.figures)
         if (figures.empty() || std::find(figures.begin(), figures.end(), f.id) != figures.end()) {
-            const RenderOutcome o = render_figure(f.id, dir);
-            failures += o == RenderOutcome::Failed || (strict && o == RenderOutcome::Warned);
+            const RenderOutcome o = render_figure(f.id, dir, {}, edited);
+            failures += o == RenderOutcome::Failed || o == RenderOutcome::Skipped || (strict && o == RenderOutcome::Warned);
         }
-    return failures ? 1 : 0;
+    return failures ? kFigureNotDrawn : 0;
 }
 
 } // namespace granrepro

@@ -39,11 +39,15 @@ std::string experiment_of_figure(const std::string& id);
 // by --help.
 ParameterSet resolve_parameters(const std::string& name, const RunOptions& opt);
 
+// The exit code of a command that ran but did not draw a figure it was asked for (gnuplot
+// failed or is missing, a table or parameter the script needs is missing); 1 stays "a claim failed".
+inline constexpr int kFigureNotDrawn = 4;
+
 // Runs, writes, renders and prints the check table. Under mpirun, rank 0 does all of this; the
 // other ranks compute sweep points of distributed experiments and skip the rest. A --points shard
 // only computes its points into OUT/.<name>.checkpoint/ (exit 0); `gather` (sweep.mode Gather)
 // writes the results from there, or fails with exit 2 naming the missing points. Returns the process exit code: 0 if no claim
-// fails, 1 if one does. `figure` (opt.figures) renders the requested figures plus those the
+// fails, 1 if one does, else kFigureNotDrawn if a requested figure (any, without opt.figures) was not drawn. `figure` (opt.figures) renders the requested figures plus those the
 // previous run had rendered, so a figure run never deletes the experiment's other figures.
 // totals, if given, accumulates the verdicts.
 int run_experiment(const std::string& name, const RunOptions& opt, VerdictCounts* totals = nullptr);
@@ -65,8 +69,9 @@ int check_all(const std::filesystem::path& out, const CheckOptions& opt = {});
 int export_experiment(const std::string& name, const std::filesystem::path& out, const std::filesystem::path& to,
                       std::size_t max_values);
 // Re-renders figures from an existing OUT/<name>/ (the `plot` subcommand). A figure the
-// experiment does not make is an input error. 1 if gnuplot fails, or (strict) if it warns.
+// experiment does not make is an input error. kFigureNotDrawn if a figure is not drawn, or
+// (strict) if gnuplot warns. edited: render the scripts the user edited (see render_figure).
 int plot_experiment(const std::string& name, const std::filesystem::path& out,
-                    const std::vector<std::string>& figures, bool strict = false);
+                    const std::vector<std::string>& figures, bool strict = false, bool edited = false);
 
 } // namespace granrepro

@@ -1,6 +1,6 @@
 // What a run leaves for the people who use its results elsewhere: --version with the compiler
 // and library versions, run.log, provenance and typed values in data.h5, units in the TSV
-// headers, gnuplot scripts that run from any directory and are not overwritten once edited;
+// headers, gnuplot scripts that run from any directory and, once edited, are kept aside;
 // and the progress reporter's timer.
 #include <gtest/gtest.h>
 
@@ -88,14 +88,16 @@ TEST_F(RecordedRun, EmittedScriptRunsFromAnotherDirectory) {
     EXPECT_TRUE(fs::exists(png));
 }
 
-TEST_F(RecordedRun, PlotRendersAnEditedScriptInsteadOfOverwritingIt) {
+// An edited script is kept as <id>.edited.gp (not lost, not run: see cli_shell_test.cpp) and the
+// emitted one takes its place; removed, it is emitted afresh, and an unedited one is replaced silently.
+TEST_F(RecordedRun, PlotKeepsAnEditedScriptAsideAndEmitsTheScriptAfresh) {
     const fs::path gp = dir_ / "schaefer95-fig3.gp";
     { std::ofstream(gp, std::ios::app) << "# my edit\n"; }
     const auto o = run("plot brake-failure --out " + out_.string());
     EXPECT_EQ(o.code, 0) << o.err;
-    EXPECT_TRUE(contains(slurp(gp), "# my edit\n")) << "plot overwrote the edited script";
+    EXPECT_TRUE(contains(slurp(dir_ / "schaefer95-fig3.edited.gp"), "# my edit\n")) << "plot lost the edited script";
+    EXPECT_FALSE(contains(slurp(gp), "# my edit"));
     EXPECT_TRUE(contains(o.err, "schaefer95-fig3.gp was edited")) << o.err;
-    // Removed, the script is emitted afresh, and an unedited one is replaced silently.
     fs::remove(gp);
     for (int k = 0; k < 2; ++k) {
         const auto o2 = run("plot brake-failure --out " + out_.string());

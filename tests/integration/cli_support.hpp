@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
@@ -11,6 +12,7 @@
 #include <initializer_list>
 #include <iterator>
 #include <string>
+#include <fcntl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 #include <vector>
@@ -62,6 +64,45 @@ inline Outcome shell(const std::string& cmd) {
 // Runs granrepro with `args` (and an environment prefix such as "VAR=1").
 inline Outcome run(const std::string& args, const std::string& env = "") {
     return shell(env + " " + GRANREPRO_BINARY + " " + args);
+}
+
+// Runs granrepro with an argument vector, no shell (arguments may hold quotes, $(...), newlines),
+// in the working directory `cwd` (empty: ours), with `env` ("NAME=value") added to the
+// environment; stdout and stderr captured.
+inline Outcome run_argv(const std::vector<std::string>& args, const std::filesystem::path& cwd = {},
+                        const std::vector<std::string>& env = {}) {
+    const std::string base =
+        (std::filesystem::temp_directory_path() / ("granrepro-cli-argv-" + std::to_string(::getpid()))).string();
+    std::vector<std::string> argv{GRANREPRO_BINARY};
+    argv.insert(argv.end(), args.begin(), args.end());
+    std::vector<char*> cargs;
+    for (std::string& a : argv) cargs.push_back(a.data());
+    cargs.push_back(nullptr);
+    // env's entries replace ours of the same name; built before fork (the child only execs).
+    std::vector<char*> envp;
+    for (const std::string& e : env) envp.push_back(const_cast<char*>(e.c_str()));
+    for (char** e = environ; *e; ++e) {
+        const std::string entry = *e, name = entry.substr(0, entry.find('=') + 1);
+        if (std::none_of(env.begin(), env.end(), [&](const std::string& x) { return x.rfind(name, 0) == 0; }))
+            envp.push_back(*e);
+    }
+    envp.push_back(nullptr);
+    const pid_t pid = ::fork();
+    if (pid == 0) {
+        const int out = ::open((base + "-out").c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0600);
+        const int err = ::open((base + "-err").c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0600);
+        if (out < 0 || err < 0 || ::dup2(out, 1) < 0 || ::dup2(err, 2) < 0 || (!cwd.empty() && ::chdir(cwd.c_str()) != 0))
+            ::_exit(126);
+        ::execve(cargs[0], cargs.data(), envp.data());
+        ::_exit(127);
+    }
+    int status = 0;
+    while (pid > 0 && ::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+    }
+    Outcome o{pid > 0 && WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(base + "-err"), slurp(base + "-out")};
+    std::filesystem::remove(base + "-out");
+    std::filesystem::remove(base + "-err");
+    return o;
 }
 
 // A path in the temporary directory, unique to this process, removed if it exists.

@@ -200,7 +200,7 @@ TEST(Cli, HelpDocumentsTheExitCodes) {
     for (const char* sub : {"", "all ", "figure ", "check ", "brake-failure "}) {
         const Outcome o = run(std::string(sub) + "--help");
         EXPECT_EQ(o.code, 0);
-        for (const char* part : {"Exit codes: 0 every claim PASS", "1 a claim FAILed", "2 bad input"})
+        for (const char* part : {"Exit codes: 0 every claim PASS", "1 a claim FAILed", "2 bad input", "4 a figure"})
             EXPECT_NE(o.out.find(part), std::string::npos) << sub << ": " << part;
     }
 }

@@ -5,10 +5,14 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
+#include <unistd.h>
 
 #include "analysis/curve_analysis.hpp"
 #include "core/input_error.hpp"
+#include "core/spawn.hpp"
 #include "harness/claims.hpp"
+#include "harness/plotter.hpp"
 #include "data/parameter_set.hpp"
 #include "io/h5_file.hpp"
 #include "io/result_writer.hpp"
@@ -56,6 +60,48 @@ choices = ["a", "b"]
 unit = "1"
 source = "s"
 )toml";
+
+// A plot script's declared parameters come from the run's summary.json, written as the drivers
+// write them into table names (number_text); a missing or non-numeric one is named.
+TEST(PlotScripts, DeclaredParametersAreSetFromTheRunsSummary) {
+    const fs::path dir = fs::temp_directory_path() / ("granrepro-plotparams-" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    const fs::path summary = write(dir / "summary.json", R"({"parameters": {"fig8_t_c": {"value": 2e-6},
+        "fig8_r": {"value": [0.9, 0.5]}, "mode": {"value": "x"}}})");
+    EXPECT_EQ(parameter_assignments("plot x\n", summary), "");
+    EXPECT_EQ(parameter_assignments("# Parameters set by granrepro: fig8_r, fig8_t_c\nplot x\n", summary),
+              "fig8_r = '0.9 0.5'\nfig8_t_c = '2e-06'\n");
+    for (const char* bad : {"nope", "mode"}) {
+        try {
+            parameter_assignments(std::string("# Parameters set by granrepro: ") + bad + "\n", summary);
+            ADD_FAILURE() << bad << " accepted";
+        } catch (const std::runtime_error& e) {
+            EXPECT_NE(std::string(e.what()).find(std::string("parameter ") + bad), std::string::npos) << e.what();
+        }
+    }
+    fs::remove_all(dir);
+}
+
+// External programs get their arguments as they are (no shell reads them), run in the given
+// directory, and a program that cannot be started is told apart from one that fails.
+TEST(Spawn, ArgumentsReachTheProgramUnreadByAShell) {
+    const fs::path dir = fs::temp_directory_path() / ("granrepro-spawn-" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    const std::string arg = "a'b;$(touch PWNED)`touch PWNED`\n-c";
+    auto output = [&] {
+        std::ifstream in(dir / "out");
+        return std::string(std::istreambuf_iterator<char>(in), {});
+    };
+    EXPECT_EQ(run_program({"printf", "%s", arg}, dir, dir / "out"), 0);
+    EXPECT_EQ(output(), arg);
+    EXPECT_EQ(program_output({"printf", "%s", arg}), arg);
+    EXPECT_EQ(run_program({"pwd"}, dir, dir / "out"), 0);
+    EXPECT_EQ(output(), fs::canonical(dir).string() + "\n");
+    EXPECT_EQ(run_program({"false"}), 1);
+    EXPECT_EQ(run_program({"/nonexistent/program"}), kNotStarted);
+    EXPECT_FALSE(fs::exists(dir / "PWNED"));
+    fs::remove_all(dir);
+}
 
 TEST(Interval, ParsesOpenAndClosedBounds) {
     const Interval iv = Interval::parse("(0, 1]");
