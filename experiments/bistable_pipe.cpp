@@ -46,6 +46,7 @@ struct BistablePipeSpec {
     double slow_v0 = 0, fast_v0 = 0, agitation = 0, v_crit_2000 = 0, v_abort = 0; // [m/s]
     double steps_per_contact = 0, skin = 0, budget_tcol = 0; // skin [m]; budget in contact durations t_col (Eq. 4)
     double window = 0, t_average = 0, sample_dt = 0, eq9_window = 0, drift_tol = 0; // [s]; drift_tol [m/s^2]
+    double relax_multiple = 0; // [1]; 0: the fixed-window rule
     template <class V> void fields(V&& v) {
         v("width", width); v("length", length); v("length_check", length_check); v("d_wall", d_wall); v("phi", phi);
         v("wall_spacing", wall_spacing); v("d_mean", d_mean); v("polydispersity", polydispersity); v("m_mean", m_mean);
@@ -53,7 +54,7 @@ struct BistablePipeSpec {
         v("slow_v0", slow_v0); v("fast_v0", fast_v0); v("agitation", agitation); v("v_crit_2000", v_crit_2000);
         v("v_abort", v_abort); v("steps_per_contact", steps_per_contact); v("skin", skin); v("budget_tcol", budget_tcol);
         v("window", window); v("t_average", t_average); v("sample_dt", sample_dt); v("eq9_window", eq9_window);
-        v("drift_tol", drift_tol);
+        v("drift_tol", drift_tol); v("relax_multiple", relax_multiple);
     }
 };
 
@@ -144,13 +145,20 @@ struct RunResult {
     int outcome = kUnsettled;
     double t_steady = NAN, v_mean = NAN, v_final = NAN, t_final = NAN, accel_final = NAN;
     double sigma_vx = NAN, ndot = NAN, dvy = NAN, vx_in = NAN, vy_in = NAN;
-    long grains = 0;
-    std::vector<double> t, v, sx;        // samples: time [s], mean v_y [m/s], rms v_x [m/s]
+    double tau_relax = NAN; // relaxation time over the hold (the relaxation rule only) [s]
+    long grains = 0, steps = 0, list_builds = 0; // Verlet-list builds: the cost of fast flows (issue 26)
+    double xi_max = 0;        // largest overlap over the run, relative to the smaller diameter [1]
+    double xi_steady = NAN;   // the same over the steady state [1]
+    double phi_wall = NAN;    // near-wall area fraction over the steady state [1]
+    std::vector<double> t, v, sx, pw, xq; // samples: time [s], mean v_y [m/s], rms v_x [m/s], near-wall area
+                                          // fraction [1], largest overlap / smaller diameter since the last sample [1]
     std::vector<double> w_ndot, w_dvy, w_sx, w_v; // windows (Eq. 9 estimates): ṅ, Δv_y, σ_vx, v
     template <class V> void fields(V&& f) {
         f("outcome", outcome); f("t_steady", t_steady); f("v_mean", v_mean); f("v_final", v_final);
         f("t_final", t_final); f("accel_final", accel_final); f("sigma_vx", sigma_vx); f("ndot", ndot); f("dvy", dvy);
-        f("vx_in", vx_in); f("vy_in", vy_in); f("grains", grains); f("t", t); f("v", v); f("sx", sx);
+        f("vx_in", vx_in); f("vy_in", vy_in); f("tau_relax", tau_relax); f("grains", grains);
+        f("steps", steps); f("list_builds", list_builds); f("xi_max", xi_max); f("xi_steady", xi_steady); f("phi_wall", phi_wall);
+        f("t", t); f("v", v); f("sx", sx); f("pw", pw); f("xq", xq);
         f("w_ndot", w_ndot); f("w_dvy", w_dvy); f("w_sx", w_sx); f("w_v", w_v);
     }
 };
@@ -159,6 +167,12 @@ double slope(const std::vector<double>& t, const std::vector<double>& v, std::si
     double c0, c1, c00, c01, c11, ss;
     gsl_fit_linear(t.data() + from, 1, v.data() + from, 1, t.size() - from, &c0, &c1, &c00, &c01, &c11, &ss);
     return c1;
+}
+
+// The relaxation rule (relax_multiple M > 0): a span is settled when it covers at least M of the
+// pipe's own relaxation times tau, and its drift is zero within its error (95 %) and below drift_tol.
+bool settled(const DriftFit& f, double relax_multiple, double drift_tol) {
+    return f.span >= relax_multiple * f.tau && drift_within_error(f) && std::abs(f.slope) < drift_tol;
 }
 
 // Wall impacts per sample interval, so that any span of samples can be summed.
@@ -198,6 +212,8 @@ void steady_means(RunResult& r, const WallSamples& walls, double steady_since, d
     const WallImpactStats w = walls.sum(from, to);
     r.v_mean = span_mean(r.v, from, to);
     r.sigma_vx = span_mean(r.sx, from, to);
+    r.phi_wall = span_mean(r.pw, from, to);
+    if (from < to) r.xi_steady = *std::max_element(r.xq.begin() + long(from), r.xq.begin() + long(to));
     r.ndot = double(w.impacts) / (double(to - from) * sample_dt * double(n));
     if (w.completed > 0) {
         r.dvy = w.sum_dvy / double(w.completed);
@@ -222,7 +238,7 @@ void eq9_windows(RunResult& r, const WallSamples& walls, double eq9_window, doub
 // Runs one start until it is steady, falls freely, passes v_abort or exhausts its budget. Steady:
 // over the trailing window the fitted slope of the mean velocity is below drift_tol [m/s^2] (braking
 // balances gravity to that accuracy) and stays below it over the following averaging window.
-RunResult run_pipe(const PipeSpec& s, double t_budget, double eq9_window) {
+RunResult run_pipe(const PipeSpec& s, double t_budget, double eq9_window, double relax_multiple) {
     Engine eng = build_pipe(s);
     RunResult r;
     r.grains = long(eng.size());
@@ -230,16 +246,29 @@ RunResult run_pipe(const PipeSpec& s, double t_budget, double eq9_window) {
     const std::size_t per_window = std::size_t(std::max(3.0, std::round(s.window / s.sample_dt)));
     WallSamples walls;
     double steady_since = NAN, next = s.sample_dt;
+    double hold = s.t_average, tau_hint = 0; // the relaxation rule's hold [s] and last relaxation time [s]
+    const std::size_t check_every = std::max<std::size_t>(1, per_window / 10);
     bool free_fall = false;
+    // The layer next to each wall (Eq. 9: ṅ goes with the volume fraction "near the wall"): one mean
+    // diameter inward from the wall grains' crests; a grain counts whole when its centre is inside.
+    const double layer_in = s.geo.wall_radius + s.d_mean, layer_area = 2 * s.d_mean * s.geo.length;
+    double xi = 0; // largest overlap ratio since the last sample
     while (eng.time() < t_budget) {
         eng.step();
+        xi = std::max(xi, eng.max_overlap_ratio());
         if (eng.time() + 0.5 * eng.dt() < next) continue;
+        r.xq.push_back(xi);
+        r.xi_max = std::max(r.xi_max, xi);
+        xi = 0;
         next += s.sample_dt;
-        double v = 0, sx = 0;
+        double v = 0, sx = 0, near = 0;
         for (std::size_t i = 0; i < n; ++i) {
             v += eng.vy()[i];
             sx += eng.vx()[i] * eng.vx()[i];
+            const double x = eng.x()[i], rad = eng.radius()[i];
+            if (x < layer_in || x > s.geo.width - layer_in) near += M_PI * rad * rad;
         }
+        r.pw.push_back(near / layer_area);
         r.t.push_back(eng.time());
         r.v.push_back(v / double(n));
         r.sx.push_back(std::sqrt(sx / double(n)));
@@ -253,6 +282,29 @@ RunResult run_pipe(const PipeSpec& s, double t_budget, double eq9_window) {
             free_fall = true;
             break;
         }
+        if (relax_multiple > 0) {
+            // The relaxation rule: detect over M relaxation times, then hold as long again.
+            if ((m - per_window) % check_every != 0) continue;
+            if (std::isnan(steady_since)) {
+                const DriftFit f0 = drift_fit(r.t, r.v, m - per_window);
+                const double span = std::max(s.window, relax_multiple * std::max(f0.tau, tau_hint));
+                if (eng.time() - r.t.front() < span) continue;
+                const DriftFit f = drift_fit(r.t, r.v, sample_after(r.t, eng.time() - span));
+                tau_hint = f.tau;
+                if (settled(f, relax_multiple, s.drift_tol)) {
+                    steady_since = eng.time();
+                    hold = std::max(s.t_average, span);
+                }
+            } else if (eng.time() >= steady_since + hold) {
+                const DriftFit f = drift_fit(r.t, r.v, sample_after(r.t, steady_since));
+                if (settled(f, relax_multiple, s.drift_tol)) {
+                    r.tau_relax = f.tau;
+                    break;
+                }
+                steady_since = NAN;
+            }
+            continue;
+        }
         if (std::isnan(steady_since)) {
             if (std::abs(drift) < s.drift_tol) steady_since = eng.time();
         } else if (eng.time() >= steady_since + s.t_average) {
@@ -264,10 +316,12 @@ RunResult run_pipe(const PipeSpec& s, double t_budget, double eq9_window) {
         }
     }
     const std::size_t m = r.t.size();
+    r.steps = eng.steps();
+    r.list_builds = eng.list_builds();
     r.v_final = r.v.back();
     r.t_final = r.t.back();
     r.accel_final = m > per_window ? slope(r.t, r.v, m - per_window) : NAN;
-    const bool steady = !std::isnan(steady_since) && eng.time() >= steady_since + s.t_average - 1e-12;
+    const bool steady = !std::isnan(steady_since) && eng.time() >= steady_since + hold - 1e-12;
     r.outcome = steady ? kSteady : (free_fall || r.accel_final < -(s.geo.gravity - s.drift_tol)) ? kFreeFall : kUnsettled;
     if (steady) steady_means(r, walls, steady_since, s.sample_dt, n);
     eq9_windows(r, walls, eq9_window, s.sample_dt, n);
@@ -374,7 +428,7 @@ std::pair<std::vector<RunResult>, long> run_sweep(const RunContext& ctx, const B
         s.geo.length = std::round(t.length / s.geo.wall_spacing) * s.geo.wall_spacing;
         s.v0 = t.fast ? b.fast_v0 : b.slow_v0;
         s.stream = std::uint64_t(i);
-        return to_json_fields(run_pipe(s, time_budget(b, t.k, t.e), b.eq9_window));
+        return to_json_fields(run_pipe(s, time_budget(b, t.k, t.e), b.eq9_window, b.relax_multiple));
     });
     std::vector<RunResult> results;
     for (const auto& j : swept.points) results.push_back(from_json_fields<RunResult>(j));
@@ -384,7 +438,7 @@ std::pair<std::vector<RunResult>, long> run_sweep(const RunContext& ctx, const B
 // The columns of one k_N's table of Fig. 6, per start (0 slow, 1 fast) over e_N, and the
 // construction's link for the slow start at the largest e_N.
 enum SteadyColumn { kV, kVLast, kOutcome, kTEnd, kBalance, kSigmaVx, kNdot, kDvy, kVConstruction, kImpactSlope,
-                    kContacts, kVyImpact, kVConstructionVxin, kReach, kColumns };
+                    kContacts, kVyImpact, kVConstructionVxin, kReach, kTauRelax, kBuildsPerStep, kXiSteady, kColumns };
 struct KColumns { std::vector<double> col[2][kColumns]; double link_top = NAN; };
 // Over all runs: the worst Eq. (9) balance, the smallest impact-curve slope, steady states.
 struct Totals { double worst_balance = 0, min_slope = INFINITY; int steady = 0; };
@@ -404,7 +458,8 @@ KColumns table_k(Result& r, const BistablePipeSpec& b, const PipeSpec& base, std
             const double row[kColumns] = {ok ? -rr.v_mean : NAN, -rr.v_final, double(rr.outcome),
                                           ok ? rr.t_steady : rr.t_final, bal, ok ? rr.sigma_vx : NAN,
                                           ok ? rr.ndot : NAN, ok ? rr.dvy : NAN, cons.v, cons.slope, cons.contacts,
-                                          ok ? rr.vy_in : NAN, cons.v_vxin, cons.reach};
+                                          ok ? rr.vy_in : NAN, cons.v_vxin, cons.reach, rr.tau_relax,
+                                          double(rr.list_builds) / double(std::max(1L, rr.steps)), ok ? rr.xi_steady : NAN};
             for (int j = 0; j < kColumns; ++j) c.col[f][j].push_back(row[j]);
             if (ok) {
                 ++tot.steady;
@@ -416,8 +471,8 @@ KColumns table_k(Result& r, const BistablePipeSpec& b, const PipeSpec& base, std
     t.add("e_N", "1").values = es;
     const char* names[kColumns] = {"v", "v_last", "outcome", "t_end", "eq9_balance", "sigma_vx", "ndot", "dvy",
                                    "v_construction", "impact_slope", "impact_contacts", "vy_impact",
-                                   "v_construction_vxin", "construction_reach"};
-    const char* units[kColumns] = {"m/s", "m/s", "1", "s", "1", "m/s", "1/s", "m/s", "m/s", "s", "1", "m/s", "m/s", "1"};
+                                   "v_construction_vxin", "construction_reach", "tau_relax", "list_builds_per_step", "xi_max_steady"};
+    const char* units[kColumns] = {"m/s", "m/s", "1", "s", "1", "m/s", "1/s", "m/s", "m/s", "s", "1", "m/s", "m/s", "1", "s", "1", "1"};
     for (int f = 0; f < 2; ++f)
         for (int j = 0; j < kColumns; ++j) t.add(std::string(names[j]) + (f ? "_fast" : "_slow"), units[j]).values = c.col[f][j];
     return c;
@@ -511,6 +566,36 @@ void report_branch_k(Result& r, const std::vector<double>& es, const std::string
 }
 
 // Fig. 6 over every k_N, and what the paper says across them.
+// "If the flow ... becomes higher than v_crit, the system will accelerate to the emergency-brake
+// steady state" (Summary): of the runs of one k_N whose mean speed ever exceeded v_crit, the
+// fraction that ended above it (a fast steady state, or still faster than v_crit at the end).
+void report_vcrit_crossings_k(Result& r, const std::string& kt, std::vector<RunResult>::const_iterator runs,
+                              std::size_t count, double v_crit) {
+    int crossed = 0, ended_fast = 0;
+    for (std::size_t j = 0; j < count; ++j) {
+        const RunResult& rr = runs[long(j)];
+        if (rr.v.empty() || -*std::min_element(rr.v.begin(), rr.v.end()) <= v_crit) continue;
+        ++crossed;
+        ended_fast += (rr.outcome == kSteady ? -rr.v_mean : -rr.v_final) > v_crit;
+    }
+    r.scalar("vcrit_crossings_" + kt, crossed, "1", "runs whose mean speed exceeded v_crit at some sample");
+    r.scalar("vcrit_crossings_end_fast_" + kt, crossed ? double(ended_fast) / crossed : NAN, "1",
+             "fraction of those runs that ended above v_crit (fast steady state, or faster than v_crit at the end)");
+}
+
+// Eq. (9)'s argument: the volume fraction near the wall is "essentially a constant for fixed global
+// volume fraction". Over every steady state (all k_N, both starts, one global phi): its spread.
+void report_near_wall_phi(Result& r, const std::vector<RunResult>& results) {
+    std::vector<double> pw;
+    for (const RunResult& rr : results)
+        if (rr.outcome == kSteady && std::isfinite(rr.phi_wall)) pw.push_back(rr.phi_wall);
+    const auto [lo, hi] = std::minmax_element(pw.begin(), pw.end());
+    const double mean = pw.empty() ? NAN : std::accumulate(pw.begin(), pw.end(), 0.0) / double(pw.size());
+    r.scalar("near_wall_phi_mean", mean, "1", "mean area fraction of the layer one diameter inside the wall crests, steady states");
+    r.scalar("near_wall_phi_spread", pw.size() >= 2 ? (*hi - *lo) / mean : NAN, "1",
+             "(largest - smallest) / mean of that near-wall area fraction over the steady states");
+}
+
 void report_fig6(Result& r, const BistablePipeSpec& b, const PipeSpec& base, const std::vector<RunResult>& results) {
     const auto &ks = b.kN_list, &es = b.eN_list;
     Totals tot;
@@ -520,7 +605,17 @@ void report_fig6(Result& r, const BistablePipeSpec& b, const PipeSpec& base, con
         const double v_crit = b.v_crit_2000 * std::sqrt(ks[ki] / 2000.0);
         report_states_k(r, es, kt, c, v_crit);
         for (bool fast : {false, true}) report_branch_k(r, es, kt, c, v_crit, fast);
+        report_vcrit_crossings_k(r, kt, results.begin() + long(ki * es.size() * 2), es.size() * 2, v_crit);
+        double xi = 0;
+        for (std::size_t j = 0; j < es.size() * 2; ++j) xi = std::max(xi, results[ki * es.size() * 2 + j].xi_max);
+        r.scalar("xi_max_over_d_" + kt, xi, "1",
+                 "largest overlap of any contact over all runs at this k_N, over the smaller diameter (Eq. 4's xi_max)");
+        double xs = NAN;
+        for (std::size_t j = 0; j < es.size() * 2; ++j)
+            if (const double x = results[ki * es.size() * 2 + j].xi_steady; std::isfinite(x)) xs = std::isnan(xs) ? x : std::max(xs, x);
+        r.scalar("xi_max_steady_over_d_" + kt, xs, "1", "the same over the steady states only (NaN: none)");
     }
+    report_near_wall_phi(r, results);
     r.scalar("steady_runs", tot.steady, "1", "runs that reached a steady state");
     // Softer grains brake earlier: the k_N = 200 fast branch against the k_N = 2000 one at the same
     // e_N (geometric mean of the speed ratio over the e_N where both fast starts settled).
@@ -573,8 +668,10 @@ void report_eq9_windows(Result& r, const std::vector<Task>& tasks, const std::ve
     tw.add({{"k_N", "N/m", wk}, {"ndot", "1/s", wn}, {"dvy", "m/s", wd}, {"sigma_vx", "m/s", ws}, {"v", "m/s", wv}});
     const auto a = lx.size() >= 10 ? fit_power_law(lx, ly, 0, INFINITY) : PowerLawFit{NAN, NAN, 0};
     const auto c = ld.size() >= 10 ? fit_power_law(ld, lnd, 0, INFINITY) : PowerLawFit{NAN, NAN, 0};
+    const auto sd = ld.size() >= 10 ? fit_power_law(ld, lx, 0, INFINITY) : PowerLawFit{NAN, NAN, 0};
     r.scalar("ndot_vs_sigma_vx_exponent", a.exponent, "1", "exponent of ṅ ∝ σ_vx^a over all windows");
     r.scalar("ndot_dvy_vs_dvy_exponent", c.exponent, "1", "exponent of ṅ Δv_y ∝ Δv_y^b over all windows");
+    r.scalar("sigma_vx_vs_dvy_exponent", sd.exponent, "1", "exponent of σ_vx ∝ Δv_y^c over all windows");
     r.scalar("eq9_windows", double(lx.size()), "1", "windows in those fits");
 }
 

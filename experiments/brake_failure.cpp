@@ -217,6 +217,8 @@ Peak report_fig3(Result& r, const Sweep& w, const std::vector<Curve>& curves) {
     // Normal regime: Δv_y ∝ v_y^i below v_crit. Slope of log Δv_y over the lowest half decade.
     const auto low = fit_power_law(vy, c.dvy, vy.front(), vy.front() * std::sqrt(10.0));
     r.scalar("low_v_exponent_dvy", low.exponent, "1", "exponent of Δv_y ∝ v^a over the lowest half decade");
+    r.scalar("low_v_exponent_dvx", fit_power_law(vy, c.dvx, vy.front(), vy.front() * std::sqrt(10.0)).exponent, "1",
+             "exponent of Δv_x ∝ v^a over the lowest half decade");
     r.scalar("dt_fine_max_rel_diff", max_relative_difference(curves[kFine].dvy, c.dvy), "1",
              "largest |Δv_y(dt/fine) - Δv_y(dt)| relative to max Δv_y");
 

@@ -3,8 +3,13 @@
 # e_N so that coinciding states stay visible). A run that reached no steady state within its budget
 # is drawn as an arrow pointing up from its last speed (outcome 1: free fall, 2: still drifting).
 # Lines join a start's states within one regime (normal or emergency brake) only.
-# The speed axis is logarithmic: the slow and fast branches differ by up to a factor 100.
+# Dotted lines: v_crit of each k_N (Eq. 8: v_crit = v_crit_2000 sqrt(k_N / 2000 N/m)), the border
+# between the normal regime and brake failure. Grey band: where the paper's slow branch becomes
+# unstable (e_N ≈ 0.85, text below Fig. 6), half a grid step either side.
+# The speed axis is logarithmic: the slow and fast branches differ by up to a factor 100, and
+# v_crit spans 1.3-40 m/s over the three k_N.
 # Variables set by granrepro: datadir, outbase, tables.
+# Parameters set by granrepro: v_crit_2000
 set datafile separator "\t"
 set datafile missing "NaN"
 # The steady_k<k_N> tables, k_N ascending (granrepro lists them in numeric order).
@@ -46,19 +51,25 @@ do for [i=1:words(steady)] {
   }
 }
 cmd = cmd.", NaN with vectors head filled lw 1.5 lc rgb 'black' title 'no steady state: arrow up from its last speed'"
+vcrit(i) = real(v_crit_2000) * sqrt(real(kname(i)) / 2000.0)
+do for [i=1:words(steady)] {
+  cmd = cmd.sprintf(", %.6g with lines dt 3 lw 1.5 lc rgb '%s' title 'v_{crit} = %.3g m/s (k_N = %s N/m)'", vcrit(i), word(colors, i), vcrit(i), kname(i))
+}
 do for [fmt in "png pdf"] {
   if (fmt eq "png") { set terminal pngcairo size 900,760 enhanced font "Sans,11" }
   else { set terminal pdfcairo size 6.3in,5.3in enhanced font "Sans,10" }
   set output outbase.'.'.fmt
   set xlabel "e_N (free grain on a wall grain)"
-  set ylabel "mean velocity  [m/s]"
+  set ylabel "mean velocity  [m/s]  (log scale)"
+  set object 1 rect from 0.825, graph 0 to 0.875, graph 1 fillcolor rgb "#e8e8e8" fillstyle solid noborder behind
+  set label 1 "paper: slow branch\nunstable at e_N ≈ 0.85" at 0.85, graph 0.97 center front font ",9"
   set title "vertical pipe, width 2 cm, φ = 0.55, μ = 0.5"
   set grid lc rgb "#dddddd"
   set logscale y
   set format y "%g"
   set xrange [0.45:1.02]
   set yrange [0.3:800]
-  set key below box Left reverse maxrows 4
+  set key below box Left reverse maxrows 5
   eval cmd
   unset output
 }
