@@ -438,7 +438,7 @@ std::pair<std::vector<RunResult>, long> run_sweep(const RunContext& ctx, const B
 // The columns of one k_N's table of Fig. 6, per start (0 slow, 1 fast) over e_N, and the
 // construction's link for the slow start at the largest e_N.
 enum SteadyColumn { kV, kVLast, kOutcome, kTEnd, kBalance, kSigmaVx, kNdot, kDvy, kVConstruction, kImpactSlope,
-                    kContacts, kVyImpact, kVConstructionVxin, kReach, kTauRelax, kBuildsPerStep, kXiSteady, kColumns };
+                    kContacts, kVyImpact, kVConstructionVxin, kReach, kTauRelax, kBuildsPerStep, kXiSteady, kPhiWall, kColumns };
 struct KColumns { std::vector<double> col[2][kColumns]; double link_top = NAN; };
 // Over all runs: the worst Eq. (9) balance, the smallest impact-curve slope, steady states.
 struct Totals { double worst_balance = 0, min_slope = INFINITY; int steady = 0; };
@@ -459,7 +459,8 @@ KColumns table_k(Result& r, const BistablePipeSpec& b, const PipeSpec& base, std
                                           ok ? rr.t_steady : rr.t_final, bal, ok ? rr.sigma_vx : NAN,
                                           ok ? rr.ndot : NAN, ok ? rr.dvy : NAN, cons.v, cons.slope, cons.contacts,
                                           ok ? rr.vy_in : NAN, cons.v_vxin, cons.reach, rr.tau_relax,
-                                          double(rr.list_builds) / double(std::max(1L, rr.steps)), ok ? rr.xi_steady : NAN};
+                                          double(rr.list_builds) / double(std::max(1L, rr.steps)), ok ? rr.xi_steady : NAN,
+                                          ok ? rr.phi_wall : NAN};
             for (int j = 0; j < kColumns; ++j) c.col[f][j].push_back(row[j]);
             if (ok) {
                 ++tot.steady;
@@ -471,8 +472,9 @@ KColumns table_k(Result& r, const BistablePipeSpec& b, const PipeSpec& base, std
     t.add("e_N", "1").values = es;
     const char* names[kColumns] = {"v", "v_last", "outcome", "t_end", "eq9_balance", "sigma_vx", "ndot", "dvy",
                                    "v_construction", "impact_slope", "impact_contacts", "vy_impact",
-                                   "v_construction_vxin", "construction_reach", "tau_relax", "list_builds_per_step", "xi_max_steady"};
-    const char* units[kColumns] = {"m/s", "m/s", "1", "s", "1", "m/s", "1/s", "m/s", "m/s", "s", "1", "m/s", "m/s", "1", "s", "1", "1"};
+                                   "v_construction_vxin", "construction_reach", "tau_relax", "list_builds_per_step", "xi_max_steady",
+                                   "phi_wall"};
+    const char* units[kColumns] = {"m/s", "m/s", "1", "s", "1", "m/s", "1/s", "m/s", "m/s", "s", "1", "m/s", "m/s", "1", "s", "1", "1", "1"};
     for (int f = 0; f < 2; ++f)
         for (int j = 0; j < kColumns; ++j) t.add(std::string(names[j]) + (f ? "_fast" : "_slow"), units[j]).values = c.col[f][j];
     return c;
