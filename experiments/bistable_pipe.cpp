@@ -46,7 +46,7 @@ struct BistablePipeSpec {
     double slow_v0 = 0, fast_v0 = 0, agitation = 0, v_crit_2000 = 0, v_abort = 0; // [m/s]
     double steps_per_contact = 0, skin = 0, budget_tcol = 0; // skin [m]; budget in contact durations t_col (Eq. 4)
     double window = 0, t_average = 0, sample_dt = 0, eq9_window = 0, drift_tol = 0; // [s]; drift_tol [m/s^2]
-    double relax_multiple = 0; // [1]; 0: the fixed-window rule
+    double hold_distance = 0, agitation_vcrit = 0; // [m]: a steady state holds while falling this far; [1]
     template <class V> void fields(V&& v) {
         v("width", width); v("length", length); v("length_check", length_check); v("d_wall", d_wall); v("phi", phi);
         v("wall_spacing", wall_spacing); v("d_mean", d_mean); v("polydispersity", polydispersity); v("m_mean", m_mean);
@@ -54,7 +54,8 @@ struct BistablePipeSpec {
         v("slow_v0", slow_v0); v("fast_v0", fast_v0); v("agitation", agitation); v("v_crit_2000", v_crit_2000);
         v("v_abort", v_abort); v("steps_per_contact", steps_per_contact); v("skin", skin); v("budget_tcol", budget_tcol);
         v("window", window); v("t_average", t_average); v("sample_dt", sample_dt); v("eq9_window", eq9_window);
-        v("drift_tol", drift_tol); v("relax_multiple", relax_multiple);
+        v("drift_tol", drift_tol); v("hold_distance", hold_distance);
+        v("agitation_vcrit", agitation_vcrit);
     }
 };
 
@@ -67,6 +68,9 @@ PipeSpec pipe_spec(const BistablePipeSpec& b, std::uint64_t seed) {
             .steps_per_contact = b.steps_per_contact, .skin = b.skin, .window = b.window, .drift_tol = b.drift_tol,
             .t_average = b.t_average, .sample_dt = b.sample_dt, .v_abort = b.v_abort, .seed = seed};
 }
+
+// v_crit of Eq. (8) at k_N, from Fig. 3's maximum at 2000 N/m (v_crit ∝ sqrt(k_N)) [m/s].
+double v_crit(const BistablePipeSpec& b, double k) { return b.v_crit_2000 * std::sqrt(k / 2000.0); }
 
 // The run's time budget: budget_tcol free-wall contact durations (Eq. 4) at its own k_N, e_N.
 double time_budget(const BistablePipeSpec& b, double k, double e) {
@@ -145,7 +149,6 @@ struct RunResult {
     int outcome = kUnsettled;
     double t_steady = NAN, v_mean = NAN, v_final = NAN, t_final = NAN, accel_final = NAN;
     double sigma_vx = NAN, ndot = NAN, dvy = NAN, vx_in = NAN, vy_in = NAN;
-    double tau_relax = NAN; // relaxation time over the hold (the relaxation rule only) [s]
     long grains = 0, steps = 0, list_builds = 0; // Verlet-list builds: the cost of fast flows (issue 26)
     double xi_max = 0;        // largest overlap over the run, relative to the smaller diameter [1]
     double xi_steady = NAN;   // the same over the steady state [1]
@@ -156,7 +159,7 @@ struct RunResult {
     template <class V> void fields(V&& f) {
         f("outcome", outcome); f("t_steady", t_steady); f("v_mean", v_mean); f("v_final", v_final);
         f("t_final", t_final); f("accel_final", accel_final); f("sigma_vx", sigma_vx); f("ndot", ndot); f("dvy", dvy);
-        f("vx_in", vx_in); f("vy_in", vy_in); f("tau_relax", tau_relax); f("grains", grains);
+        f("vx_in", vx_in); f("vy_in", vy_in); f("grains", grains);
         f("steps", steps); f("list_builds", list_builds); f("xi_max", xi_max); f("xi_steady", xi_steady); f("phi_wall", phi_wall);
         f("t", t); f("v", v); f("sx", sx); f("pw", pw); f("xq", xq);
         f("w_ndot", w_ndot); f("w_dvy", w_dvy); f("w_sx", w_sx); f("w_v", w_v);
@@ -167,12 +170,6 @@ double slope(const std::vector<double>& t, const std::vector<double>& v, std::si
     double c0, c1, c00, c01, c11, ss;
     gsl_fit_linear(t.data() + from, 1, v.data() + from, 1, t.size() - from, &c0, &c1, &c00, &c01, &c11, &ss);
     return c1;
-}
-
-// The relaxation rule (relax_multiple M > 0): a span is settled when it covers at least M of the
-// pipe's own relaxation times tau, and its drift is zero within its error (95 %) and below drift_tol.
-bool settled(const DriftFit& f, double relax_multiple, double drift_tol) {
-    return f.span >= relax_multiple * f.tau && drift_within_error(f) && std::abs(f.slope) < drift_tol;
 }
 
 // Wall impacts per sample interval, so that any span of samples can be summed.
@@ -237,8 +234,9 @@ void eq9_windows(RunResult& r, const WallSamples& walls, double eq9_window, doub
 
 // Runs one start until it is steady, falls freely, passes v_abort or exhausts its budget. Steady:
 // over the trailing window the fitted slope of the mean velocity is below drift_tol [m/s^2] (braking
-// balances gravity to that accuracy) and stays below it over the following averaging window.
-RunResult run_pipe(const PipeSpec& s, double t_budget, double eq9_window, double relax_multiple) {
+// balances gravity to that accuracy) and stays below it over the following hold: t_average, or
+// longer for a slow state, which must keep its speed while falling hold_distance.
+RunResult run_pipe(const PipeSpec& s, double t_budget, double eq9_window, double hold_distance) {
     Engine eng = build_pipe(s);
     RunResult r;
     r.grains = long(eng.size());
@@ -246,8 +244,7 @@ RunResult run_pipe(const PipeSpec& s, double t_budget, double eq9_window, double
     const std::size_t per_window = std::size_t(std::max(3.0, std::round(s.window / s.sample_dt)));
     WallSamples walls;
     double steady_since = NAN, next = s.sample_dt;
-    double hold = s.t_average, tau_hint = 0; // the relaxation rule's hold [s] and last relaxation time [s]
-    const std::size_t check_every = std::max<std::size_t>(1, per_window / 10);
+    double hold = s.t_average; // [s]
     bool free_fall = false;
     // The layer next to each wall (Eq. 9: ṅ goes with the volume fraction "near the wall"): one mean
     // diameter inward from the wall grains' crests; a grain counts whole when its centre is inside.
@@ -282,32 +279,14 @@ RunResult run_pipe(const PipeSpec& s, double t_budget, double eq9_window, double
             free_fall = true;
             break;
         }
-        if (relax_multiple > 0) {
-            // The relaxation rule: detect over M relaxation times, then hold as long again.
-            if ((m - per_window) % check_every != 0) continue;
-            if (std::isnan(steady_since)) {
-                const DriftFit f0 = drift_fit(r.t, r.v, m - per_window);
-                const double span = std::max(s.window, relax_multiple * std::max(f0.tau, tau_hint));
-                if (eng.time() - r.t.front() < span) continue;
-                const DriftFit f = drift_fit(r.t, r.v, sample_after(r.t, eng.time() - span));
-                tau_hint = f.tau;
-                if (settled(f, relax_multiple, s.drift_tol)) {
-                    steady_since = eng.time();
-                    hold = std::max(s.t_average, span);
-                }
-            } else if (eng.time() >= steady_since + hold) {
-                const DriftFit f = drift_fit(r.t, r.v, sample_after(r.t, steady_since));
-                if (settled(f, relax_multiple, s.drift_tol)) {
-                    r.tau_relax = f.tau;
-                    break;
-                }
-                steady_since = NAN;
-            }
-            continue;
-        }
         if (std::isnan(steady_since)) {
-            if (std::abs(drift) < s.drift_tol) steady_since = eng.time();
-        } else if (eng.time() >= steady_since + s.t_average) {
+            if (std::abs(drift) < s.drift_tol) {
+                steady_since = eng.time();
+                // A slow state near the edge of its branch is metastable: it must hold while the
+                // plug passes many wall grains, not only for t_average.
+                hold = std::max(s.t_average, hold_distance / std::max(std::abs(span_mean(r.v, m - per_window, m)), 1e-300));
+            }
+        } else if (eng.time() >= steady_since + hold) {
             // Confirm over the averaging window itself: a plateau that happened to fill the
             // detection window but keeps drifting afterwards is not a steady state; search on.
             const std::size_t from = sample_after(r.t, steady_since);
@@ -427,8 +406,9 @@ std::pair<std::vector<RunResult>, long> run_sweep(const RunContext& ctx, const B
         s.e_N = t.e;
         s.geo.length = std::round(t.length / s.geo.wall_spacing) * s.geo.wall_spacing;
         s.v0 = t.fast ? b.fast_v0 : b.slow_v0;
+        s.agitation = std::min(b.agitation, b.agitation_vcrit * v_crit(b, t.k));
         s.stream = std::uint64_t(i);
-        return to_json_fields(run_pipe(s, time_budget(b, t.k, t.e), b.eq9_window, b.relax_multiple));
+        return to_json_fields(run_pipe(s, time_budget(b, t.k, t.e), b.eq9_window, b.hold_distance));
     });
     std::vector<RunResult> results;
     for (const auto& j : swept.points) results.push_back(from_json_fields<RunResult>(j));
@@ -438,7 +418,7 @@ std::pair<std::vector<RunResult>, long> run_sweep(const RunContext& ctx, const B
 // The columns of one k_N's table of Fig. 6, per start (0 slow, 1 fast) over e_N, and the
 // construction's link for the slow start at the largest e_N.
 enum SteadyColumn { kV, kVLast, kOutcome, kTEnd, kBalance, kSigmaVx, kNdot, kDvy, kVConstruction, kImpactSlope,
-                    kContacts, kVyImpact, kVConstructionVxin, kReach, kTauRelax, kBuildsPerStep, kXiSteady, kPhiWall, kColumns };
+                    kContacts, kVyImpact, kVConstructionVxin, kReach, kBuildsPerStep, kXiSteady, kPhiWall, kColumns };
 struct KColumns { std::vector<double> col[2][kColumns]; double link_top = NAN; };
 // Over all runs: the worst Eq. (9) balance, the smallest impact-curve slope, steady states.
 struct Totals { double worst_balance = 0, min_slope = INFINITY; int steady = 0; };
@@ -458,7 +438,7 @@ KColumns table_k(Result& r, const BistablePipeSpec& b, const PipeSpec& base, std
             const double row[kColumns] = {ok ? -rr.v_mean : NAN, -rr.v_final, double(rr.outcome),
                                           ok ? rr.t_steady : rr.t_final, bal, ok ? rr.sigma_vx : NAN,
                                           ok ? rr.ndot : NAN, ok ? rr.dvy : NAN, cons.v, cons.slope, cons.contacts,
-                                          ok ? rr.vy_in : NAN, cons.v_vxin, cons.reach, rr.tau_relax,
+                                          ok ? rr.vy_in : NAN, cons.v_vxin, cons.reach,
                                           double(rr.list_builds) / double(std::max(1L, rr.steps)), ok ? rr.xi_steady : NAN,
                                           ok ? rr.phi_wall : NAN};
             for (int j = 0; j < kColumns; ++j) c.col[f][j].push_back(row[j]);
@@ -472,9 +452,9 @@ KColumns table_k(Result& r, const BistablePipeSpec& b, const PipeSpec& base, std
     t.add("e_N", "1").values = es;
     const char* names[kColumns] = {"v", "v_last", "outcome", "t_end", "eq9_balance", "sigma_vx", "ndot", "dvy",
                                    "v_construction", "impact_slope", "impact_contacts", "vy_impact",
-                                   "v_construction_vxin", "construction_reach", "tau_relax", "list_builds_per_step", "xi_max_steady",
+                                   "v_construction_vxin", "construction_reach", "list_builds_per_step", "xi_max_steady",
                                    "phi_wall"};
-    const char* units[kColumns] = {"m/s", "m/s", "1", "s", "1", "m/s", "1/s", "m/s", "m/s", "s", "1", "m/s", "m/s", "1", "s", "1", "1", "1"};
+    const char* units[kColumns] = {"m/s", "m/s", "1", "s", "1", "m/s", "1/s", "m/s", "m/s", "s", "1", "m/s", "m/s", "1", "1", "1", "1"};
     for (int f = 0; f < 2; ++f)
         for (int j = 0; j < kColumns; ++j) t.add(std::string(names[j]) + (f ? "_fast" : "_slow"), units[j]).values = c.col[f][j];
     return c;
@@ -604,10 +584,10 @@ void report_fig6(Result& r, const BistablePipeSpec& b, const PipeSpec& base, con
     for (std::size_t ki = 0; ki < ks.size(); ++ki) { // one row of the figure
         const std::string kt = "k" + number_text(ks[ki]);
         const KColumns c = table_k(r, b, base, ki, kt, results, tot);
-        const double v_crit = b.v_crit_2000 * std::sqrt(ks[ki] / 2000.0);
-        report_states_k(r, es, kt, c, v_crit);
-        for (bool fast : {false, true}) report_branch_k(r, es, kt, c, v_crit, fast);
-        report_vcrit_crossings_k(r, kt, results.begin() + long(ki * es.size() * 2), es.size() * 2, v_crit);
+        const double vc = v_crit(b, ks[ki]);
+        report_states_k(r, es, kt, c, vc);
+        for (bool fast : {false, true}) report_branch_k(r, es, kt, c, vc, fast);
+        report_vcrit_crossings_k(r, kt, results.begin() + long(ki * es.size() * 2), es.size() * 2, vc);
         double xi = 0;
         for (std::size_t j = 0; j < es.size() * 2; ++j) xi = std::max(xi, results[ki * es.size() * 2 + j].xi_max);
         r.scalar("xi_max_over_d_" + kt, xi, "1",

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <gsl/gsl_cdf.h>
 #include <gsl/gsl_fit.h>
 #include <limits>
 
@@ -134,63 +133,6 @@ double fit_haff_inv_t0(const std::vector<double>& t, const std::vector<double>& 
     double c1 = NAN, cov = 0, ss = 0;
     if (x.size() >= 2) gsl_fit_mul(x.data(), 1, y.data(), 1, x.size(), &c1, &cov, &ss);
     return c1;
-}
-
-namespace {
-// a' R b for R_ij = rho^|i-j| (the AR(1) correlation), in O(n): S_i = rho (S_{i-1} + a_{i-1}).
-double ar1_form(const std::vector<double>& a, const std::vector<double>& b, double rho) {
-    double sum = 0, sa = 0, sb = 0;
-    for (std::size_t i = 0; i < a.size(); ++i) {
-        if (i > 0) {
-            sa = rho * (sa + a[i - 1]);
-            sb = rho * (sb + b[i - 1]);
-        }
-        sum += a[i] * b[i] + b[i] * sa + a[i] * sb;
-    }
-    return sum;
-}
-} // namespace
-
-DriftFit drift_fit(const std::vector<double>& t, const std::vector<double>& v, std::size_t from) {
-    DriftFit f;
-    if (from >= t.size() || t.size() - from < 4) return f;
-    const std::size_t n = t.size() - from;
-    const double nn = double(n);
-    double tm = 0, vm = 0;
-    for (std::size_t i = from; i < t.size(); ++i) tm += t[i] / nn, vm += v[i] / nn;
-    std::vector<double> tc(n), one(n, 1.0), r(n);
-    double stt = 0, stv = 0;
-    for (std::size_t i = 0; i < n; ++i) {
-        tc[i] = t[from + i] - tm;
-        stt += tc[i] * tc[i];
-        stv += tc[i] * (v[from + i] - vm);
-    }
-    f.slope = stv / stt;
-    double rr = 0, r1 = 0;
-    for (std::size_t i = 0; i < n; ++i) {
-        r[i] = v[from + i] - vm - f.slope * tc[i];
-        rr += r[i] * r[i];
-        if (i > 0) r1 += r[i - 1] * r[i];
-    }
-    f.span = t.back() - t[from];
-    // Lag-1 correlation of the residuals, with the first-order bias of removing a line added back
-    // (-(2 + 4 rho)/n); kept below 1 so that tau stays finite.
-    double rho = rr > 0 ? r1 / (rr * (nn - 1) / nn) : 0.0;
-    rho = std::clamp(rho + (2 + 4 * rho) / nn, 0.0, 0.999);
-    const double dt = f.span / (nn - 1);
-    f.tau = rho > 0 ? -dt / std::log(rho) : 0.5 * dt;
-    // E[r'r] = sigma^2 (n - tr(H R)) for the hat matrix H of (1, t): the line absorbs part of the
-    // correlated noise. tr(H R) = 1'R1/n + tc'R tc/stt for centred t.
-    const double trace_hr = ar1_form(one, one, rho) / nn + ar1_form(tc, tc, rho) / stt;
-    const double sigma2 = rr / std::max(nn - trace_hr, 1.0);
-    f.error = std::sqrt(sigma2 * ar1_form(tc, tc, rho)) / stt; // var(slope) = sigma^2 w'R w, w = tc/stt
-    f.dof = f.span / (2 * f.tau) - 2;
-    return f;
-}
-
-bool drift_within_error(const DriftFit& f, double confidence) {
-    if (!(f.dof >= 1)) return false;
-    return std::abs(f.slope) <= gsl_cdf_tdist_Pinv(0.5 + 0.5 * confidence, f.dof) * f.error;
 }
 
 } // namespace granrepro

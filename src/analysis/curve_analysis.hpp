@@ -41,22 +41,6 @@ double max_relative_difference(const std::vector<double>& a, const std::vector<d
 // below two samples.
 double fit_haff_inv_t0(const std::vector<double>& t, const std::vector<double>& k_over_k0, double t0);
 
-// The drift of a time series v(t) over samples [from, end) (equally spaced in t), with its standard
-// error and the series' own relaxation time. Near a steady state a relaxing mean (the pipe's mean
-// velocity) behaves like an Ornstein-Uhlenbeck process, dV/dt = -(V - V_s)/tau + noise, which
-// sampled every dt is an AR(1) series with lag-1 correlation rho = exp(-dt/tau). rho comes from the
-// residuals of the least-squares line (bias-corrected); the slope's error is then exact for that
-// noise, sigma^2 w'R w with R_ij = rho^|i-j|, and a span T holds about T / (2 tau) independent
-// samples: dof = T / (2 tau) - 2 degrees of freedom for a Student-t test of the slope. Fewer than
-// 4 samples: NaN. (tests/unit/drift_fit_test.cpp checks tau and the test's coverage on OU series.)
-struct DriftFit {
-    double slope = std::numeric_limits<double>::quiet_NaN(), error = slope, tau = slope; // [v/t], [v/t], [t]
-    double span = 0, dof = 0;                                                          // [t], [1]
-};
-DriftFit drift_fit(const std::vector<double>& t, const std::vector<double>& v, std::size_t from);
-// The drift is zero within its error at this two-sided confidence (false below 1 degree of freedom).
-bool drift_within_error(const DriftFit& f, double confidence = 0.95);
-
 // First x at which y crosses `level` upwards (linear interpolation in log x); NaN if never.
 double first_upward_crossing(const std::vector<double>& x, const std::vector<double>& y, double level);
 
