@@ -44,7 +44,7 @@ struct BistablePipeSpec {
     std::string friction_normal;                                                  // the reading of Eq. (2)
     std::vector<double> kN_list, eN_list;                                         // [N/m], [1]
     double slow_v0 = 0, fast_v0 = 0, agitation = 0, v_crit_2000 = 0, v_abort = 0; // [m/s]
-    double steps_per_contact = 0, skin = 0, budget_tcol = 0; // skin [m]; budget in contact durations t_col (Eq. 4)
+    double steps_per_contact = 0, skin = 0, budget_tcol = 0, budget_min = 0; // skin [m]; budget in contact durations t_col (Eq. 4); [s]
     double window = 0, t_average = 0, sample_dt = 0, eq9_window = 0, drift_tol = 0; // [s]; drift_tol [m/s^2]
     double hold_distance = 0, agitation_vcrit = 0; // [m]: a steady state holds while falling this far; [1]
     template <class V> void fields(V&& v) {
@@ -52,7 +52,7 @@ struct BistablePipeSpec {
         v("wall_spacing", wall_spacing); v("d_mean", d_mean); v("polydispersity", polydispersity); v("m_mean", m_mean);
         v("mu", mu); v("g", g); v("friction_normal", friction_normal); v("kN_list", kN_list); v("eN_list", eN_list);
         v("slow_v0", slow_v0); v("fast_v0", fast_v0); v("agitation", agitation); v("v_crit_2000", v_crit_2000);
-        v("v_abort", v_abort); v("steps_per_contact", steps_per_contact); v("skin", skin); v("budget_tcol", budget_tcol);
+        v("v_abort", v_abort); v("steps_per_contact", steps_per_contact); v("skin", skin); v("budget_tcol", budget_tcol); v("budget_min", budget_min);
         v("window", window); v("t_average", t_average); v("sample_dt", sample_dt); v("eq9_window", eq9_window);
         v("drift_tol", drift_tol); v("hold_distance", hold_distance);
         v("agitation_vcrit", agitation_vcrit);
@@ -72,9 +72,10 @@ PipeSpec pipe_spec(const BistablePipeSpec& b, std::uint64_t seed) {
 // v_crit of Eq. (8) at k_N, from Fig. 3's maximum at 2000 N/m (v_crit ∝ sqrt(k_N)) [m/s].
 double v_crit(const BistablePipeSpec& b, double k) { return b.v_crit_2000 * std::sqrt(k / 2000.0); }
 
-// The run's time budget: budget_tcol free-wall contact durations (Eq. 4) at its own k_N, e_N.
+// The run's time budget: budget_tcol free-wall contact durations (Eq. 4) at its own k_N, e_N, and
+// at least budget_min: the stiffest pipe's flows take seconds to settle, not contact durations.
 double time_budget(const BistablePipeSpec& b, double k, double e) {
-    return b.budget_tcol * pipe_law(k, e, b.m_mean).collision_time(b.m_mean);
+    return std::max(b.budget_tcol * pipe_law(k, e, b.m_mean).collision_time(b.m_mean), b.budget_min);
 }
 
 void validate(const ParameterSet& p) {
