@@ -30,10 +30,10 @@ dt(k) = int(word(dashes, (k-1)%7+1))
 # sideways shift of window k: spread symmetrically over +-0.012 b/d (bins are 0.05 wide)
 nshift = (nwin < 3 ? nwin : 3)
 # The largest P of any window decides whether the main axis still resolves P = 1 +- a few %.
+# (Accumulated inside `using (..., 0)`, so that a window without collisions, all NaN, is no error.)
 pmax = 0
 do for [k=1:nwin] {
-  stats f using (column(2*k)) skip 1 nooutput
-  pmax = (STATS_max > pmax ? STATS_max : pmax)
+  stats f using (v = column(2*k), pmax = (v > pmax ? v : pmax), 0) skip 1 nooutput
 }
 inset = (pmax > 2)
 shift(k) = (k <= nshift && nshift > 1) ? 0.012*(2.0*(k-1)/(nshift-1) - 1) : 0

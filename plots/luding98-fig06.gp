@@ -18,17 +18,17 @@ shift(c) = 2*(c-2)
 tlabel(c) = sprintf("t = %s s (+%d)", substr(columnhead(c), 4, 20), shift(c))
 stats ed using 1 skip 1 nooutput
 rmax = STATS_max
-# Top of the y axis: the highest shifted curve (ED or DSMC) beyond the contact region.
+# Top of the y axis: the highest shifted curve (ED or DSMC) beyond the contact region; peak[c]:
+# the ED contact peak. (Accumulated inside `using (..., 0)`, so a NaN column is no error.)
 ytop = 0
 array peak[ncol]
 do for [c=2:ncol] {
-  stats ed using ($1 >= 1.2 ? column(c) + shift(c) : NaN) skip 1 nooutput
-  ytop = (STATS_max > ytop ? STATS_max : ytop)
-  stats ed using ($1 >= 1 && $1 < 1.2 ? column(c) : NaN) skip 1 nooutput
-  peak[c] = STATS_max
+  peak[c] = 0
+  stats ed using (g = column(c), \
+                  ytop = ($1 >= 1.2 && g + shift(c) > ytop ? g + shift(c) : ytop), \
+                  peak[c] = ($1 >= 1 && $1 < 1.2 && g > peak[c] ? g : peak[c]), 0) skip 1 nooutput
   if (have_dsmc) {
-    stats ds using ($1 >= 1.2 ? column(c) + shift(c) : NaN) skip 1 nooutput
-    ytop = (STATS_max > ytop ? STATS_max : ytop)
+    stats ds using (g = column(c), ytop = ($1 >= 1.2 && g + shift(c) > ytop ? g + shift(c) : ytop), 0) skip 1 nooutput
   }
 }
 do for [fmt in "png pdf"] {

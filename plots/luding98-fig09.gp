@@ -22,12 +22,12 @@ kmean(dummy) = 10**column("log10_K_over_K0")
 klo(dummy) = 10**(column("log10_K_over_K0") - column("log10_K_over_K0_sem"))
 khi(dummy) = 10**(column("log10_K_over_K0") + column("log10_K_over_K0_sem"))
 # Both rows share their axes, taken from the single runs (which reach further than the means).
+# (Accumulated inside `using (..., 0)`; K = 0 or NaN is left out, as the log axis cannot show it.)
 tmax = 0
 kmin = 1
 do for [k=1:n] {
-  stats run(k) using "t":"K_over_K0" nooutput
-  tmax = (STATS_max_x > tmax ? STATS_max_x : tmax)
-  kmin = (STATS_min_y < kmin ? STATS_min_y : kmin)
+  stats run(k) using (t = column("t"), K = column("K_over_K0"), tmax = (t > tmax ? t : tmax), \
+                      kmin = (K > 0 && K < kmin ? K : kmin), 0) nooutput
 }
 set print $guide25
 print sprintf("10\t0.4\n100\t%g", 0.4*10**-2.5)
