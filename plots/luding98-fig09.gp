@@ -17,10 +17,13 @@ run(k) = datadir.'/run_r'.fig9_r.'_tc'.word(tlist, k).'.tsv'
 mt(k) = datadir.'/mean_t_r'.fig9_r.'_tc'.word(tlist, k).'.tsv'
 mc(k) = datadir.'/mean_cn_r'.fig9_r.'_tc'.word(tlist, k).'.tsv'
 lab(k) = sprintf("t_c = %s s", word(tlist, k))
-# K/K0 of a seed mean, and the edges of its +-1 standard-error band (the mean is of log10 K).
+# K/K0 of a seed mean, and the edges of its +-1 standard-error band (the mean is of log10 K). One
+# seed has no standard error (NaN): the band then has zero width rather than no points, which
+# gnuplot would warn about.
 kmean(dummy) = 10**column("log10_K_over_K0")
-klo(dummy) = 10**(column("log10_K_over_K0") - column("log10_K_over_K0_sem"))
-khi(dummy) = 10**(column("log10_K_over_K0") + column("log10_K_over_K0_sem"))
+sem(dummy) = (s = column("log10_K_over_K0_sem"), s == s ? s : 0)
+klo(dummy) = 10**(column("log10_K_over_K0") - sem(0))
+khi(dummy) = 10**(column("log10_K_over_K0") + sem(0))
 # Both rows share their axes, taken from the single runs (which reach further than the means).
 # (Accumulated inside `using (..., 0)`; K = 0 or NaN is left out, as the log axis cannot show it.)
 tmax = 0
