@@ -1,7 +1,7 @@
 # Luding (1998) Fig. 3: normalised P(b/d) of the ED run of Fig. 2 in successive time windows
 # [t_begin, t_end) (impact_parameter_windows.tsv; columns P_t<begin> of impact_parameter_ed.tsv).
 # The early windows all lie at P = 1 (molecular chaos, Sec. 3.2), so each window has its own
-# symbol and dash type, the symbols are shifted sideways by a few thousandths of b/d so that the
+# symbol and dash type, the first three are shifted sideways by up to 0.012 b/d so that their
 # error bars stay apart (as in Fig. 4), and, when a late window's grazing peak (P > 2) squashes
 # the rest, an inset enlarges the first three windows around P = 1.
 # Variables set by granrepro: datadir, outbase, tables.
@@ -27,7 +27,6 @@ dashes = "1 2 4 5 1 2 4"
 col(k) = word(colors, (k-1)%7+1)
 pt(k) = int(word(points, (k-1)%7+1))
 dt(k) = int(word(dashes, (k-1)%7+1))
-# sideways shift of window k: spread symmetrically over +-0.012 b/d (bins are 0.05 wide)
 nshift = (nwin < 3 ? nwin : 3)
 # The largest P of any window decides whether the main axis still resolves P = 1 +- a few %.
 # (Accumulated inside `using (..., 0)`, so that a window without collisions, all NaN, is no error.)
@@ -36,6 +35,8 @@ do for [k=1:nwin] {
   stats f using (v = column(2*k), pmax = (v > pmax ? v : pmax), 0) skip 1 nooutput
 }
 inset = (pmax > 2)
+# Sideways shift of window k: the first nshift spread symmetrically over +-0.012 b/d (bins are
+# 0.05 wide); the later windows, already apart in P, stay at the bin centres.
 shift(k) = (k <= nshift && nshift > 1) ? 0.012*(2.0*(k-1)/(nshift-1) - 1) : 0
 do for [fmt in "png pdf"] {
   if (fmt eq "png") { set terminal pngcairo size 800,600 enhanced font "Sans,11" }
