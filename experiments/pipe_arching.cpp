@@ -33,6 +33,7 @@
 #include <utility>
 
 #include "analysis/crack_detector.hpp"
+#include "analysis/arch_waves.hpp"
 #include "analysis/disjoint_sets.hpp"
 #include "core/rng_stream.hpp"
 #include "data/spec.hpp"
@@ -503,27 +504,16 @@ void arch_aftermath(SeedRun& out, const Pipe& s, const Fall& fl, long fa) {
         if (b.y0 > a.y0 + s.arch_separation) out.arch_above_later = 1;
         if (b.y0 < a.y0 - s.arch_separation) out.arch_below_later = 1;
     }
-    // Section 5 (after Ref. [7]): cracks "ascend progressively", and material from above hits the
-    // decelerated plug and "causes a new, possibly stronger momentum wave". Without cracks (claim
-    // crack_visible) the arches are the waves we can follow: a frame's arch is a new wave when its
-    // initial height differs from the previous wave's by more than arch_separation; each step
-    // between successive waves rises or falls. A wave's strength is its largest number of hot disks
-    // in one frame (the first arch's counted while it stays within arch_separation of its height).
-    double y_prev = a.y0, first_peak = 0, later_peak = 0;
-    out.wave_steps = out.wave_steps_up = out.wave_stronger = 0;
+    // Successive arches as momentum waves (src/analysis/arch_waves.hpp): do they rise, is a later one stronger.
+    std::vector<ArchSighting> seen;
     for (long k = fa; k <= s.n_frames; ++k) {
         const ArchFound& b = fl.at(k).arch;
-        if (!b.found) continue;
-        const bool near_first = std::abs(b.y0 - a.y0) <= s.arch_separation;
-        if (near_first && k < f4) first_peak = std::max(first_peak, double(b.members.size()));
-        if (!near_first && k >= f4) later_peak = std::max(later_peak, double(b.members.size()));
-        if (std::abs(b.y0 - y_prev) > s.arch_separation) {
-            out.wave_steps += 1;
-            out.wave_steps_up += b.y0 > y_prev ? 1 : 0;
-        }
-        y_prev = b.y0;
+        seen.push_back({b.found, b.y0, double(b.members.size())});
     }
-    out.wave_stronger = later_peak > first_peak ? 1 : 0;
+    const ArchWaves w = follow_arch_waves(seen, std::size_t(f4 - fa), s.arch_separation);
+    out.wave_steps = w.steps;
+    out.wave_steps_up = w.steps_up;
+    out.wave_stronger = w.stronger() ? 1 : 0;
 }
 
 // The first arch's plug and the material below it, as Lagrangian bands (initial heights): how
