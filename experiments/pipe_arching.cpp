@@ -33,6 +33,7 @@
 #include <utility>
 
 #include "analysis/crack_detector.hpp"
+#include "analysis/arch_waves.hpp"
 #include "analysis/disjoint_sets.hpp"
 #include "core/rng_stream.hpp"
 #include "data/spec.hpp"
@@ -184,6 +185,8 @@ struct SeedRun {
     double arch_size = NAN, arch_pL = NAN, arch_pR = NAN;
     double t_precursor = NAN, react_lag = NAN;
     double arch_left_4ms = NAN, arch_above_later = NAN, arch_below_later = NAN;
+    double wave_steps = NAN, wave_steps_up = NAN;  // successive distinct arches ("momentum waves") and how many rose
+    double wave_stronger = NAN;                     // 1 if a later wave elsewhere had more hot disks than the first arch
     double plug_wall_load = NAN, arch_brake = NAN, opening_below = NAN;
     double wall_slowdown_arch = NAN, wall_slowdown_before = NAN;
     double t_crack = NAN, y_crack = NAN, y0_crack = NAN, crack_opening = NAN;
@@ -203,6 +206,7 @@ struct SeedRun {
         v("y_arch", y_arch); v("y0_arch", y0_arch); v("arch_size", arch_size); v("arch_pL", arch_pL);
         v("arch_pR", arch_pR); v("t_precursor", t_precursor);
         v("react_lag", react_lag); v("arch_left_4ms", arch_left_4ms); v("arch_above_later", arch_above_later);
+        v("wave_steps", wave_steps); v("wave_steps_up", wave_steps_up); v("wave_stronger", wave_stronger);
         v("arch_below_later", arch_below_later); v("plug_wall_load", plug_wall_load); v("arch_brake", arch_brake);
         v("opening_below", opening_below); v("wall_slowdown_arch", wall_slowdown_arch);
         v("wall_slowdown_before", wall_slowdown_before); v("t_crack", t_crack); v("y_crack", y_crack);
@@ -500,6 +504,16 @@ void arch_aftermath(SeedRun& out, const Pipe& s, const Fall& fl, long fa) {
         if (b.y0 > a.y0 + s.arch_separation) out.arch_above_later = 1;
         if (b.y0 < a.y0 - s.arch_separation) out.arch_below_later = 1;
     }
+    // Successive arches as momentum waves (src/analysis/arch_waves.hpp): do they rise, is a later one stronger.
+    std::vector<ArchSighting> seen;
+    for (long k = fa; k <= s.n_frames; ++k) {
+        const ArchFound& b = fl.at(k).arch;
+        seen.push_back({b.found, b.y0, double(b.members.size())});
+    }
+    const ArchWaves w = follow_arch_waves(seen, std::size_t(f4 - fa), s.arch_separation);
+    out.wave_steps = w.steps;
+    out.wave_steps_up = w.steps_up;
+    out.wave_stronger = w.stronger() ? 1 : 0;
 }
 
 // The first arch's plug and the material below it, as Lagrangian bands (initial heights): how
@@ -864,7 +878,10 @@ void report_seed_table(Result& res, const std::vector<SeedRun>& runs) {
         {"arch_brake", "m/s", &S::arch_brake}, {"opening_below", "d", &S::opening_below},
         {"wall_slowdown_arch", "m/s", &S::wall_slowdown_arch}, {"opening_max_after", "d", &S::opening_max_after},
         {"t_crack", "s", &S::t_crack}, {"y_crack", "d", &S::y_crack}, {"y0_crack", "d", &S::y0_crack},
-        {"crack_opening", "d", &S::crack_opening}, {"friction_share", "1", &S::friction_share}, {"A", "1/s", &S::A},
+        {"crack_opening", "d", &S::crack_opening}, {"opening_max_before", "d", &S::opening_max_before},
+        {"opening_max_all", "d", &S::opening_max_all}, {"wave_steps", "1", &S::wave_steps},
+        {"wave_steps_up", "1", &S::wave_steps_up}, {"wave_stronger", "1", &S::wave_stronger},
+        {"friction_share", "1", &S::friction_share}, {"A", "1/s", &S::A},
         {"B", "1/s", &S::B}, {"wall_seconds", "s", &S::wall_seconds}};
     for (const auto& [name, unit, f] : cols) st.add(name, unit).values = per_seed(runs, f);
 }
@@ -904,6 +921,9 @@ void report_arch_times(Result& res, const std::vector<SeedRun>& runs) {
                "fraction of seeds whose arch's first hot wall disk appeared by the paper's 0.048 s");
     res.scalar("crack_time_fraction_by_paper", fraction_below(tc, 0.060), "1",
                "fraction of seeds with a crack by the paper's 0.060 s");
+    // Section 5 takes P(N_c) at 0.02-0.05 s as "before the first arch (or crack) occurs".
+    res.scalar("arch_by_0.05_fraction", fraction_below(ta, 0.05), "1",
+               "fraction of seeds whose first arch formed by 0.05 s, the last Fig. 14(a) time");
     res.scalar("arch_height_median", median_finite(per_seed(runs, &SeedRun::y_arch)), "d", "lab height of the first arch above the removed floor, median");
     res.scalar("arch_initial_height_median", median_finite(per_seed(runs, &SeedRun::y0_arch)), "d", "initial (t = 0) height of the first arch's disks, median");
     res.scalar("crack_initial_height_median", median_finite(per_seed(runs, &SeedRun::y0_crack)), "d", "initial height of the disks bounding the first crack, median");
@@ -953,6 +973,24 @@ void report_section(Result& res, const std::vector<SeedRun>& runs) {
                "widest wall-to-wall crack within arch_window after the first arch, median");
     res.scalar("opening_max_all_median", median(&SeedRun::opening_max_all), "d",
                "widest wall-to-wall crack at any frame from t_detect_min on, median over seeds");
+    // The distribution of the widest gap, not only crack yes/no (issue 27).
+    for (const auto& [name, f] : {std::pair{"opening_max_all", &SeedRun::opening_max_all}, std::pair{"opening_max_after", &SeedRun::opening_max_after}}) {
+        std::vector<double> v = per_seed(runs, f);
+        std::erase_if(v, [](double x) { return !std::isfinite(x); });
+        res.scalar(std::string(name) + "_q25", v.empty() ? NAN : censored_quantile(v, 0.25), "d", "its lower quartile over seeds");
+        res.scalar(std::string(name) + "_q75", v.empty() ? NAN : censored_quantile(v, 0.75), "d", "its upper quartile over seeds");
+        res.scalar(std::string(name) + "_max", v.empty() ? NAN : *std::max_element(v.begin(), v.end()), "d", "its largest value over seeds");
+    }
+    // Successive waves (arch_aftermath): the share of steps that rise, pooled over seeds, and the
+    // seeds in which a later wave is stronger than the first arch, among the seeds with an arch.
+    double steps = 0, up = 0;
+    for (const SeedRun& r : runs)
+        if (std::isfinite(r.wave_steps)) { steps += r.wave_steps; up += r.wave_steps_up; }
+    res.scalar("wave_steps_total", steps, "1", "steps between successive distinct arches, summed over seeds");
+    res.scalar("wave_ascend_share", steps > 0 ? up / steps : NAN, "1",
+               "share of those steps in which the new wave starts higher than the previous one");
+    res.scalar("wave_stronger_fraction", share_finite(per_seed(runs, &SeedRun::wave_stronger), [](double y) { return y == 1.0; }), "1",
+               "seeds in which a later wave (arch more than arch_separation from the first, after its first 4 ms) had more hot disks than the first arch, among seeds with an arch");
     res.scalar("crack_below_arch_median", median(&SeedRun::crack_below_arch), "d",
                "initial height of the first arch minus that of the first crack, median (> 0: crack below)");
     res.scalar("crack_at_initiator_median", median(&SeedRun::crack_at_initiator), "d",

@@ -1,10 +1,11 @@
 # Luding (1998) Fig. 14: P(N_c) over the last 5 ms of run 0. (a) before arches, semi-log, with the
 # exponential Eq. (21); (b) after, log-log, with the power law Eq. (22).
-# Thin dashed lines: each time fitted alone (run 0; legend: value ± fit error, table
-# fits_per_time). Thick black line: the fit pooled over the panel's four times, median over seeds
-# (table fits) - the value `granrepro check` compares with the paper (claims A_rate, B_rate),
-# printed with the check table's four digits, in both readings of the paper's unit: 1e3 1/s, or
-# collisions per Δt.
+# The points are one run (run 0), so the lines drawn through them are run 0's: thin dashed, each
+# time fitted alone (table fits_per_time); thick black, the fit pooled over the panel's four times
+# (table fits, A_run0 / B_run0). The value `granrepro check` compares with the paper (claims
+# A_rate, B_rate) is the pooled fit's median over seeds: a thick grey dashed line, named as such,
+# and in the panel title in both readings of the paper's unit (1e3 1/s, or collisions per Δt).
+# The keys sit in the empty lower left corner, with the fitted values only (no repeated words).
 # Variables set by granrepro: datadir, outbase, tables.
 set datafile separator "\t"
 set datafile missing "NaN"
@@ -15,7 +16,7 @@ n = words(pnc)
 file(k) = datadir.'/'.word(pnc, k).'.tsv'
 fits = datadir.'/fits.tsv'
 pt = datadir.'/fits_per_time.tsv'
-stats fits using (A = column(1), B = column(5), ns = int(column(9)), dt = column(10), 0) skip 1 every ::0::0 nooutput
+stats fits using (A = column(1), B = column(5), A0 = column(3), B0 = column(7), ns = int(column(9)), dt = column(10), 0) skip 1 every ::0::0 nooutput
 # Row k of fits_per_time: time k's own fit and its error.
 array vals[n]
 array errs[n]
@@ -36,7 +37,7 @@ do for [fmt in "png pdf"] {
   set output outbase.'.'.fmt
   set multiplot layout 1,2
   set grid lc rgb "#dddddd"
-  set key top right box opaque font ",9"
+  set key bottom left box opaque font ",9" samplen 2 spacing 1.0 width -2
   set xlabel "N_c [1/s]"
   set ylabel "P(N_c) [s]"
   unset logscale x
@@ -45,20 +46,24 @@ do for [fmt in "png pdf"] {
   set format y "10^{%L}"
   set xrange [0:8000]
   set yrange [1e-8:1e-2]
-  set title sprintf("(a) before arches (semi-log): A = %s s^{-1} = %s × 10^3 s^{-1} = %s per Δt", g4(A), gprintf("%.2f", A/1e3), gprintf("%.2f", A*dt))
+  set title sprintf("(a) before arches (semi-log), run 0\nchecked: A = %s s^{-1} = %s × 10^3 s^{-1} = %s per Δt (median over %d seeds)", g4(A), gprintf("%.2f", A/1e3), gprintf("%.2f", A*dt), ns)
+  set key title "run 0, A [s^{-1}]"
   plot for [k=1:4] file(k) using 1:($2>0?$2:1/0):3 skip 1 with yerrorbars pt int(word(points,k)) ps 0.8 \
-         lc rgb word(colors,k) title sprintf("t = %s s: A = %s ± %s s^{-1}", tl(k), g4(val(k)), g4(err(k))), \
+         lc rgb word(colors,k) title sprintf("%s s: %s ± %s", tl(k), g4(val(k)), g4(err(k))), \
        for [k=1:4] Pe(x, val(k)) with lines lw 1 dt 2 lc rgb word(colors,k) notitle, \
-       Pe(x, A) with lines lw 2.5 lc rgb "black" title sprintf("Eq. (21), pooled: A = %s s^{-1} (median, %d seeds)", g4(A), ns)
+       Pe(x, A0) with lines lw 2.5 lc rgb "black" title sprintf("Eq. (21), pooled: %s", g4(A0)), \
+       Pe(x, A) with lines lw 2 dt 2 lc rgb "#888888" title sprintf("median over %d seeds: %s", ns, g4(A))
   set logscale xy
   set format x "10^{%L}"
   set xrange [100:1e6]
   set yrange [1e-10:1e-2]
-  set title sprintf("(b) after arches (log-log): B = %s s^{-1} = %s × 10^3 s^{-1} = %s per Δt", g4(B), gprintf("%.2f", B/1e3), gprintf("%.2f", B*dt))
+  set title sprintf("(b) after arches (log-log), run 0\nchecked: B = %s s^{-1} = %s × 10^3 s^{-1} = %s per Δt (median over %d seeds)", g4(B), gprintf("%.2f", B/1e3), gprintf("%.2f", B*dt), ns)
+  set key title "run 0, B [s^{-1}]"
   plot for [k=5:n] file(k) using 1:($2>0?$2:1/0):3 skip 1 with yerrorbars pt int(word(points,k-4)) ps 0.8 \
-         lc rgb word(colors,k-4) title sprintf("t = %s s: B = %s ± %s s^{-1}", tl(k), g4(val(k)), g4(err(k))), \
+         lc rgb word(colors,k-4) title sprintf("%s s: %s ± %s", tl(k), g4(val(k)), g4(err(k))), \
        for [k=5:n] Pp(x, val(k)) with lines lw 1 dt 2 lc rgb word(colors,k-4) notitle, \
-       Pp(x, B) with lines lw 2.5 lc rgb "black" title sprintf("Eq. (22), pooled: B = %s s^{-1} (median, %d seeds)", g4(B), ns)
+       (B0 == B0 ? Pp(x, B0) : 1/0) with lines lw 2.5 lc rgb "black" title sprintf("Eq. (22), pooled: %s", g4(B0)), \
+       Pp(x, B) with lines lw 2 dt 2 lc rgb "#888888" title sprintf("median over %d seeds: %s", ns, g4(B))
   unset multiplot
   unset output
 }
