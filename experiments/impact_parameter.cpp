@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "analysis/eddy_pair.hpp"
+#include "analysis/stress_shape.hpp"
 #include "core/input_error.hpp"
 #include "core/rng_stream.hpp"
 #include "data/spec.hpp"
@@ -255,29 +256,16 @@ void validate(const ParameterSet& p) {
     }
 }
 
-// Shape of a cell's Eq. (9) stress: (|s1| - |s2|) / (|s1| + |s2|) of its compressive principal
-// stresses, 0 for an isotropic (gas-like) stress, 1 for uniaxial compression. Sec. 3.2's
-// "strongly different eigenvalues" outside the eddies is this number being large.
-double anisotropy(const CollisionalStress::Cell& c) {
-    const double a = std::fabs(c.sigma_min), b = std::fabs(c.sigma_max);
-    return a + b > 0 ? std::fabs(a - b) / (a + b) : NAN;
-}
-
-// Fig. 5, "rather random stresses" for r >= 0.9: how aligned the cells' major compressive axes are,
-// S = |mean over cells of exp(2 i theta)| (axes are headless, hence 2 theta). For n independent
-// random axes S^2 n is exponential (Rayleigh), mean sqrt(pi / (4 n)); a shear flow aligns them.
+// Fig. 5's stress shape (src/analysis/stress_shape.hpp): mean cell anisotropy and the alignment
+// of the principal axes over the cells.
 void stress_shape(PointResult& out) {
-    double sa = 0, na = 0, c2 = 0, s2 = 0;
+    double sa = 0, na = 0;
     for (const auto& c : out.cells) {
-        const double a = anisotropy(c);
+        const double a = stress_anisotropy(c);
         if (std::isfinite(a)) { sa += a; na += 1; }
-        const double th = std::atan2(c.axis_min.y(), c.axis_min.x());
-        c2 += std::cos(2 * th);
-        s2 += std::sin(2 * th);
     }
-    const double n = static_cast<double>(out.cells.size());
     out.stress_anisotropy = na > 0 ? sa / na : NAN;
-    out.stress_axes_order = n > 0 ? std::hypot(c2, s2) / n : NAN;
+    out.stress_axes_order = stress_axes_alignment(out.cells);
 }
 
 // Fig. 5 left, "two co-rotating eddies with small stresses inside": the strongest co-rotating
@@ -300,7 +288,7 @@ void eddy_measures(PointResult& out, double l, int nc, long n_sh, std::uint64_t 
                 return std::hypot(dx, dy);
             };
             const auto& cell = out.cells[static_cast<std::size_t>(ix + nc * iy)];
-            const double pr = cell.pressure(), an = anisotropy(cell);
+            const double pr = cell.pressure(), an = stress_anisotropy(cell);
             if (std::min(dist(ep.centre_a), dist(ep.centre_b)) < 0.25 * l) { p_in += pr; n_in += 1; a_in += an; }
             else { p_out += pr; n_out += 1; a_out += an; }
         }
@@ -710,7 +698,7 @@ void fig5_eddies(Result& res, const ImpactSpec& s, const std::vector<PointResult
         // P(S > s) = exp(-n s^2) for n random axes, so s_1% = sqrt(ln(100) / n)).
         std::vector<double> aniso_ratio;
         double aniso = 0, order = 0, random_axes = 0, flow_thermal = 0;
-        const double s_1pc = std::sqrt(std::log(100.0) / double(s.stress_cells * s.stress_cells));
+        const double s_1pc = random_axes_level(static_cast<std::size_t>(s.stress_cells * s.stress_cells), 0.01);
         for (std::size_t seed = 0; seed < s.n_seeds(); ++seed) {
             const PointResult& pr = at(s, pts, seed, k);
             if (std::isfinite(pr.eddy_outside_anisotropy_ratio)) aniso_ratio.push_back(pr.eddy_outside_anisotropy_ratio);
