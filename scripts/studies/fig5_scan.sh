@@ -85,7 +85,7 @@ case "${1:-}" in
     vb=${VBAR:?set T_C and VBAR}
     header
     row "t_c=$tc vbar=$vb" --set "t_c=$tc" --set "vbar=$vb"
-    for mb in "0.1 0.4" "0.5 0.4" "0.5 0" "0.5 -0.5"; do
+    for mb in "0.5 0.4" "0.5 0" "0.1 0.4"; do
       set -- $mb
       row "mu=$1 beta0=$2 t_c=$tc vbar=$vb" --set "t_c=$tc" --set "vbar=$vb" --set "mu=$1" --set "beta0=$2"
     done ;;
