@@ -7,10 +7,11 @@
 # the panel's sigma_max spanning 0.9 cell widths, as the paper scales each panel to its own
 # sigma_max. Blue arm: the larger compression; orange: the smaller.
 # Why not the paper's arrow factors 1, 3, 7: their units are not stated, and they only make
-# arrows of similar length if v(0.8) : v(0.9) : v(0.95) = 21 : 7 : 3. In our runs r = 0.95 is
-# the fastest (v(0.8)/v(0.95) ~ 0.64 over 32 seeds), so with 1, 3, 7 the right panel's arrows
-# would be ~11 times the left panel's: 0.8 d on the left would mean ~9 d, half the box, on the
-# right. The order the factors imply is checked as a claim (velocity_order_arrow_factors,
+# arrows of similar length if v(0.8) : v(0.9) : v(0.95) = 21 : 7 : 3. In our runs r = 0.9 is
+# the slowest panel and r = 0.95 about as fast as r = 0.8 (paper scale, 32 seeds, geometric
+# means: v(0.8)/v(0.9) = 2.4, v(0.8)/v(0.95) = 1.1; scripts/studies/fig5_scan.md), so with
+# 1, 3, 7 the right panel's arrows would be ~6 times the left panel's: 0.8 d on the left would
+# mean ~5 d, a third of the box, on the right. The order the factors imply is checked as a claim (velocity_order_arrow_factors,
 # scripts/studies/fig5_scan.sh); the relative tau in the titles is our counterpart of 1, 3, 7.
 # Variables set by granrepro: datadir, outbase.
 set datafile separator "\t"
