@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "analysis/eddy_pair.hpp"
+#include "analysis/stress_shape.hpp"
 #include "core/input_error.hpp"
 #include "core/rng_stream.hpp"
 #include "data/spec.hpp"
@@ -41,6 +42,7 @@ struct ImpactSpec {
     int n_bins = 0, stress_cells = 0;       // stress cells per side
     double rho = 0, d = 0, m = 0, vbar = 0; // area fraction, [m], [kg], [m/s]
     double t_c = 0, t_end = 0, stress_t_begin = 0;                            // [s]
+    double mu = 0, beta0 = -1; // Coulomb friction and tangential restitution of the cooling runs (Eqs. 4-6)
     double equilibration_collisions = 0, elastic_collisions_per_particle = 0; // per particle
     double arrow_rms_length = 0;                                              // [d]
     double eddy_significance = 0, elastic3d_collisions = 0;
@@ -48,7 +50,7 @@ struct ImpactSpec {
     template <class V> void fields(V&& v) {
         v("N", N); v("seeds", seeds); v("stress_snapshots", stress_snapshots); v("eddy_shuffles", eddy_shuffles);
         v("elastic3d_n_side", elastic3d_n_side); v("n_bins", n_bins); v("stress_cells", stress_cells); v("rho", rho);
-        v("d", d); v("m", m); v("vbar", vbar); v("t_c", t_c); v("t_end", t_end); v("stress_t_begin", stress_t_begin);
+        v("d", d); v("m", m); v("vbar", vbar); v("t_c", t_c); v("mu", mu); v("beta0", beta0); v("t_end", t_end); v("stress_t_begin", stress_t_begin);
         v("equilibration_collisions", equilibration_collisions); v("arrow_rms_length", arrow_rms_length);
         v("elastic_collisions_per_particle", elastic_collisions_per_particle); v("eddy_significance", eddy_significance);
         v("elastic3d_collisions", elastic3d_collisions); v("restitutions", restitutions); v("window_edges", window_edges);
@@ -110,11 +112,14 @@ struct PointResult {
     double k0 = 0.0, k_end = 0.0;     // translational K at t = 0 and t_end [J]
     double sigma_max = NAN, flow_fraction = NAN, v_rms = NAN; // see sigma_max_of(), flow_fraction(); [m/s]
     double eddy_strength = NAN, eddy_beats = NAN, eddy_core_pressure_ratio = NAN; // see eddy_measures()
+    double eddy_outside_anisotropy_ratio = NAN, stress_anisotropy = NAN, stress_axes_order = NAN; // see stress_shape()
     template <class V> void fields(V&& v) {
         v("counts", counts); v("pairs", pair_collisions); v("elastic_by_tc", elastic_by_tc); v("pos", pos);
         v("vel", vel); v("cells", cells); v("k_t", k_t); v("k_val", k_val); v("k0", k0); v("k_end", k_end);
         v("sigma_max", sigma_max); v("flow_fraction", flow_fraction); v("v_rms", v_rms);
         v("eddy_strength", eddy_strength); v("eddy_beats", eddy_beats); v("eddy_core_pressure_ratio", eddy_core_pressure_ratio);
+        v("eddy_outside_anisotropy_ratio", eddy_outside_anisotropy_ratio); v("stress_anisotropy", stress_anisotropy);
+        v("stress_axes_order", stress_axes_order);
     }
 };
 
@@ -251,6 +256,18 @@ void validate(const ParameterSet& p) {
     }
 }
 
+// Fig. 5's stress shape (src/analysis/stress_shape.hpp): mean cell anisotropy and the alignment
+// of the principal axes over the cells.
+void stress_shape(PointResult& out) {
+    double sa = 0, na = 0;
+    for (const auto& c : out.cells) {
+        const double a = stress_anisotropy(c);
+        if (std::isfinite(a)) { sa += a; na += 1; }
+    }
+    out.stress_anisotropy = na > 0 ? sa / na : NAN;
+    out.stress_axes_order = stress_axes_alignment(out.cells);
+}
+
 // Fig. 5 left, "two co-rotating eddies with small stresses inside": the strongest co-rotating
 // pair at t_end (src/analysis/eddy_pair.hpp), the share of n_sh velocity shuffles it beats, and
 // the mean pressure of the stress cells in its two cores over that of the other cells.
@@ -262,7 +279,7 @@ void eddy_measures(PointResult& out, double l, int nc, long n_sh, std::uint64_t 
                      static_cast<double>(n_sh);
     // Cores: cells whose centre lies within a quarter box (the quadrant's inscribed circle) of
     // either eddy centre.
-    double p_in = 0, n_in = 0, p_out = 0, n_out = 0;
+    double p_in = 0, n_in = 0, p_out = 0, n_out = 0, a_in = 0, a_out = 0;
     for (int iy = 0; iy < nc; ++iy)
         for (int ix = 0; ix < nc; ++ix) {
             const Vec2 c{(ix + 0.5) * l / nc, (iy + 0.5) * l / nc};
@@ -270,11 +287,14 @@ void eddy_measures(PointResult& out, double l, int nc, long n_sh, std::uint64_t 
                 const double dx = c.x - a.x - l * std::round((c.x - a.x) / l), dy = c.y - a.y - l * std::round((c.y - a.y) / l);
                 return std::hypot(dx, dy);
             };
-            const double pr = out.cells[static_cast<std::size_t>(ix + nc * iy)].pressure();
-            if (std::min(dist(ep.centre_a), dist(ep.centre_b)) < 0.25 * l) { p_in += pr; n_in += 1; }
-            else { p_out += pr; n_out += 1; }
+            const auto& cell = out.cells[static_cast<std::size_t>(ix + nc * iy)];
+            const double pr = cell.pressure(), an = stress_anisotropy(cell);
+            if (std::min(dist(ep.centre_a), dist(ep.centre_b)) < 0.25 * l) { p_in += pr; n_in += 1; a_in += an; }
+            else { p_out += pr; n_out += 1; a_out += an; }
         }
     if (n_in > 0 && n_out > 0 && p_out > 0) out.eddy_core_pressure_ratio = (p_in / n_in) / (p_out / n_out);
+    // Sec. 3.2: outside the eddies "the stress tensor typically has strongly different eigenvalues".
+    if (n_in > 0 && n_out > 0 && a_in > 0) out.eddy_outside_anisotropy_ratio = (a_out / n_out) / (a_in / n_in);
 }
 
 // A cooling run from t0 = e.time() to t0 + t_end: b/d per time window, the Eq. (9) stresses of the
@@ -324,6 +344,7 @@ PointResult cooling_run(const ImpactSpec& s, EdEngine& e, double l, bool figure_
     for (const auto& v : out.vel) v2 += norm2(v);
     out.v_rms = std::sqrt(v2 / static_cast<double>(s.N));
     out.k_end = 0.5 * s.m * v2;
+    stress_shape(out);
     eddy_measures(out, l, nc, s.eddy_shuffles, shuffle_seed);
     if (!figure_run) { out.pos.clear(); out.vel.clear(); out.cells.clear(); }
     return out;
@@ -353,9 +374,12 @@ nlohmann::json run_point(const ImpactSpec& s, std::uint64_t seed, std::size_t i)
     const bool inelastic = k < s.n_r();
     const double l = box_side(n, s.d, inelastic ? s.rho : s.elastic_densities[k - s.n_r()]);
     RngStream rng(seed, i);
-    // Smooth disks (mu = 0, beta0 = -1): Sec. 2.4 says DSMC's collision scheme "is identical
-    // to the event driven procedure" with the tangential velocity unchanged, beta0 = -1.
-    const EdConfig cfg = rough_disk_box(l, inelastic ? s.restitutions[k] : 1.0, 0.0, inelastic ? s.t_c : 0.0);
+    // Smooth disks by default (mu = 0, beta0 = -1): Sec. 2.4 says DSMC's collision scheme "is
+    // identical to the event driven procedure" with the tangential velocity unchanged, beta0 = -1.
+    // mu, beta0 make the cooling runs rough (Eqs. 4-6); equilibrate() runs smooth and elastic, so
+    // the disks start without spin.
+    EdConfig cfg = rough_disk_box(l, inelastic ? s.restitutions[k] : 1.0, 0.0, inelastic ? s.t_c : 0.0);
+    if (inelastic) { cfg.law.mu = s.mu; cfg.law.beta0 = s.beta0; }
     const std::vector<double> rad(n, 0.5 * s.d), mass(n, s.m);
     EdEngine e(cfg, staggered_lattice(n, l, s.d), maxwellian_velocities(mass, s.vbar, rng), rad, mass);
     // Sec. 3: "first allowed to evolve with r = 1 for about 10 collisions per particle"; the
@@ -669,6 +693,29 @@ void fig5_eddies(Result& res, const ImpactSpec& s, const std::vector<PointResult
         res.scalar("eddy_core_pressure_ratio_seeds_" + lb, static_cast<double>(ratios.size()), "1", "seeds entering that median");
         res.scalar("eddy_core_pressure_ratio_median_all_" + lb, median(all), "1",
                    "the same ratio for every seed's strongest co-rotating pair, significant or not, median over seeds");
+        // Sec. 3.2's stress statements (Fig. 5 bottom): anisotropy outside the eddy cores over inside,
+        // and whether the cells' principal axes look random (Rayleigh test at the 1 % level:
+        // P(S > s) = exp(-n s^2) for n random axes, so s_1% = sqrt(ln(100) / n)).
+        std::vector<double> aniso_ratio;
+        double aniso = 0, order = 0, random_axes = 0, flow_thermal = 0;
+        const double s_1pc = random_axes_level(static_cast<std::size_t>(s.stress_cells * s.stress_cells), 0.01);
+        for (std::size_t seed = 0; seed < s.n_seeds(); ++seed) {
+            const PointResult& pr = at(s, pts, seed, k);
+            if (std::isfinite(pr.eddy_outside_anisotropy_ratio)) aniso_ratio.push_back(pr.eddy_outside_anisotropy_ratio);
+            aniso += pr.stress_anisotropy / ns;
+            order += pr.stress_axes_order / ns;
+            random_axes += (pr.stress_axes_order < s_1pc) / ns;
+            flow_thermal += pr.flow_fraction / (1.0 - pr.flow_fraction) / ns;
+        }
+        res.scalar("eddy_outside_anisotropy_ratio_median_all_" + lb, median(aniso_ratio), "1",
+                   "stress anisotropy (|s1| - |s2|)/(|s1| + |s2|) of the cells outside the strongest co-rotating pair's cores over that inside, median over seeds");
+        res.scalar("stress_anisotropy_mean_" + lb, aniso, "1", "stress anisotropy (|s1| - |s2|)/(|s1| + |s2|) averaged over cells and seeds");
+        res.scalar("stress_axes_order_mean_" + lb, order, "1",
+                   "alignment |<exp(2 i theta)>| of the cells' major compressive axes, mean over seeds (random axes: sqrt(pi/(4 n_cells)))");
+        res.scalar("stress_axes_random_fraction_" + lb, random_axes, "1",
+                   "fraction of seeds whose principal axes pass as random (alignment below the Rayleigh 1 % level sqrt(ln 100 / n_cells))");
+        res.scalar("flow_to_thermal_mean_" + lb, flow_thermal, "1",
+                   "K of the cell-averaged flow over the rest of K (flow_fraction / (1 - flow_fraction)) at t_end, mean over seeds");
         if (cnt >= 2) {
             mean /= cnt;
             res.scalar("eddy_core_pressure_ratio_mean_all_" + lb, mean, "1", "its mean over seeds");

@@ -26,13 +26,18 @@ do for [fmt in "png pdf"] {
   set title "(a) ρ = 0.7495, N = 240: symbols 0–1 s, lines 0.5–1 s"
   set yrange [0.5:2.2]
   set key top left box opaque
-  plot fi using ($1-0.006):"P_r0.80":"err_r0.80" with yerrorbars pt 7 ps 0.7 lc rgb "#D55E00" title "r = 0.80", \
+  # Error bars without a key entry, then the symbols with one, so that each key glyph is the
+  # symbol drawn in the panel (a yerrorbars key entry draws a horizontal bar the data never show).
+  plot fi using ($1-0.006):"P_r0.80":"err_r0.80" with yerrorbars pt -1 lc rgb "#D55E00" notitle, \
+       fi using ($1-0.006):"P_r0.80" with points pt 7 ps 0.7 lc rgb "#D55E00" title "r = 0.80", \
        fi using 1:"P_late_r0.80" with lines lw 1.5 dt 2 lc rgb "#D55E00" notitle, \
-       fi using 1:"P_r0.90":"err_r0.90" with yerrorbars pt 5 ps 0.6 lc rgb "#0072B2" title "r = 0.90", \
+       fi using 1:"P_r0.90":"err_r0.90" with yerrorbars pt -1 lc rgb "#0072B2" notitle, \
+       fi using 1:"P_r0.90" with points pt 5 ps 0.6 lc rgb "#0072B2" title "r = 0.90", \
        fi using 1:"P_late_r0.90" with lines lw 1.5 dt 2 lc rgb "#0072B2" notitle, \
-       fi using ($1+0.006):"P_r0.95":"err_r0.95" with yerrorbars pt 9 ps 0.7 lc rgb "#009E73" title "r = 0.95", \
+       fi using ($1+0.006):"P_r0.95":"err_r0.95" with yerrorbars pt -1 lc rgb "#009E73" notitle, \
+       fi using ($1+0.006):"P_r0.95" with points pt 9 ps 0.7 lc rgb "#009E73" title "r = 0.95", \
        fi using 1:"P_late_r0.95" with lines lw 1.5 dt 2 lc rgb "#009E73" notitle, \
-       keyentry with points pt 6 ps 0.7 lc rgb "black" title "symbols: 0–1 s", \
+       keyentry with points pt 7 ps 0.7 lc rgb "black" title "symbols: 0–1 s", \
        keyentry with lines lw 1.5 dt 2 lc rgb "black" title "dashed: 0.5–1 s"
 
   set title "(b) elastic, r = 1, N = 240: P(b/d) = 1 at every density"

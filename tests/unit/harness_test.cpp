@@ -397,7 +397,8 @@ TEST(Claims, EveryCommittedClaimNamesItsKinds) {
     }
     EXPECT_EQ(files, 8);
     EXPECT_GE(claims, 173);
-    EXPECT_GE(deviations, 37);
+    // 36 since issue 27 §1/§4 turned flat_r0.90, flat_r0.95 and sigma_max_090_smallest into passes.
+    EXPECT_GE(deviations, 36);
 }
 
 // A missing or unknown kind is refused with the file, the claim and the allowed values.
