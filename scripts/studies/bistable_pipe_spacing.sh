@@ -13,10 +13,13 @@
 #   BUDGET    budget_tcol              [1e5: 7.1 s at e_N = 0.7, 9.7 s at 0.9]
 #   OUT       results                  [out-studies/bistable-pipe-spacing-<scale>]
 #   GRANREPRO binary                   [./build/granrepro]; THREADS [2]; MORE: extra granrepro flags
+#   TABLE_ONLY  set: run nothing, tabulate the finished runs only
 # Prints, per spacing and e_N, every seed's outcome of each start: the steady speed in m/s
 # (below v_crit = 4 m/s: slow branch; above: fast branch), "ff N" free fall (last speed N m/s),
-# "un N" unsettled at the end of the budget; then each spacing's slow-branch edge: the lowest
-# grid e_N from which upward a majority of the slow starts settle on the slow branch.
+# "un N" unsettled at the end of the budget or stopped at v_abort; a fast start "stays fast" when it
+# settles above v_crit or is above it when stopped. Then each spacing's slow-branch edge (the lowest
+# grid e_N from which upward a majority of the slow starts settle on the slow branch) and the e_N
+# where a majority of both starts keep their branch (bistable).
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 scale=${1:-quick}
@@ -32,8 +35,9 @@ dirs=()
 for sp in "${spacings[@]}"; do
   for seed in "${seeds[@]}"; do
     dir="$out/sp$sp-seed$seed"
+    if [ -f "$dir/bistable-pipe/tables/steady_k2000.tsv" ]; then dirs+=("$dir"); continue; fi
+    [ -n "${TABLE_ONLY:-}" ] && continue
     dirs+=("$dir")
-    [ -f "$dir/bistable-pipe/tables/steady_k2000.tsv" ] && continue
     rc=0
     "$bin" bistable-pipe --scale "$scale" --seed "$seed" --threads "${THREADS:-2}" --quiet \
       --set kN_list=2000 --set eN_list="$en" --set budget_tcol="$budget" --set wall_spacing="$sp" \
@@ -66,27 +70,31 @@ for d in sys.argv[1:]:
             else:
                 cells[(sp, e)][s].append((seed, "%s %.0f" % ("ff" if o == 1 else "un", float(r["v_last_" + s])), o == 1 and "ff" or "un"))
 ens.sort(); spacings.sort()
-print("| spacing [mm] | e_N | slow starts (per seed) | fast starts (per seed) | slow branch | fast branch |")
-print("|---:|---:|---|---|---:|---:|")
-edges = {}
+print("| spacing [mm] | e_N | slow starts (per seed) | fast starts (per seed) | slow branch holds | fast start stays fast | bistable |")
+print("|---:|---:|---|---|---:|---:|---|")
+edges, bistable = {}, {}
 for sp in spacings:
     held = []
     for e in ens:
         c = cells[(sp, e)]
         slow_ok = sum(b == "slow" for _, _, b in c["slow"])
-        fast_ok = sum(b == "fast" for _, _, b in c["fast"])
+        # a fast start stays fast when it settles above v_crit or is still above it when stopped (v_abort)
+        fast_ok = sum(b == "fast" or (b != "slow" and float(t.split()[-1]) > V_CRIT) for _, t, b in c["fast"])
         n = len(c["slow"])
         held.append(2 * slow_ok > n)
-        print("| %.2f | %.3f | %s | %s | %d/%d | %d/%d |" % (sp * 1e3, e, ", ".join(t for _, t, _ in c["slow"]),
-              ", ".join(t for _, t, _ in c["fast"]), slow_ok, n, fast_ok, len(c["fast"])))
+        bist = 2 * slow_ok > n and 2 * fast_ok > len(c["fast"])
+        print("| %.2f | %.3f | %s | %s | %d/%d | %d/%d | %s |" % (sp * 1e3, e, ", ".join(t for _, t, _ in c["slow"]),
+              ", ".join(t for _, t, _ in c["fast"]), slow_ok, n, fast_ok, len(c["fast"]), "yes" if bist else ""))
+        bistable.setdefault(sp, []).append(e) if bist else None
     edge = None
     for i in range(len(ens) - 1, -1, -1):
         if not held[i]: break
         edge = ens[i]
     edges[sp] = edge
 print()
-print("| spacing [mm] | slow-branch edge (lowest e_N from which a majority of slow starts stay slow) |")
-print("|---:|---|")
+print("| spacing [mm] | slow-branch edge (lowest e_N from which a majority of slow starts stay slow) | bistable e_N (majority of both) |")
+print("|---:|---|---|")
 for sp in spacings:
-    print("| %.2f | %s |" % (sp * 1e3, "none on the grid" if edges[sp] is None else "%.3f" % edges[sp]))
+    print("| %.2f | %s | %s |" % (sp * 1e3, "none on the grid" if edges[sp] is None else "%.3f" % edges[sp],
+          ", ".join("%.3f" % e for e in bistable.get(sp, [])) or "none"))
 PY
