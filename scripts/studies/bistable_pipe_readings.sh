@@ -45,6 +45,7 @@ import csv, json, math, os, sys
 out, pipe_magnitude, readings = sys.argv[1], sys.argv[2], sys.argv[3:]
 V_CRIT = 4.0          # m/s, experiments/bistable-pipe.toml v_crit_2000: above it a state is on the fast branch
 GRID = (0.7, 0.85, 0.9, 0.95)
+PAPER_EN = (0.5, 0.6, 0.7, 0.8, 0.85, 0.9, 0.95, 0.99)  # experiments/bistable-pipe.toml eN_list, paper
 
 def scalars(exp, r):
     p = os.path.join(out, "%s-%s" % (exp, r), exp, "summary.json")
@@ -58,25 +59,27 @@ def steady(r):
     d = pipe_magnitude if (r == "magnitude" and pipe_magnitude) else os.path.join(out, "bistable-pipe-" + r)
     p = os.path.join(d, "bistable-pipe", "tables", "steady_k2000.tsv")
     if not os.path.exists(p):
-        # a checkpoint's point numbers are this study's grid only, not the full sweep's
-        return None if (r == "magnitude" and pipe_magnitude) else checkpoint(d)
+        if r == "magnitude" and pipe_magnitude:  # the full paper sweep: k_N 200, 2000, 200000 x PAPER_EN
+            return checkpoint(d, PAPER_EN, 1)
+        return checkpoint(d, GRID, 0)
     rows = list(csv.DictReader((l for l in open(p) if not l.startswith("#")), delimiter="\t"))[1:]  # row 1: units
     by_e = {round(float(x["e_N"]), 6): x for x in rows}
     return {e: by_e[e] for e in GRID if e in by_e} if all(e in by_e for e in GRID) else None
 
-def checkpoint(d):
-    """A pipe run still under way: its finished points from the sweep checkpoint (point i is
-    e_N = GRID[i // 2], i % 2 = 0 slow start, 1 fast start; outcome 0 steady, 1 free fall, 2
-    unsettled; speeds negative downwards). Points not finished are missing."""
+def checkpoint(d, en, k_index):
+    """A pipe run still under way: its finished points from the sweep checkpoint. Point i of a
+    sweep over kN_list x en is k_N number i // (2 len(en)), e_N = en[i // 2 % len(en)], i % 2 = 0
+    slow start, 1 fast start (experiments/bistable_pipe.cpp, tasks); outcome 0 steady, 1 free fall,
+    2 unsettled; speeds negative downwards. Points not finished are missing."""
     import glob
     rows = {e: {} for e in GRID}
     for f in glob.glob(os.path.join(d, ".bistable-pipe.checkpoint", "*", "*.json")):
         i = int(os.path.basename(f)[:-5])
-        if i >= 2 * len(GRID):
+        if i // (2 * len(en)) != k_index or round(en[i // 2 % len(en)], 6) not in rows:
             continue
         v = json.load(open(f))["value"]
         side = ("slow", "fast")[i % 2]
-        rows[GRID[i // 2]].update({"outcome_" + side: v["outcome"], "v_" + side: -v["v_mean"],
+        rows[round(en[i // 2 % len(en)], 6)].update({"outcome_" + side: v["outcome"], "v_" + side: -v["v_mean"],
                                    "v_last_" + side: -v["v_final"], "sigma_vx_" + side: v["sigma_vx"]})
     if not any(rows.values()):
         return None
@@ -214,13 +217,19 @@ for name, why, f in statements:
             agree[r] += bool(ok)
     if "report" in name:
         oks = {}
-        print("| %s | %s | %s |" % (name, why, " | ".join(cells)))
+    print("| %s | %s | %s |" % (name, why, " | ".join(cells)))
     verdicts.append(oks)
 # Readings are compared on the statements judged for every one of them (a run still under way
 # leaves some undecided); the per-reading count over all it was judged on is shown beside.
 common = [v for v in verdicts if v and all(v.get(r) is not None for r in readings)]
 print("| **agreed, of the %d statements judged for every reading** | | " % len(common) +
       " | ".join("**%d**" % sum(bool(v[r]) for v in common) for r in readings) + " |")
+# The same over the readings whose pipe has been run (clipped breaks Eq. (4) and has no pipe run).
+piped = [r for r in readings if any(v.get(r) is not None for v in verdicts[-4:])]
+if piped and len(piped) < len(readings):
+    common_p = [v for v in verdicts if v and all(v.get(r) is not None for r in piped)]
+    print("| **agreed, of the %d statements judged for each of %s** | | " % (len(common_p), ", ".join(piped)) +
+          " | ".join("**%d**" % sum(bool(v[r]) for v in common_p) if r in piped else "" for r in readings) + " |")
 print("| agreed, of the statements judged for this reading | | " +
       " | ".join("%d of %d" % (agree[r], judged[r]) for r in readings) + " |")
 print()
