@@ -62,7 +62,7 @@ def steady(r):
         if r == "magnitude" and pipe_magnitude:  # the full paper sweep: k_N 200, 2000, 200000 x PAPER_EN
             return checkpoint(d, PAPER_EN, 1)
         return checkpoint(d, GRID, 0)
-    rows = list(csv.DictReader((l for l in open(p) if not l.startswith("#")), delimiter="\t"))[1:]  # row 1: units
+    rows = list(csv.DictReader((l for l in open(p) if not l.startswith("#")), delimiter="\t"))  # units: a "#" line
     by_e = {round(float(x["e_N"]), 6): x for x in rows}
     return {e: by_e[e] for e in GRID if e in by_e} if all(e in by_e for e in GRID) else None
 
