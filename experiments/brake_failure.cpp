@@ -188,6 +188,17 @@ void add_curve(Table& t, const Curve& c, const std::string& suffix, bool shear =
     if (shear) t.add("dvy_shear" + suffix, "m/s").values = c.dvy_shear;
 }
 
+// y at x0 by linear interpolation in log x on an increasing grid x (end values outside it).
+double log_interpolate(const std::vector<double>& x, const std::vector<double>& y, double x0) {
+    if (x0 <= x.front()) return y.front();
+    for (std::size_t i = 1; i < x.size(); ++i)
+        if (x0 <= x[i]) {
+            const double u = std::log(x0 / x[i - 1]) / std::log(x[i] / x[i - 1]);
+            return y[i - 1] + u * (y[i] - y[i - 1]);
+        }
+    return y.back();
+}
+
 // Exponent a of y ∝ x^a over the last decade of the grid x.
 double tail_exponent(const std::vector<double>& x, const std::vector<double>& y) {
     return fit_power_law(x, y, x.back() / 10, x.back()).exponent;
@@ -315,6 +326,13 @@ void report_readings(Result& r, const Sweep& w, const std::vector<Curve>& curves
         r.scalar(eq2 + "_far_exponent_dvx", tail_exponent(w.vy_ext, e.dvx), "1", "exponent of Δv_x over [vy_max, 10 vy_max]" + at);
         r.scalar(eq2 + "_far_dvy_over_plateau", e.dvy.back() / plateau, "1",
                  "Δv_y at 10 vy_max over the magnitude reading's straight-path limit" + at);
+        // Fig. 3's shape over the range it shows (one decade past the maximum): a 1/v fall from
+        // the maximum (text after Eq. 7) leaves about a tenth of it at 10 v_crit; a floor leaves more.
+        const Peak ps = first_maximum(w.vy, f.dvy_shear);
+        r.scalar(eq2 + "_dvy_10vcrit_over_max", log_interpolate(w.vy_ext, e.dvy, 10 * pr.x) / pr.y, "1",
+                 "Δv_y at 10 v_crit over its maximum (1/v from the maximum: 0.1)" + at);
+        r.scalar(eq2 + "_dvy_shear_10vcrit_over_max", log_interpolate(w.vy_ext, e.dvy_shear, 10 * ps.x) / ps.y, "1",
+                 "shear part of Δv_y (Eq. 6) at 10 times its own maximum's v_y^i over that maximum" + at);
     }
     r.scalar("eq2_steepest_tail_exponent_dvy", steepest, "1",
              "the steepest Δv_y tail over the figure's last decade among the readings of Eq. (2)");

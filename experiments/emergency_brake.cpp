@@ -171,6 +171,12 @@ void report_series(Result& r, const std::vector<double>& vy, const Series& se, c
     if (se.scan) return;
     r.scalar("v_min_" + tag, vy[imin], "m/s", "v_y^i where Δv_y is smallest after the first maximum (rise begins)");
     r.scalar("rise_ratio_" + tag, dvy.back() / dvy[imin], "1", "Δv_y at vy_max over its minimum after the peak");
+    // The paper says only that Δv_y "must ultimately increase again" (text before Fig. 4), so a
+    // rise is judged against the sampling error of the 10-position mean at both ends: each point's
+    // standard error over the start positions, independent between the two v_y^i.
+    const auto sem = column(&Point::dvy_sem);
+    r.scalar("rise_z_" + tag, (dvy.back() - dvy[imin]) / std::hypot(sem.back(), sem[imin]), "1",
+             "rise of Δv_y from its minimum after the peak to vy_max in units of its standard error");
     // Fig. 5 plots the mean number of contacts; the multiple-contact regime starts where it reaches 2.
     const double onset = first_upward_crossing(vy, cont, 2.0);
     r.scalar("v_multi_onset_" + tag, onset, "m/s", "v_y^i at which the mean number of wall grains touched reaches 2");

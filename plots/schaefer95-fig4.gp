@@ -1,6 +1,6 @@
 # Schäfer & Wolf (1995) Fig. 4: mean Δv_y against v_y^i for impacts on a row of wall grains,
 # v_x^i = 0.1 (solid), 0.3 (dashed), 0.5 m/s (dot-dashed), as in the paper, on touching wall grains
-# (thick lines). Thin lines: the same on the bistable pipe's wall (grains 1 mm apart), whose curves
+# (thick lines). Thin lines: the same on the bistable pipe's wall (grains pipe_wall_spacing apart, 1.3 mm), whose curves
 # Fig. 6's construction uses. Error bars (standard error over the 10 start positions) are drawn at
 # every 8th point so that the line styles stay visible. Variables set by granrepro: datadir, outbase.
 # Parameters set by granrepro: vx_list, wall_spacing, pipe_wall_spacing
