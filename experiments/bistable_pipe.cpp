@@ -87,7 +87,7 @@ void validate(const ParameterSet& p) {
         for (double e : b.eN_list) {
             longest_budget = std::max(longest_budget, time_budget(b, k, e));
             if (time_budget(b, k, e) < b.window + b.t_average)
-                p.reject(std::vector<std::string>{"budget_tcol", "m_mean", "kN_list", "eN_list", "window", "t_average"},
+                p.reject(std::vector<std::string>{"budget_tcol", "budget_min", "m_mean", "kN_list", "eN_list", "window", "t_average"},
                          "the budget of k_N = " + number_text(k) + " N/m, e_N = " + number_text(e) +
                                             " is shorter than window + t_average: no steady state could be detected");
         }
@@ -108,7 +108,7 @@ void validate(const ParameterSet& p) {
         for (double e : b.eN_list) {
             // build_pipe's step: the stiffest (lightest free-free) pair, Eq. (5).
             const double dt = pipe_law(k, e, s.m_mean).collision_time(0.5 * m_min) / s.steps_per_contact;
-            p.limit_work({"budget_tcol", "steps_per_contact", "kN_list", "eN_list", "phi", "width", "length", "d_mean"},
+            p.limit_work({"budget_tcol", "budget_min", "steps_per_contact", "kN_list", "eN_list", "phi", "width", "length", "d_mean"},
                          double(n) * time_budget(b, k, e) / dt, kMaxGrainSteps, "grain-steps in one run");
             // One sample per step at most: sample_dt = 1e-300 overflowed window/sample_dt and
             // crashed the drift fit.
@@ -470,7 +470,8 @@ void report_states_k(Result& r, const std::vector<double>& es, const std::string
     int fast_steady = 0;
     for (std::size_t ei = 0; ei < es.size(); ++ei) {
         if (slow[kV][ei] < v_crit) e_lowest_slow = std::isnan(e_lowest_slow) ? es[ei] : std::min(e_lowest_slow, es[ei]);
-        fast_steady += fast[kOutcome][ei] == double(kSteady);
+        // A fast start that falls back to the slow branch is not a state of the fast branch.
+        fast_steady += fast[kOutcome][ei] == double(kSteady) && fast[kV][ei] >= v_crit;
     }
     r.scalar("impact_link_top_" + kt, c.link_top, "1",
              "slow start at the largest e_N: Δv_y of the wall's impact curve at the measured mean impact velocities "
@@ -478,7 +479,7 @@ void report_states_k(Result& r, const std::vector<double>& es, const std::string
     r.scalar("slow_branch_lowest_eN_" + kt, e_lowest_slow, "1",
              "smallest e_N whose slow start reached a steady state in the normal regime (below v_crit)");
     r.scalar("fast_branch_fraction_" + kt, double(fast_steady) / double(es.size()), "1",
-             "fraction of e_N values whose fast start reached a steady state");
+             "fraction of e_N values whose fast start reached a steady state above v_crit (the fast branch)");
     r.scalar("v_slow_top_" + kt, slow[kV].back(), "m/s", "steady speed of the slow start at the largest e_N");
     r.scalar("v_fast_top_" + kt, fast[kV].back(), "m/s", "steady speed of the fast start at the largest e_N");
     // Bistability: at the e_N > 0.85 of the grid, the slow start reaches a steady state in the
@@ -557,11 +558,12 @@ void report_vcrit_crossings_k(Result& r, const std::string& kt, std::vector<RunR
     int crossed = 0, ended_fast = 0;
     for (std::size_t j = 0; j < count; ++j) {
         const RunResult& rr = runs[long(j)];
-        if (rr.v.empty() || -*std::min_element(rr.v.begin(), rr.v.end()) <= v_crit) continue;
+        // "Becomes faster": starts below v_crit (a fast start begins above it and may only fall back).
+        if (rr.v.empty() || -rr.v.front() > v_crit || -*std::min_element(rr.v.begin(), rr.v.end()) <= v_crit) continue;
         ++crossed;
         ended_fast += (rr.outcome == kSteady ? -rr.v_mean : -rr.v_final) > v_crit;
     }
-    r.scalar("vcrit_crossings_" + kt, crossed, "1", "runs whose mean speed exceeded v_crit at some sample");
+    r.scalar("vcrit_crossings_" + kt, crossed, "1", "runs that started below v_crit and whose mean speed exceeded it at some sample");
     r.scalar("vcrit_crossings_end_fast_" + kt, crossed ? double(ended_fast) / crossed : NAN, "1",
              "fraction of those runs that ended above v_crit (fast steady state, or faster than v_crit at the end)");
 }
@@ -601,7 +603,7 @@ void report_fig6(Result& r, const BistablePipeSpec& b, const PipeSpec& base, con
     report_near_wall_phi(r, results);
     r.scalar("steady_runs", tot.steady, "1", "runs that reached a steady state");
     // Softer grains brake earlier: the k_N = 200 fast branch against the k_N = 2000 one at the same
-    // e_N (geometric mean of the speed ratio over the e_N where both fast starts settled).
+    // e_N (geometric mean of the speed ratio over the e_N where both fast starts settled above v_crit).
     const auto k_lo = std::find(ks.begin(), ks.end(), 200.0), k_mid = std::find(ks.begin(), ks.end(), 2000.0);
     if (k_lo != ks.end() && k_mid != ks.end()) {
         const std::size_t lo_i = std::size_t(k_lo - ks.begin()), mid_i = std::size_t(k_mid - ks.begin());
@@ -610,12 +612,15 @@ void report_fig6(Result& r, const BistablePipeSpec& b, const PipeSpec& base, con
         for (std::size_t ei = 0; ei < es.size(); ++ei) {
             const RunResult& lo = results[(lo_i * es.size() + ei) * 2 + 1];
             const RunResult& mid = results[(mid_i * es.size() + ei) * 2 + 1];
-            if (lo.outcome != kSteady || mid.outcome != kSteady) continue;
+            // Fast-branch states only: a fast start that fell back to the slow branch is not one.
+            if (lo.outcome != kSteady || mid.outcome != kSteady || -lo.v_mean < v_crit(b, 200.0) ||
+                -mid.v_mean < v_crit(b, 2000.0))
+                continue;
             lr += std::log(lo.v_mean / mid.v_mean);
             ++nr;
         }
         r.scalar("fast_branch_k200_over_k2000", nr ? std::exp(lr / nr) : NAN, "1",
-                 "geometric mean of v_fast(k_N = 200) / v_fast(k_N = 2000) over the e_N where both settled");
+                 "geometric mean of v_fast(k_N = 200) / v_fast(k_N = 2000) over the e_N where both settled on the fast branch");
     }
     r.scalar("eq9_worst_deviation", tot.steady ? tot.worst_balance : NAN, "1", "largest |ṅ Δv_y / g - 1| over steady runs (Eq. 9)");
     r.scalar("impact_slope_min", std::isfinite(tot.min_slope) ? tot.min_slope : NAN, "s",
