@@ -65,9 +65,8 @@ rows_size=(
   "L=20.2,N=3124|n_particles=3124"
 )
 
-# First numeric value of a scalar in summary.json (scalars come before units there).
-get() { awk -v k="\"$1\":" '$1 == k { v = $2; sub(/,$/, "", v); print v; exit }' "$2"; }
-fmt() { awk -v v="$1" -v f="$2" 'BEGIN { if (v == "" || v == "null") print "-"; else printf f, v }'; }
+# get SCALAR SUMMARY, fmt VALUE FORMAT
+source "$(dirname "$0")/summary_fields.sh"
 
 cols=(row wall_share wall_peak plug_wall brake_m/s open_below_d gap_after_d gap_any_d crack_frac arch_frac
       t_arch_s A_1/s A_sem B_1/s B_sem B/A B/A_sem B_t0.055 B_t0.065 arch_left_4ms react_lag_s above+below wall_slow_z s/seed)

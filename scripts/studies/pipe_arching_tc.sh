@@ -45,9 +45,8 @@ rows=(
   "t_c=3e-4,drop|$SEEDS|t_c=3e-4 tc_friction=drop"
 )
 
-# First numeric value of a scalar in summary.json (scalars come before units there).
-get() { awk -v k="\"$1\":" '$1 == k { v = $2; sub(/,$/, "", v); print v; exit }' "$2"; }
-fmt() { awk -v v="$1" -v f="$2" 'BEGIN { if (v == "" || v == "null") print "-"; else printf f, v }'; }
+# get SCALAR SUMMARY, fmt VALUE FORMAT
+source "$(dirname "$0")/summary_fields.sh"
 
 cols=(row seeds vbar_t0 gap_all_q25 gap_all_med gap_all_q75 gap_all_max gap_after_q25 gap_after_med gap_after_q75
       gap_after_max crack_frac crack_by_0.060 arch_left_4ms open_below arch_frac t_arch_q25 t_arch_med t_arch_q75
