@@ -8,6 +8,8 @@
 #include <numeric>
 #include <string>
 
+#include <Eigen/Dense>
+
 #include "analysis/curve_analysis.hpp"
 #include "scenarios/impact_shot.hpp"
 #include "harness/experiment.hpp"
@@ -241,9 +243,35 @@ Peak report_fig3(Result& r, const Sweep& w, const std::vector<Curve>& curves) {
     return pk;
 }
 
-// The 1/v argument of Eqs. (6)-(8) and why the damped law departs from it at high v_y. Returns
-// the straight-path limit of Δv_y [m/s].
-double report_high_velocity(Result& r, const BrakeFailureSpec& s, const Sweep& w, const std::vector<Curve>& curves) {
+// The straight-path limit of Δv_y [m/s] under the reading r of Eq. (2) (derivation below).
+double straight_path_limit(const BrakeFailureSpec& s, const LinearSpringDashpot& law, FrictionNormal r) {
+    const double reach = s.reach(), h = s.offset, yc = s.half_chord();
+    if (r == FrictionNormal::Clipped) return NAN;
+    const double f = r == FrictionNormal::Magnitude ? 1.0 : 0.0;
+    return law.gamma_N * (f * s.mu * h * std::log(reach * reach / (h * h)) + 2 * (yc - h * std::atan(yc / h)));
+}
+
+// P of the least-squares fit y = P + A/x + B/x^2 over the last decade of x [units of y]: the
+// expansion of Δv_y in 1/v_y^i beyond the maximum (the shear part's 1/v, Eqs. 6-8, and the path's
+// deflection at second order).
+double fit_limit_one_over_v(const std::vector<double>& x, const std::vector<double>& y) {
+    std::vector<std::size_t> rows;
+    for (std::size_t i = 0; i < x.size(); ++i)
+        if (x[i] >= x.back() / 10) rows.push_back(i);
+    if (rows.size() < 4) return NAN;
+    Eigen::MatrixXd a(rows.size(), 3);
+    Eigen::VectorXd b(rows.size());
+    for (std::size_t k = 0; k < rows.size(); ++k) {
+        const double u = 1 / x[rows[k]];
+        a.row(Eigen::Index(k)) << 1.0, u, u * u;
+        b(Eigen::Index(k)) = y[rows[k]];
+    }
+    return a.colPivHouseholderQr().solve(b)(0);
+}
+
+// The 1/v argument of Eqs. (6)-(8) and why the damped law departs from it at high v_y.
+
+void report_high_velocity(Result& r, const BrakeFailureSpec& s, const Sweep& w, const std::vector<Curve>& curves) {
     const Curve &elastic = curves[kElasticExt], &paper = curves[kPaperExt];
     Table& t = r.table("high_velocity", "Δv_y up to 10 vy_max: elastic limit (gamma_N = 0) and paper parameters");
     t.add("vy_i", "m/s").values = w.vy_ext;
@@ -257,14 +285,20 @@ double report_high_velocity(Result& r, const BrakeFailureSpec& s, const Sweep& w
     // gamma_N m dxi/dt does not vanish with the contact time. Along the path x = h, with
     // R = (d_free + d_wall)/2 and half-chord y_c = sqrt(R^2 - h^2), the friction of Eq. (2) and
     // the normal force's y-component give (integrating over y instead of t)
-    //     Δv_y -> gamma_N [ mu h ln(R^2/h^2) + 2 (y_c - h atan(y_c/h)) ],
-    // a constant (0.120 m/s at the Fig. 3 parameters) instead of zero.
-    const double reach = s.reach(), h = s.offset, yc = s.half_chord();
-    const double plateau =
-        w.law.gamma_N * (s.mu * h * std::log(reach * reach / (h * h)) + 2 * (yc - h * std::atan(yc / h)));
-    r.scalar("dvy_plateau_theory", plateau, "m/s", "high-v_y limit of Δv_y under Eqs. (1)-(2) (straight path)");
+    //     Δv_y -> gamma_N [ f mu h ln(R^2/h^2) + 2 (y_c - h atan(y_c/h)) ],
+    // a constant instead of zero. f is the share of the dashpot's friction impulse the reading of
+    // Eq. (2) keeps: 1 for |F_N| (both halves of the contact), 0 for k_N xi and for signed F_N
+    // (there the two halves cancel). The remaining terms fall
+    // like 1/v_y^i, so the limit is read off a fit Δv_y = P + A/v + B/v^2 over the extended
+    // grid's last decade. Clipped also clips the normal force itself, so its normal part differs
+    // and has no limit here.
+    const double plateau = straight_path_limit(s, w.law, s.friction_normal);
+    const double limit = fit_limit_one_over_v(w.vy_ext, paper.dvy);
+    r.scalar("dvy_plateau_theory", plateau, "m/s",
+             "high-v_y limit of Δv_y under Eqs. (1)-(2) (straight path), reading " + std::string(to_string(s.friction_normal)));
+    r.scalar("dvy_limit_fit", limit, "m/s", "P of a fit Δv_y = P + A/v + B/v^2 over [vy_max, 10 vy_max]");
+    r.scalar("dvy_limit_over_plateau", limit / plateau, "1", "that fitted limit over the straight-path limit");
     r.scalar("dvy_far_over_plateau", paper.dvy.back() / plateau, "1", "Δv_y at 10 vy_max over that limit");
-    return plateau;
 }
 
 // The √β collapse of k' = beta k_N onto Fig. 3 (text below Fig. 3); pk is Fig. 3's maximum.
@@ -295,8 +329,9 @@ void report_collapse(Result& r, const BrakeFailureSpec& s, const Sweep& w, const
 
 // Panels (b), (c): the readings of Eq. (2) side by side: the figure's tail, its maximum, how far
 // Δv_y has come back towards the abscissa at vy_max, and the asymptotic exponents beyond the
-// figure. plateau is the magnitude reading's straight-path limit [m/s].
-void report_readings(Result& r, const Sweep& w, const std::vector<Curve>& curves, double plateau) {
+// figure.
+void report_readings(Result& r, const BrakeFailureSpec& s, const Sweep& w, const std::vector<Curve>& curves) {
+    const double plateau = straight_path_limit(s, w.law, FrictionNormal::Magnitude);
     // Reading k: curve 2k on the figure's grid, 2k + 1 on the extended grid.
     const Curve* c = &curves[kFirstReading];
     for (std::size_t ext : {0, 1}) { // one table at a time: r.table() may move the tables made before
@@ -326,6 +361,10 @@ void report_readings(Result& r, const Sweep& w, const std::vector<Curve>& curves
         r.scalar(eq2 + "_far_exponent_dvx", tail_exponent(w.vy_ext, e.dvx), "1", "exponent of Δv_x over [vy_max, 10 vy_max]" + at);
         r.scalar(eq2 + "_far_dvy_over_plateau", e.dvy.back() / plateau, "1",
                  "Δv_y at 10 vy_max over the magnitude reading's straight-path limit" + at);
+        const double own = straight_path_limit(s, w.law, kFrictionNormals[k]);
+        r.scalar(eq2 + "_plateau_theory", own, "m/s", "straight-path limit of Δv_y" + at);
+        r.scalar(eq2 + "_limit_over_plateau", fit_limit_one_over_v(w.vy_ext, e.dvy) / own, "1",
+                 "P of a fit Δv_y = P + A/v + B/v^2 over [vy_max, 10 vy_max] over the straight-path limit" + at);
         // Fig. 3's shape over the range it shows (one decade past the maximum): a 1/v fall from
         // the maximum (text after Eq. 7) leaves about a tenth of it at 10 v_crit; a floor leaves more.
         const Peak ps = first_maximum(w.vy, f.dvy_shear);
@@ -351,10 +390,10 @@ Result run(const RunContext& ctx) {
         for (int ok : c.complete) incomplete += !ok;
     r.scalar("incomplete_impacts", incomplete, "1", "impacts that had not ended within max_steps");
     const Peak pk = report_fig3(r, w, curves);
-    const double plateau = report_high_velocity(r, s, w, curves);
+    report_high_velocity(r, s, w, curves);
     report_head_on(r, s, w);
     report_collapse(r, s, w, curves, pk);
-    report_readings(r, w, curves, plateau);
+    report_readings(r, s, w, curves);
     return r;
 }
 
