@@ -11,6 +11,7 @@ struct BenchOptions {
     long steps = 0;     // soft: time steps of one timed run (0: the target's default)
     int threads = 2;    // soft: threads of the multi-core comparison
     bool sizes = false; // soft: cost against the number of grains instead of the LAMMPS comparison
+    bool speeds = false; // soft: cost and list builds against the flow speed (1, 20, 200 m/s)
     std::string experiment = "bistable-pipe"; // sweep: a sweeping experiment
     std::string scale = "quick";              // sweep: quick or paper
     int ranks = 2;                            // sweep: MPI ranks compared with one

@@ -474,10 +474,50 @@ void sizes(const BenchOptions& opt) {
                 threads, load_before, load_average());
 }
 
+// ---- cost against the flow speed -------------------------------------------------------------
+
+// The Fig. 6 fast branch moves the grains past the fixed wall grains at 20-250 m/s, 0.02-0.2 mm
+// per step against a 0.1 mm skin (issue 26 §5). The bench pipe (1498 grains) with its slow start
+// shifted to a plug speed v downwards, timed over the steps after a short warm-up: grain-steps per
+// CPU second and list builds per 1000 steps. Builds are triggered by motion relative to the mean
+// displacement, and wall grains are found from a grain's height, so a plug should not rebuild
+// more often at 200 m/s than at 1 m/s; the contacts with the wall grains change every few steps.
+void speeds(const BenchOptions& opt) {
+    const long warm = 200, timed = opt.steps > 0 ? opt.steps : 4000;
+    const PipeSpec spec = bench_spec(0.111);
+    std::printf("bench soft --speeds: the bench pipe (width 20 mm, length 111 mm, k_N 2000 N/m, e_N 0.95), its slow "
+                "start moving down at v;\n  steps %ld-%ld, medians of %d runs, 1 thread.\n",
+                warm, warm + timed, opt.repeats);
+    const double load_before = load_average();
+    std::printf("  %8s %16s %10s %12s %14s\n", "v [m/s]", "[g-steps/cpu-s]", "ns/g-step", "builds/1000", "step / skin");
+    for (const double v : {1.0, 20.0, 200.0}) {
+        std::vector<double> rate;
+        double builds = 0, dt = 0;
+        for (int rep = 0; rep < opt.repeats; ++rep) {
+            const Engine start = build_pipe(spec);
+            Engine eng(start.normal_law(), start.shear_law(), spec.geo, start.dt(), spec.skin);
+            for (std::size_t i = 0; i < start.size(); ++i)
+                eng.add_grain(start.x()[i], start.y()[i], start.vx()[i], start.vy()[i] - v, start.radius()[i],
+                              start.mass()[i]);
+            eng.finalize();
+            eng.advance(warm);
+            const long b0 = eng.list_builds();
+            const Timing tm = time_advance(eng, timed);
+            rate.push_back(double(eng.size()) * double(timed) / tm.cpu);
+            builds = double(eng.list_builds() - b0) * 1000.0 / double(timed);
+            dt = eng.dt();
+        }
+        const double a = median(rate);
+        std::printf("  %8.0f %16.4g %10.2f %12.1f %14.2f\n", v, a, 1e9 / a, builds, v * dt / spec.skin);
+    }
+    std::printf("  Load average (1 min) %.2f before, %.2f after.\n", load_before, load_average());
+}
+
 } // namespace
 
 void bench_soft_report(const BenchOptions& opt) {
     if (opt.sizes) sizes(opt);
+    else if (opt.speeds) speeds(opt);
     else comparison(opt);
 }
 

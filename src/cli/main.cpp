@@ -376,6 +376,7 @@ static int run_main(int argc, char** argv) {
         ->capture_default_str()
         ->type_name("INT");
     bench->add_flag("--sizes", bench_opt.sizes, "soft: steps/s and memory against the number of grains");
+    bench->add_flag("--speeds", bench_opt.speeds, "soft: steps/s and list builds at plug speeds of 1, 20 and 200 m/s");
     bench->add_option("--experiment", bench_opt.experiment, "sweep: the sweeping experiment to time (default bistable-pipe)");
     bench->add_option("--scale", bench_opt.scale, "sweep: quick (default) or paper");
     std::string bench_ranks = std::to_string(bench_opt.ranks);
