@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 #include <numeric>
+#include <optional>
 #include <string>
 #include <utility>
 
@@ -15,6 +16,7 @@
 #include "harness/distributed_sweep.hpp"
 #include "io/json_fields.hpp"
 #include "data/spec.hpp"
+#include "models/hertz_kuwabara_kono.hpp"
 #include "models/linear_spring_dashpot.hpp"
 
 namespace granrepro::experiments {
@@ -30,11 +32,12 @@ struct EmergencyBrakeSpec : ImpactShotSpec {
     double vy_min = 0, vy_max = 0; // [m/s]
     int n_vy = 0;
     std::vector<double> kN_scan;   // further k_N at vx_list[0], e_N held [N/m]
+    double hkk_xi_ref = 0;         // overlap at which the HKK series matches the linear law [m]
     template <class V> void fields(V&& v) {
         ImpactShotSpec::fields(v);
         v("wall_spacing", wall_spacing); v("pipe_wall_spacing", pipe_wall_spacing); v("x_start", x_start);
         v("n_positions", n_positions); v("vx_list", vx_list); v("vy_min", vy_min); v("vy_max", vy_max);
-        v("n_vy", n_vy); v("kN_scan", kN_scan);
+        v("n_vy", n_vy); v("kN_scan", kN_scan); v("hkk_xi_ref", hkk_xi_ref);
     }
 };
 
@@ -89,7 +92,9 @@ struct SeriesPoints {
 
 // Series: one per v_x^i at the experiment's k_N (the figures), one per extra k_N at vx_list[0],
 // one per v_x^i on the pipe's wall spacing (Fig. 6's construction needs the impact curves of the
-// pipe's own wall), and one per other reading of Eq. (2) and v_x^i.
+// pipe's own wall), one per other reading of Eq. (2) and v_x^i, and one per v_x^i with the
+// Hertz-Kuwabara-Kono normal force ("we used this force to check the generality of our results
+// obtained with (1)", text after Eq. 3).
 struct Series {
     double vx;
     LinearSpringDashpot law;
@@ -97,6 +102,7 @@ struct Series {
     double spacing;
     std::string tag, what; // name suffix, table description
     bool scan = false;     // k_N scan: only its maximum is reported
+    std::optional<HertzKuwabaraKono> hkk = std::nullopt; // the normal force instead of law (law still sets dt)
 };
 
 std::vector<Series> all_series(const EmergencyBrakeSpec& s, const LinearSpringDashpot& law) {
@@ -118,6 +124,10 @@ std::vector<Series> all_series(const EmergencyBrakeSpec& s, const LinearSpringDa
                 series.push_back({vx, law, CoulombShear{shear.mu, reading}, s.wall_spacing,
                                   std::string("eq2_") + to_string(reading) + "_vx" + number_text(vx),
                                   std::string("reading ") + to_string(reading) + " of Eq. (2)" + at(vx)});
+    const auto hkk = HertzKuwabaraKono::matched_at(law.k_N, law.gamma_N, s.hkk_xi_ref);
+    for (double vx : s.vx_list)
+        series.push_back({vx, law, shear, s.wall_spacing, "hkk_vx" + number_text(vx),
+                          "Hertz-Kuwabara-Kono normal force" + at(vx), false, hkk});
     return series;
 }
 
@@ -130,7 +140,7 @@ Point mean_impact(const EmergencyBrakeSpec& s, const Series& se, double vy) {
     Point out;
     for (long k = 0; k < npos; ++k) {
         setup.y0 = setup.wall_spacing * double(k) / double(npos);
-        const ImpactOutcome o = shoot(se.law, se.shear, setup);
+        const ImpactOutcome o = se.hkk ? shoot(*se.hkk, se.shear, setup) : shoot(se.law, se.shear, setup);
         sum += o.dvy;
         sum2 += o.dvy * o.dvy;
         contacts += o.wall_grains;
