@@ -6,10 +6,18 @@
     granrepro.plot(run, "fig3")                           # matplotlib Axes, units on the axes
 
 granrepro.load and granrepro.plot need h5py and numpy (and matplotlib for plot);
-`python3 -m granrepro.report` (what `granrepro report` runs) also needs jinja2.
+`python3 -m granrepro.report` (what `granrepro report` runs) also needs jinja2. They are imported
+when first used (PEP 562), so a missing one is reported by what needs it, in one line.
 """
-from .reader import (READS_VERSIONS, SCHEMA, SCHEMA_VERSION, Quantity, Run, Table,  # noqa: F401
-                     load)
-from .plotting import plot  # noqa: F401
+_READER = ("load", "Run", "Table", "Quantity", "SCHEMA", "SCHEMA_VERSION", "READS_VERSIONS")
+__all__ = [*_READER, "plot"]
 
-__all__ = ["load", "plot", "Run", "Table", "Quantity", "SCHEMA", "SCHEMA_VERSION", "READS_VERSIONS"]
+
+def __getattr__(name):
+    if name in _READER:
+        from . import reader
+        return getattr(reader, name)
+    if name == "plot":
+        from .plotting import plot
+        return plot
+    raise AttributeError(f"module 'granrepro' has no attribute {name!r}")

@@ -416,9 +416,10 @@ def commit(staging: str, final: str, old: str) -> None:
     _fsync_dir(os.path.dirname(final))
 
 
-def check_target(results: str, final: str) -> None:
+def check_target(results: str, to: str) -> None:
     r = os.path.realpath(results)
-    f = os.path.realpath(final)
+    f = os.path.realpath(to)
+    final = to
     if f == r or r.startswith(f.rstrip("/") + "/"):
         raise BadInput(f"--to {final}: is the results folder or holds it; give a folder of its own (default: OUT/report)")
     if os.path.exists(final):
@@ -435,7 +436,7 @@ def make_report(results: str, judged: dict, to: str, warn=None) -> dict:
     if not os.path.isdir(results):
         raise BadInput(f"--results {results}: not a folder; give a results folder such as paper_figures or out")
     final = os.path.abspath(to)
-    check_target(results, final)
+    check_target(results, to)
     parent, base = os.path.dirname(final), os.path.basename(final)
     try:
         os.makedirs(parent, exist_ok=True)
