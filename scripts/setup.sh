@@ -6,7 +6,7 @@ set -euo pipefail
 packages=(build-essential cmake pkg-config ccache git
           libeigen3-dev libfftw3-dev libgsl-dev libhdf5-dev gnuplot-nox
           libcli11-dev libtoml11-dev nlohmann-json3-dev libgtest-dev libbenchmark-dev
-          python3-h5py python3-numpy python3-matplotlib python3-pytest
+          python3-h5py python3-numpy python3-matplotlib python3-pytest python3-jinja2 chromium
           libopenmpi-dev openmpi-bin)
 missing=()
 for p in "${packages[@]}"; do

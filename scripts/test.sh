@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # The test job: install dependencies, build (Release) into build-test/ with the tests, check that
-# ctest sees every kind of test, run every ctest label (unit, integration, validation, repro, sweep;
-# repro includes the re-check of the committed paper-scale results and the gnuplot-warning check of
-# every figure), then rebuild into build-asan/ with AddressSanitizer + UBSan and run the unit and
-# integration tests again (the integration tests spawn the sanitized binary).
+# ctest sees every kind of test, run every ctest label (unit, integration, validation, repro, sweep,
+# report; repro includes the re-check of the committed paper-scale results and the gnuplot-warning
+# check of every figure, report loads the HTML report in headless Chromium), then rebuild into
+# build-asan/ with AddressSanitizer + UBSan and run the unit and integration tests again (the
+# integration tests spawn the sanitized binary).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh
@@ -17,6 +18,7 @@ min_integration=98
 min_validation=25
 min_repro=29
 min_sweep=12
+min_report=3
 
 count() { (cd "$1" && ctest -N -L "^$2\$" | sed -n 's/^Total Tests: //p'); }
 require_tests() {
@@ -45,6 +47,7 @@ require_tests build-test integration "$min_integration"
 require_tests build-test validation "$min_validation"
 require_tests build-test repro "$min_repro"
 require_tests build-test sweep "$min_sweep"
+require_tests build-test report "$min_report"
 (cd build-test && ctest -j"$jobs" --no-tests=error --output-on-failure)
 
 build build-asan Debug unit_tests -DGRANREPRO_SANITIZE=ON

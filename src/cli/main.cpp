@@ -13,6 +13,7 @@
 #include <sstream>
 
 #include "cli/bench.hpp"
+#include "cli/report.hpp"
 #include "core/input_error.hpp"
 #include "core/interrupt.hpp"
 #include "core/provenance.hpp"
@@ -388,6 +389,8 @@ static int run_main(int argc, char** argv) {
         parse_scale(bench_opt.scale); // one line naming --scale and what is allowed
         rc = run_bench(bench_target, bench_opt);
     });
+
+    add_report_subcommand(app, rc);
 
     // An unknown subcommand gets the list of known ones, in one line.
     const auto subcommands = app.get_subcommands([](CLI::App*) { return true; });

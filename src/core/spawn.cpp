@@ -2,6 +2,7 @@
 
 #include <cerrno>
 #include <csignal>
+#include <cstdio>
 #include <cstdlib>
 #include <fcntl.h>
 #include <spawn.h>
@@ -23,7 +24,8 @@ struct Fd {
     }
 };
 
-// Starts argv with stdout and stderr on out_fd (stdin /dev/null) in cwd; the pid, or -1.
+// Starts argv with stdout and stderr on out_fd (ours if out_fd < 0; stdin /dev/null) in cwd; the
+// pid, or -1.
 pid_t start(const std::vector<std::string>& argv, const std::filesystem::path& cwd, int out_fd) {
     if (argv.empty()) return -1;
     std::vector<char*> args;
@@ -42,8 +44,10 @@ pid_t start(const std::vector<std::string>& argv, const std::filesystem::path& c
     posix_spawnattr_setsigdefault(&attr, &defaults);
     posix_spawnattr_setflags(&attr, POSIX_SPAWN_SETSIGMASK | POSIX_SPAWN_SETSIGDEF);
     posix_spawn_file_actions_addopen(&fa, 0, "/dev/null", O_RDONLY, 0);
-    posix_spawn_file_actions_adddup2(&fa, out_fd, 1);
-    posix_spawn_file_actions_adddup2(&fa, out_fd, 2);
+    if (out_fd >= 0) {
+        posix_spawn_file_actions_adddup2(&fa, out_fd, 1);
+        posix_spawn_file_actions_adddup2(&fa, out_fd, 2);
+    }
     if (!cwd.empty()) posix_spawn_file_actions_addchdir_np(&fa, cwd.c_str());
     pid_t pid = -1;
     // glibc reports a failed chdir or exec (e.g. no such program) as posix_spawnp's result.
@@ -68,6 +72,12 @@ int run_program(const std::vector<std::string>& argv, const std::filesystem::pat
     const Fd out{::open(output.empty() ? "/dev/null" : output.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644)};
     if (out.fd < 0) return kNotStarted;
     const pid_t pid = start(argv, cwd, out.fd);
+    return pid < 0 ? kNotStarted : wait_for(pid);
+}
+
+int run_program_with_our_output(const std::vector<std::string>& argv) {
+    std::fflush(nullptr);
+    const pid_t pid = start(argv, {}, -1);
     return pid < 0 ? kNotStarted : wait_for(pid);
 }
 

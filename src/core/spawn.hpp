@@ -20,6 +20,9 @@ inline constexpr int kNotStarted = -1;
 int run_program(const std::vector<std::string>& argv, const std::filesystem::path& cwd = {},
                 const std::filesystem::path& output = {});
 
+// Like run_program, with our stdout and stderr (a program whose messages are meant for the user).
+int run_program_with_our_output(const std::vector<std::string>& argv);
+
 // Like run_program, and returns what it wrote on stdout and stderr ("" if it could not start).
 std::string program_output(const std::vector<std::string>& argv);
 

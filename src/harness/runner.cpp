@@ -459,6 +459,20 @@ int check_experiment(const std::string& name, const fs::path& out, const CheckOp
     return all_pass(verdicts) ? 0 : 1;
 }
 
+nlohmann::json judged_claims(const std::string& name, const fs::path& out) {
+    find_experiment(name);
+    const auto claims = load_claims(expected_file(name), name);
+    const fs::path summary_path = out / name / "summary.json";
+    if (!fs::exists(summary_path)) throw InputError("report: no results in " + (out / name).string());
+    const nlohmann::json summary = read_summary(summary_path, name);
+    const bool verified = check_data_file(out / name / "data.h5", name, summary_path, summary);
+    const std::string scale = summary["scale"].get<std::string>();
+    const auto verdicts = evaluate_claims(claims, summary["scalars"], parse_scale(scale));
+    return {{"scale", scale},
+            {"notes", check_notes(summary.value("overridden_parameters", nlohmann::json::object()), verified)},
+            {"claims", claims_to_json(verdicts)}};
+}
+
 int check_all(const fs::path& out, const CheckOptions& opt) {
     int rc = 0;
     VerdictCounts totals;

@@ -66,6 +66,11 @@ bool has_results(const std::string& name, const std::filesystem::path& out);
 // Compares OUT/<name>/summary.json with expected/<name>.toml; prints the table; 0 if no claim fails.
 int check_experiment(const std::string& name, const std::filesystem::path& out, const CheckOptions& opt = {},
                      VerdictCounts* totals = nullptr);
+// OUT/<name>/'s claims judged against expected/<name>.toml exactly as check_experiment judges
+// them (after the same checks of summary.json against data.h5; InputError if damaged), without
+// printing: {"scale", "notes" (check's lines under the title), "claims" (summary.json's format)}.
+// For `report`.
+nlohmann::json judged_claims(const std::string& name, const std::filesystem::path& out);
 // Checks every experiment with results in OUT, prints one table each and the totals; lists the
 // experiments without results on stderr. 1 if a claim fails or (unless missing_ok) results are missing.
 int check_all(const std::filesystem::path& out, const CheckOptions& opt = {});

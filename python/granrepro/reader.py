@@ -1,10 +1,5 @@
-"""Read granrepro results (docs/schema.md) into Python: h5py + numpy (Debian python3-h5py,
-python3-numpy); plot() needs matplotlib (python3-matplotlib).
-
-    import granrepro
-    run = granrepro.load("out/brake-failure")
-    t = run.tables["fig3"]; v, dv = t["vy_i"], t["dvy"]   # numpy arrays; t.units["dvy"] == "m/s"
-"""
+"""granrepro.load: reads granrepro results (docs/schema.md) into Python with h5py + numpy
+(Debian python3-h5py, python3-numpy)."""
 from __future__ import annotations
 
 import json
@@ -92,8 +87,9 @@ def _attrs(obj) -> dict:
     return out
 
 
-def load(out_dir: str) -> Run:
-    """Reads OUT/<experiment>/ (the folder holding data.h5 and summary.json)."""
+def load(out_dir: str, tables=None) -> Run:
+    """Reads OUT/<experiment>/ (the folder holding data.h5 and summary.json). tables: the names of
+    the tables to read (default: every one); parameters, scalars and provenance are always read."""
     h5_path = os.path.join(out_dir, "data.h5")
     with h5py.File(h5_path, "r") as f:
         root = _attrs(f)
@@ -126,6 +122,8 @@ def load(out_dir: str) -> Run:
                                          a.get("description", ""))
         tg = f["tables"]
         for tname in _in_creation_order(tg):
+            if tables is not None and tname not in tables:
+                continue
             g = tg[tname]
             t = Table(tname, _text(g.attrs.get("description", "")))
             for c in _in_creation_order(g):
@@ -139,31 +137,3 @@ def load(out_dir: str) -> Run:
         with open(summary) as s:
             run.claims = json.load(s).get("claims", [])
     return run
-
-
-def plot(run: Run, table: str, columns=None, ax=None, logx=False, logy=False, **kwargs):
-    """Draws columns (default: all but the first) of run.tables[table] against its first column
-    with matplotlib; axis labels carry the units. Returns the Axes."""
-    import matplotlib
-    if ax is None:
-        if not os.environ.get("DISPLAY"):
-            matplotlib.use("Agg")
-        import matplotlib.pyplot as plt
-        _, ax = plt.subplots()
-    t = run.tables[table]
-    x = t.x
-    cols = [c for c in t if c != x] if columns is None else list(columns)
-    for c in cols:
-        if len(t[c]) != len(t[x]):
-            raise ValueError(f"{table}/{c} has {len(t[c])} values, {x} has {len(t[x])}")
-        ax.plot(t[x], t[c], label=t.label(c), **kwargs)
-    ax.set_xlabel(t.label(x))
-    units = {t.units[c] for c in cols}
-    ax.set_ylabel(f"[{units.pop()}]" if len(units) == 1 else "")
-    ax.set_title(f"{run.experiment}: {table}")
-    if logx:
-        ax.set_xscale("log")
-    if logy:
-        ax.set_yscale("log")
-    ax.legend()
-    return ax

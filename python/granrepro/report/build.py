@@ -1,0 +1,502 @@
+"""The report: a static site (index.html, one page per experiment, style.css; the figures linked
+or copied) of the results in a folder, from the claims `granrepro report` judged against expected/.
+
+    python3 -m granrepro.report --results DIR --claims CLAIMS.json --to REPORTDIR
+
+CLAIMS.json ({"experiments": [{name, paper, description, figures: [{id, caption}], has_results,
+scale, notes, claims: [...]}]}, experiments in registry order, claims in summary.json's format) is
+written by `granrepro report`, which judges every claim as `granrepro check` does. Every text is
+escaped (Jinja2 autoescape): a results folder is data, never code. The report is written into a
+hidden staging folder beside REPORTDIR and switched into place when complete.
+
+Exit codes: 0 written; 2 bad input (one line naming the parameter); 3 not written (the previous
+report is untouched); 4 jinja2 or h5py missing.
+"""
+from __future__ import annotations
+
+import argparse
+import ctypes
+import json
+import math
+import os
+import re
+import shutil
+import sys
+import tomllib
+from dataclasses import dataclass, field
+from importlib import resources
+
+MARKER = ".granrepro-report"  # in every report folder: only such a folder is ever replaced
+MAX_TABLE_ROWS = 60           # rows of a cited table shown; the rest are counted
+VERDICTS = ("PASS", "FAIL", "DEVIATION", "skipped")
+
+
+class BadInput(Exception):
+    """Exit 2: one line naming the parameter and what is allowed."""
+
+
+# ---------------------------------------------------------------- what goes on the pages
+
+
+@dataclass
+class CitedTable:
+    name: str
+    description: str
+    columns: list  # (name, unit)
+    rows: list     # rows of formatted cells
+    total_rows: int
+
+
+@dataclass
+class ClaimRow:
+    experiment: str
+    id: str
+    statement: str
+    source: str
+    expected: str
+    band: str
+    measured: str
+    tolerance: str
+    tolerance_kind: str
+    tolerance_reason: str
+    verdict: str
+    known_deviation: str = ""
+    deviation_band_kind: str = ""
+    deviation_band_reason: str = ""
+    section: str = ""      # anchor of the section that shows it
+    section_title: str = ""
+    cited: list = field(default_factory=list)  # CitedTable
+
+    @property
+    def anchor(self) -> str:
+        return f"claim-{self.experiment}--{self.id}"
+
+    @property
+    def href(self) -> str:
+        return f"{self.experiment}.html#{self.anchor}"
+
+    @property
+    def verdict_class(self) -> str:
+        return "v-" + (self.verdict.lower() if self.verdict in VERDICTS else "other")
+
+
+@dataclass
+class Figure:
+    id: str
+    label: str          # "Luding (1998) Fig. 2"
+    our_caption: str
+    paper_caption: str
+    caption_source: str
+    image: str = ""     # href, "" if missing
+    pdf: str = ""
+    missing: str = ""   # why there is no image
+    claims: list = field(default_factory=list)
+
+
+@dataclass
+class Experiment:
+    name: str
+    paper: str
+    description: str
+    has_results: bool
+    scale: str = ""
+    notes: list = field(default_factory=list)
+    provenance: list = field(default_factory=list)  # (name, value)
+    figures: list = field(default_factory=list)
+    other_claims: list = field(default_factory=list)
+    totals: dict = field(default_factory=dict)
+
+    @property
+    def page(self) -> str:
+        return f"{self.name}.html"
+
+    @property
+    def claims(self) -> list:
+        return [c for f in self.figures for c in f.claims] + self.other_claims
+
+
+def _totals(claims) -> dict:
+    t = {v: 0 for v in VERDICTS}
+    for c in claims:
+        t[c.verdict] = t.get(c.verdict, 0) + 1
+    t["total"] = len(claims)
+    return t
+
+
+def _number(v) -> str:
+    if v is None:
+        return "—"
+    if isinstance(v, bool):
+        return str(v).lower()
+    if isinstance(v, (int, float)):
+        return "nan" if isinstance(v, float) and math.isnan(v) else f"{v:.6g}"
+    try:
+        return f"{float(v):.6g}"
+    except (TypeError, ValueError):
+        return str(v)
+
+
+# ---------------------------------------------------------------- claims -> figure sections
+
+_FIG = re.compile(r"\bFig(?:ure|s?\.)\s*(\d+(?:\s*\([a-z]\))?(?:\s*(?:,|and|-)\s*\(?[0-9a-z]+\)?)*)")
+
+
+def figures_named(source: str) -> list[int]:
+    """The figure numbers a claim's source names, in order ("Figs. 13 and 14" -> [13, 14])."""
+    out = []
+    for m in _FIG.finditer(source):
+        out += [int(n) for n in re.findall(r"\d+", m.group(1))]
+    return out
+
+
+def figure_number(fig_id: str) -> int:
+    m = re.search(r"fig0*(\d+)$", fig_id)
+    return int(m.group(1)) if m else -1
+
+
+def figure_of_claim(experiment: str, claim: dict, fig_ids: list[str], overrides: dict) -> str:
+    """The id of the figure section that shows the claim, "" for the experiment's other claims."""
+    o = overrides.get(f"{experiment}/{claim['id']}")
+    if o in fig_ids:
+        return o
+    by_number = {figure_number(f): f for f in fig_ids}
+    for n in figures_named(claim.get("source", "")):
+        if n in by_number:
+            return by_number[n]
+    return ""
+
+
+# ---------------------------------------------------------------- tables the deviation texts cite
+
+
+def tables_cited(text: str, names) -> list[str]:
+    """Names of `names` the text cites: tables/NAME.tsv, NAME.tsv, "table NAME", or a NAME with an
+    underscore or a digit standing as a word (a plain word such as `seeds` only in the first forms)."""
+    found = []
+    for n in sorted(names, key=len, reverse=True):
+        e = re.escape(n)
+        explicit = re.search(rf"(tables/{e}\.tsv|(?<![\w.]){e}\.tsv|\btables? {e}(?![\w.]))", text)
+        word = re.search(rf"(?<![\w./-]){e}(?![\w])", text) and re.search(r"[_0-9]", n)
+        if explicit or word:
+            found.append(n)
+    return [n for n in sorted(names) if n in found]
+
+
+def cited_table(t) -> CitedTable:
+    cols = list(t)
+    n = max((len(t[c]) for c in cols), default=0)
+    rows = []
+    for i in range(min(n, MAX_TABLE_ROWS)):
+        rows.append([_number(t[c][i].item() if hasattr(t[c][i], "item") else t[c][i]) if i < len(t[c]) else ""
+                     for c in cols])
+    return CitedTable(t.name, t.description, [(c, t.units.get(c, "")) for c in cols], rows, n)
+
+
+# ---------------------------------------------------------------- images
+
+
+def find_file(results: str, experiment: str, fig_id: str, ext: str) -> str:
+    for p in (os.path.join(results, experiment, fig_id + ext), os.path.join(results, fig_id + ext)):
+        if os.path.isfile(p):
+            return p
+    return ""
+
+
+# ---------------------------------------------------------------- the model of the whole report
+
+
+def _data():
+    return resources.files("granrepro.report")
+
+
+def load_figure_texts() -> dict:
+    return tomllib.loads(_data().joinpath("figures.toml").read_text(encoding="utf-8"))
+
+
+def provenance_rows(summary: dict, run) -> list:
+    rows = [("code version", summary.get("code_version", "")),
+            ("command line", summary.get("command_line", "")),
+            ("--set overrides", ", ".join(f"{k}={v}" for k, v in (summary.get("overridden_parameters") or {}).items())
+             or "none"),
+            ("seed", summary.get("seed", "")),
+            ("scale", summary.get("scale", "")),
+            ("wall time", f"{summary['wall_time_s']:.1f} s" if isinstance(summary.get("wall_time_s"), (int, float)) else "")]
+    if "resumed_points" in summary:
+        rows.append(("resumed sweep points", summary["resumed_points"]))
+    if run is not None:
+        a = run.attributes
+        for k in ("created_utc", "threads", "paper"):
+            if k in a:
+                rows.append((k, a[k]))
+        for k, v in run.provenance.items():
+            if k in ("command_line", "overridden_parameters"):
+                continue
+            if isinstance(v, str) and (len(v) > 200 or "\n" in v):
+                continue  # the expected/, experiments/ and plots/ texts used: in data.h5
+            rows.append((k, v))
+        long = sorted(k for k, v in run.provenance.items() if isinstance(v, str) and (len(v) > 200 or "\n" in v))
+        if long:
+            rows.append(("also in data.h5 /provenance", ", ".join(long)))
+    return [(k, _number(v) if isinstance(v, float) else str(v)) for k, v in rows]
+
+
+def build_model(results: str, judged: dict, final_to: str, link_images: bool, warn) -> dict:
+    from .. import reader
+
+    texts = load_figure_texts()
+    overrides = texts.get("claim_figure", {})
+    papers = [{"prefix": p["prefix"], "title": p["title"], "experiments": []} for p in texts["paper"]]
+    copies = []  # (source file, name in the report)
+    experiments = []
+    for x in judged["experiments"]:
+        name = x["name"]
+        e = Experiment(name, x.get("paper", ""), x.get("description", ""), bool(x.get("has_results")))
+        fig_ids = [f["id"] for f in x.get("figures", [])]
+        summary, run = {}, None
+        claims_in = x.get("claims", []) if e.has_results else []
+        if e.has_results:
+            e.scale = x.get("scale", "")
+            e.notes = list(x.get("notes", []))
+            with open(os.path.join(results, name, "summary.json"), encoding="utf-8") as f:
+                summary = json.load(f)
+            texts_of = lambda c: " ".join(c.get(k, "") for k in ("known_deviation", "deviation_band_reason",  # noqa: E731
+                                                                   "tolerance_reason"))
+            import h5py
+            with h5py.File(os.path.join(results, name, "data.h5"), "r") as h5:
+                names = list(h5["tables"].keys()) if "tables" in h5 else []
+            wanted = {n for c in claims_in for n in tables_cited(texts_of(c), names)}
+            run = reader.load(os.path.join(results, name), tables=wanted)
+            e.provenance = provenance_rows(summary, run)
+        for f in x.get("figures", []):
+            fid = f["id"]
+            t = texts.get("figure", {}).get(fid, {})
+            prefix = fid.split("-")[0]
+            who = {"luding98": "Luding (1998)", "schaefer95": "Schäfer & Wolf (1995)"}.get(prefix, prefix)
+            fig = Figure(fid, f"{who} Fig. {figure_number(fid)}", f.get("caption", ""), t.get("caption", ""),
+                         t.get("source", ""))
+            if not e.has_results:
+                fig.missing = f"no results of {name} in {results}"
+            else:
+                png = find_file(results, name, fid, ".png")
+                pdf = find_file(results, name, fid, ".pdf")
+                if not png:
+                    fig.missing = f"{fid}.png is missing from {results} (the figure was not drawn)"
+                    warn(f"figure {fid} ({name}): {fid}.png is missing from {results}")
+                for path, attr in ((png, "image"), (pdf, "pdf")):
+                    if not path:
+                        continue
+                    if link_images:
+                        setattr(fig, attr, os.path.relpath(os.path.abspath(path), final_to))
+                    else:
+                        target = f"figures/{os.path.basename(path)}"
+                        copies.append((path, target))
+                        setattr(fig, attr, target)
+            e.figures.append(fig)
+        by_id = {f.id: f for f in e.figures}
+        for c in claims_in:
+            row = ClaimRow(name, c["id"], c.get("statement", ""), c.get("source", ""), c.get("expected", ""),
+                           c.get("deviation_band", ""), _number(c.get("measured")), c.get("tolerance", ""),
+                           c.get("tolerance_kind", ""), c.get("tolerance_reason", ""), c.get("verdict", "FAIL"),
+                           c.get("known_deviation", ""), c.get("deviation_band_kind", ""),
+                           c.get("deviation_band_reason", ""))
+            cited = tables_cited(" ".join((row.known_deviation, row.deviation_band_reason, row.tolerance_reason)),
+                                 run.tables.keys()) if run else []
+            row.cited = [cited_table(run.tables[n]) for n in cited]
+            fid = figure_of_claim(name, c, fig_ids, overrides)
+            if fid:
+                by_id[fid].claims.append(row)
+                row.section, row.section_title = fid, by_id[fid].label
+            else:
+                e.other_claims.append(row)
+                row.section, row.section_title = f"{name}-other", f"other claims of {name}"
+        e.totals = _totals(e.claims)
+        experiments.append(e)
+        prefixes = {fid.split("-")[0] for fid in fig_ids}
+        for p in papers:
+            if p["prefix"] in prefixes:
+                p["experiments"].append(e)
+    for p in papers:
+        p["totals"] = _totals([c for e in p["experiments"] for c in e.claims])
+    ordered = [e for p in papers for e in p["experiments"]]
+    ordered += [e for e in experiments if e not in ordered]
+    claims = [c for e in ordered for c in e.claims]
+    return {"papers": [p for p in papers if p["experiments"]], "experiments": experiments, "claims": claims,
+            "totals": _totals(claims), "results": results, "verdicts": VERDICTS,
+            "missing_results": [e.name for e in experiments if not e.has_results],
+            "missing_figures": [(e, f) for e in experiments for f in e.figures if f.missing and e.has_results],
+            "scales": sorted({e.scale for e in experiments if e.scale}),
+            "versions": sorted({dict(e.provenance).get("code version", "") for e in experiments if e.has_results}),
+            "copies": copies}
+
+
+# ---------------------------------------------------------------- writing
+
+
+def render(model: dict, staging: str) -> None:
+    import jinja2
+
+    env = jinja2.Environment(loader=jinja2.PackageLoader("granrepro.report", "templates"),
+                             autoescape=True, undefined=jinja2.StrictUndefined,
+                             trim_blocks=True, lstrip_blocks=True)
+    pages = {"index.html": env.get_template("index.html.j2").render(**model)}
+    for e in model["experiments"]:
+        pages[e.page] = env.get_template("experiment.html.j2").render(e=e, **model)
+    pages["style.css"] = _data().joinpath("templates", "style.css").read_text(encoding="utf-8")
+    pages[MARKER] = "written by `granrepro report`; the whole folder is replaced by the next report\n"
+    for name, text in pages.items():
+        _write(os.path.join(staging, name), text.encode("utf-8"))
+    for src, target in model["copies"]:
+        dst = os.path.join(staging, target)
+        os.makedirs(os.path.dirname(dst), exist_ok=True)
+        with open(src, "rb") as f:
+            _write(dst, f.read())
+
+
+def _write(path: str, data: bytes) -> None:
+    with open(path, "wb") as f:
+        f.write(data)
+        f.flush()
+        os.fsync(f.fileno())
+
+
+def _fsync_dir(path: str) -> None:
+    fd = os.open(path, os.O_RDONLY | os.O_DIRECTORY)
+    try:
+        os.fsync(fd)
+    finally:
+        os.close(fd)
+
+
+def _alive(pid: int) -> bool:
+    try:
+        os.kill(pid, 0)
+    except ProcessLookupError:
+        return False
+    except PermissionError:
+        return True
+    return True
+
+
+def _clean_leftovers(parent: str, base: str, final: str) -> None:
+    """What killed reports left: .<base>.partial-<pid> (deleted) and .<base>.old-<pid> (put back if
+    the report is missing, else deleted), of processes no longer running."""
+    for n in os.listdir(parent):
+        m = re.fullmatch(rf"\.{re.escape(base)}\.(partial|old)-(\d+)", n)
+        if not m or _alive(int(m.group(2))):
+            continue
+        path = os.path.join(parent, n)
+        if m.group(1) == "old" and not os.path.exists(final):
+            os.rename(path, final)
+        else:
+            shutil.rmtree(path, ignore_errors=True)
+
+
+def _exchange(a: str, b: str) -> bool:
+    """renameat2(RENAME_EXCHANGE): swaps two folders in one step; False where unsupported."""
+    try:
+        libc = ctypes.CDLL(None, use_errno=True)
+        f = libc.renameat2
+    except (OSError, AttributeError):
+        return False
+    at_fdcwd, rename_exchange = -100, 2
+    return f(at_fdcwd, os.fsencode(a), at_fdcwd, os.fsencode(b), rename_exchange) == 0
+
+
+def commit(staging: str, final: str, old: str) -> None:
+    """Puts the staged report in place of the old one: nothing half-written is ever at `final`."""
+    _fsync_dir(staging)
+    if not os.path.exists(final):
+        os.rename(staging, final)
+    elif _exchange(staging, final):
+        shutil.rmtree(staging)  # now the old report
+    else:
+        os.rename(final, old)
+        os.rename(staging, final)
+        shutil.rmtree(old)
+    _fsync_dir(os.path.dirname(final))
+
+
+def check_target(results: str, to: str) -> None:
+    r = os.path.realpath(results)
+    f = os.path.realpath(to)
+    final = to
+    if f == r or r.startswith(f.rstrip("/") + "/"):
+        raise BadInput(f"--to {final}: is the results folder or holds it; give a folder of its own (default: OUT/report)")
+    if os.path.exists(final):
+        if not os.path.isdir(final):
+            raise BadInput(f"--to {final}: exists and is not a folder; give a new folder or an earlier report's")
+        if os.listdir(final) and not os.path.exists(os.path.join(final, MARKER)):
+            raise BadInput(f"--to {final}: exists and is not a report of `granrepro report` (no {MARKER} in it), "
+                           "so it is not replaced; give a new folder or an earlier report's")
+
+
+def make_report(results: str, judged: dict, to: str, warn=None) -> dict:
+    """Writes the report of `results` to `to`; returns the model (tests read it)."""
+    warn = warn or (lambda m: print(f"granrepro: report: warning: {m}", file=sys.stderr))
+    if not os.path.isdir(results):
+        raise BadInput(f"--results {results}: not a folder; give a results folder such as paper_figures or out")
+    final = os.path.abspath(to)
+    check_target(results, to)
+    parent, base = os.path.dirname(final), os.path.basename(final)
+    try:
+        os.makedirs(parent, exist_ok=True)
+    except OSError as e:
+        raise BadInput(f"--to {to}: its folder cannot be created ({e.strerror})") from e
+    if not os.access(parent, os.W_OK):
+        raise BadInput(f"--to {to}: {parent} is not writable")
+    r = os.path.realpath(results).rstrip("/") + "/"
+    link_images = os.path.realpath(final).startswith(r)  # inside the results: link, else copy
+    model = build_model(results, judged, final, link_images, warn)
+    _clean_leftovers(parent, base, final)
+    staging = os.path.join(parent, f".{base}.partial-{os.getpid()}")
+    shutil.rmtree(staging, ignore_errors=True)
+    os.mkdir(staging)
+    try:
+        render(model, staging)
+        commit(staging, final, os.path.join(parent, f".{base}.old-{os.getpid()}"))
+    except BaseException:
+        shutil.rmtree(staging, ignore_errors=True)
+        raise
+    return model
+
+
+class _Parser(argparse.ArgumentParser):
+    def error(self, message):  # one line, exit 2
+        print(f"granrepro: report: {message}", file=sys.stderr)
+        sys.exit(2)
+
+
+def main(argv=None) -> int:
+    p = _Parser(prog="python3 -m granrepro.report", description=__doc__.split("\n\n")[0])
+    p.add_argument("--results", required=True, help="results folder (OUT of the runs, or paper_figures)")
+    p.add_argument("--claims", required=True, help="the judged claims, as `granrepro report` writes them")
+    p.add_argument("--to", required=True, help="report folder (replaced when the new report is complete)")
+    a = p.parse_args(argv)
+    for module, package in (("jinja2", "python3-jinja2"), ("h5py", "python3-h5py"), ("numpy", "python3-numpy")):
+        try:
+            __import__(module)
+        except ImportError:
+            print(f"granrepro: report needs the Python module {module} (Debian: apt-get install {package}; "
+                  f"or pip install ./python)", file=sys.stderr)
+            return 4
+    try:
+        try:
+            with open(a.claims, encoding="utf-8") as f:
+                judged = json.load(f)
+        except (OSError, ValueError) as e:
+            raise BadInput(f"--claims {a.claims}: cannot be read as JSON ({e})") from e
+        if not isinstance(judged, dict) or not isinstance(judged.get("experiments"), list):
+            raise BadInput(f"--claims {a.claims}: not the claims `granrepro report` writes (no 'experiments' list)")
+        model = make_report(a.results, judged, a.to)
+    except BadInput as e:
+        print(f"granrepro: report: {e}", file=sys.stderr)
+        return 2
+    except OSError as e:
+        print(f"granrepro: report: could not write {a.to}: {e.strerror or e} ({e.filename or ''}); "
+              "the previous report is untouched", file=sys.stderr)
+        return 3
+    t = model["totals"]
+    print(f"report: {os.path.join(a.to, 'index.html')}: {len(model['experiments']) - len(model['missing_results'])} "
+          f"experiments, {t['total']} claims ({t['PASS']} PASS, {t['FAIL']} FAIL, {t['DEVIATION']} DEVIATION, "
+          f"{t['skipped']} skipped), {len(model['missing_figures'])} figures missing")
+    return 0

@@ -1,0 +1,109 @@
+#include "cli/report.hpp"
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <unistd.h>
+#include <vector>
+
+#include "core/input_error.hpp"
+#include "core/spawn.hpp"
+#include "harness/experiment.hpp"
+#include "harness/runner.hpp"
+#include "io/staged_directory.hpp"
+
+namespace fs = std::filesystem;
+
+namespace granrepro {
+
+namespace {
+
+// The interpreter: $GRANREPRO_PYTHON, else Debian's (its python3-jinja2 and python3-h5py are
+// installed there, not in another python3 earlier on PATH such as pyenv's), else python3 on PATH.
+std::string python_interpreter() {
+    if (const char* p = std::getenv("GRANREPRO_PYTHON"); p && *p) return p;
+    if (::access("/usr/bin/python3", X_OK) == 0) return "/usr/bin/python3";
+    return find_in_path("python3");
+}
+
+// The claims of every experiment with results in `out`, judged as `check` judges them, with the
+// figures each experiment makes: the report's input besides the results folder.
+nlohmann::json report_input(const fs::path& out) {
+    nlohmann::json experiments = nlohmann::json::array();
+    int with_results = 0;
+    for (const auto& e : experiment_registry()) {
+        const ExperimentInfo info = experiment_info(e.name);
+        nlohmann::json figures = nlohmann::json::array();
+        for (const auto& f : info.figures) figures.push_back({{"id", f.id}, {"caption", f.caption}});
+        nlohmann::json x = {{"name", e.name}, {"paper", info.paper}, {"description", info.description},
+                            {"figures", figures}, {"has_results", has_results(e.name, out)}};
+        if (x["has_results"]) {
+            x.update(judged_claims(e.name, out));
+            ++with_results;
+        }
+        experiments.push_back(x);
+    }
+    if (with_results == 0)
+        throw InputError("report --out " + out.string() + ": no results of any experiment there (no <experiment>/summary.json); "
+                         "give a results folder such as paper_figures or out");
+    return {{"experiments", experiments}};
+}
+
+// A file removed when the report is done, whatever happens.
+struct TemporaryFile {
+    fs::path path;
+    ~TemporaryFile() {
+        std::error_code ec;
+        fs::remove(path, ec);
+    }
+};
+
+int make_report(const std::string& out_text, const std::string& to_text) {
+    const fs::path out = out_text;
+    if (!fs::is_directory(out))
+        throw InputError("report --out " + out_text + ": not a folder; give a results folder such as paper_figures or out");
+    const fs::path to = to_text.empty() ? out / "report" : fs::path(to_text);
+    const nlohmann::json input = report_input(out);
+
+    const std::string python = python_interpreter();
+    if (python.empty()) {
+        std::fprintf(stderr, "granrepro: report needs python3 with jinja2 and h5py (Debian: apt-get install python3 "
+                             "python3-jinja2 python3-h5py); none found\n");
+        return 4;
+    }
+    const TemporaryFile claims{fs::temp_directory_path() / ("granrepro-report-" + std::to_string(::getpid()) + ".json")};
+    write_file_atomically(claims.path, input.dump());
+    // The package from the data files' python/ (source tree or installed copy) before any other.
+    const fs::path package = project_root() / "python";
+    if (fs::exists(package / "granrepro" / "report")) {
+        const char* old = std::getenv("PYTHONPATH");
+        const std::string path = package.string() + (old && *old ? ":" + std::string(old) : "");
+        ::setenv("PYTHONPATH", path.c_str(), 1);
+    }
+    const std::vector<std::string> argv = {python, "-m", "granrepro.report", "--results", out.string(),
+                                           "--claims", claims.path.string(), "--to", to.string()};
+    const int rc = run_program_with_our_output(argv);
+    if (rc == kNotStarted) {
+        std::fprintf(stderr, "granrepro: report: could not start %s\n", python.c_str());
+        return 4;
+    }
+    return rc;
+}
+
+} // namespace
+
+void add_report_subcommand(CLI::App& app, int& rc) {
+    static std::string out = "paper_figures", to;
+    CLI::App* sub = app.add_subcommand(
+        "report", "write a static HTML report (every figure, claim, deviation and its tables) of the results in --out");
+    sub->add_option("--out", out, "results folder (the experiments' <experiment>/ folders)")->capture_default_str();
+    sub->add_option("--to", to, "report folder, replaced as a whole when the new report is complete (default: OUT/report)");
+    sub->footer("\nExit codes: 0 report written (missing figures are listed in it and on stderr); 2 bad input (one\n"
+                "line: a folder that is not a results folder, damaged results, a --to that is not a report); 3 the\n"
+                "report could not be written (the previous one is untouched); 4 python3, jinja2 or h5py missing.");
+    sub->callback([&rc] { rc = make_report(out, to); });
+}
+
+} // namespace granrepro
