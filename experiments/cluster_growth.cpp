@@ -523,6 +523,28 @@ void report_elastic_shares(Result& res, const Samples& ls, const std::string& ta
     }
 }
 
+// Fig. 10(b), "for larger times, the number of elastic collisions increases": the TC-elastic
+// share of the pair collisions made after elastic_until (the last sample t <= elastic_until up to
+// the end) over the share made up to it. Above 1: the squares of Fig. 10(b) rise faster than the
+// circles. NaN if the run ends before elastic_until or has no elastic collision by then.
+void report_elastic_increase(Result& res, const Samples& st, double until, double n) {
+    std::size_t u = 0;
+    for (std::size_t i = 1; i < st.ts.size(); ++i)
+        if (st.ts[i] <= until) u = i;
+    const std::size_t e = st.ts.size() - 1;
+    double early = NAN, late = NAN;
+    if (u > 0 && e > u && st.cns[u] > 0 && st.cns[e] > st.cns[u]) {
+        early = st.ecns[u] / st.cns[u];
+        late = (st.ecns[e] - st.ecns[u]) / (st.cns[e] - st.cns[u]);
+    }
+    res.scalar("elastic_share_before_until", early, "1", "TC-elastic share of the pair collisions up to the last sample t <= elastic_until");
+    res.scalar("elastic_share_after_until", late, "1", "TC-elastic share of the pair collisions from that sample to the end");
+    res.scalar("elastic_share_late_over_early", early > 0 ? late / early : NAN, "1",
+               "elastic_share_after_until / elastic_share_before_until: above 1 when elastic collisions increase for t > elastic_until");
+    res.scalar("elastic_share_after_until_collisions", e > u ? 0.5 * (st.cns[e] - st.cns[u]) * n : NAN, "1",
+               "pair collisions after elastic_until (sets the counting error of elastic_share_after_until)");
+}
+
 void fig10(Result& res, const ClusterSpec& s, double t0, const Samples& st, const Samples* other) {
     const std::vector<double> kk = fig10_table(res, st, t0, s.late_slope_from);
     fig10_slopes(res, st.ts, kk, t0, s.samples_per_octave, s.late_slope_from);
@@ -530,6 +552,7 @@ void fig10(Result& res, const ClusterSpec& s, double t0, const Samples& st, cons
     report_elastic_shares(res, st, "", s.tc_both ? "both" : "either", s.elastic_until);
     if (other) report_elastic_shares(res, *other, s.tc_both ? "_either" : "_both", s.tc_both ? "either" : "both", s.elastic_until);
     res.scalar("elastic_per_particle_end", st.ecns.back(), "1", "TC-elastic collisions per particle at the end");
+    report_elastic_increase(res, st, s.elastic_until, double(s.n()));
     res.scalar("C_over_N_eq18_at_0.64s", 4 / (1 - s.r * s.r) * std::log(1 + 0.64 / t0), "1",
                "C/N at 0.64 s if the gas stayed homogeneous: 4/(1-r^2) ln(1 + t/t0)");
 }
