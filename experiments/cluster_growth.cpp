@@ -778,8 +778,71 @@ void report_powerlaw_onset(Result& res, const std::vector<Instant>& instants) {
                "share of the instants with C/N > 70 where Eq. (22) fits better than Eq. (21)");
 }
 
+// Fig. 11's "grow in size": the density correlation length at each snapshot, and the share of
+// successive snapshots at which it is larger than at the one before.
+void report_structure_growth(Result& res, const std::vector<double>& mt, const std::vector<double>& xi) {
+    int pairs = 0, growing = 0;
+    for (std::size_t k = 1; k < xi.size(); ++k) {
+        if (!std::isfinite(xi[k]) || !std::isfinite(xi[k - 1])) continue;
+        ++pairs;
+        if (xi[k] > xi[k - 1]) ++growing;
+    }
+    res.scalar("density_corr_length_growing_share", pairs ? double(growing) / pairs : NAN, "1",
+               "share of successive Fig. 11 snapshots whose density correlation length exceeds the previous one's");
+    res.scalar("density_corr_length_pairs", double(pairs), "1", "number of such snapshot pairs");
+    res.scalar("density_corr_length_last_over_first", xi.size() > 1 ? xi.back() / xi.front() : NAN, "1",
+               "density correlation length at the last snapshot over that at the first");
+    for (std::size_t k = 0; k < mt.size(); ++k)
+        res.scalar("density_corr_length_t" + number_text(mt[k]), xi[k], "1",
+                   "first zero of the density autocorrelation (cells of cluster_cell d), in d, at this snapshot");
+    Table& t = res.table("structure_growth", "density correlation length at the Fig. 11 snapshots");
+    t.add({{"t", "s", mt}, {"corr_length_over_d", "1", xi}});
+}
+
 // Is the instant at t the Fig. 11 snapshot time tq?
 bool snapshot_at(double t, double tq) { return std::abs(t / tq - 1) < 1e-9; }
+
+// Fig. 11, "structures build up in the system and grow in size": the density correlation length,
+// the first zero of the radially averaged autocorrelation C(r) of the disk count per cell of
+// cluster_cell diameters (the cells of rate_by_density), linearly interpolated between cell
+// distances; in diameters. C(r) over every periodic displacement (m^4 products, 1e8 at m = 100).
+double density_correlation_length(const Instant& in, double L, double cell, double d) {
+    const auto m = std::max<std::size_t>(3, std::size_t(L / cell));
+    std::vector<double> o(m * m, 0.0);
+    for (const Vec2& q : in.pos) {
+        const auto ix = std::min(m - 1, std::size_t(q.x / L * double(m)));
+        const auto iy = std::min(m - 1, std::size_t(q.y / L * double(m)));
+        o[iy * m + ix] += 1;
+    }
+    const double mean = double(in.pos.size()) / double(m * m);
+    for (double& v : o) v -= mean;
+    const std::size_t rmax = m / 2 + 1;
+    std::vector<double> acc(rmax + 1, 0.0), cnt(rmax + 1, 0.0);
+    for (std::size_t dy = 0; dy < m; ++dy)
+        for (std::size_t dx = 0; dx < m; ++dx) {
+            const double sx = dx <= m / 2 ? double(dx) : double(dx) - double(m), sy = dy <= m / 2 ? double(dy) : double(dy) - double(m);
+            const auto r = std::size_t(std::lround(std::hypot(sx, sy)));
+            if (r > rmax) continue;
+            double sum = 0;
+            for (std::size_t y = 0; y < m; ++y) {
+                const double* a = &o[y * m];
+                const double* b = &o[((y + dy) % m) * m];
+                for (std::size_t x = 0; x < m; ++x) sum += a[x] * b[(x + dx) % m];
+            }
+            acc[r] += sum;
+            cnt[r] += 1;
+        }
+    if (!(acc[0] > 0)) return NAN;
+    const double c0 = acc[0] / cnt[0];
+    double prev = 1;
+    for (std::size_t r = 1; r <= rmax; ++r) {
+        if (cnt[r] == 0) continue;
+        const double c = acc[r] / cnt[r] / c0;
+        if (c <= 0) return (double(r) - 1 + prev / (prev - c)) * cell / d;
+        prev = c;
+    }
+    return NAN;
+}
 
 // Fig. 11: positions coloured by N_c at the paper's times, one colour range for all panels.
 // Sec. 4.2: "in the bright regions in the centers of the clusters the collision frequency is
@@ -798,7 +861,7 @@ void fig11(Result& res, const std::vector<Instant>& instants, const ClusterSpec&
                 lo = std::min(lo, v);
                 hi = std::max(hi, v);
             }
-    std::vector<double> mt, mc, top, ratio;
+    std::vector<double> mt, mc, top, ratio, xi;
     for (const Instant* in : shown) {
         mt.push_back(in->t);
         mc.push_back(in->cn);
@@ -812,6 +875,7 @@ void fig11(Result& res, const std::vector<Instant>& instants, const ClusterSpec&
         sn.add({{"x_over_d", "1", x}, {"y_over_d", "1", y}, {"N_c", "1/s", in->rate}});
         const auto g = rate_by_density(*in, s.L(), s.cluster_cell * s.d, 10);
         top.push_back(double(std::max_element(g.begin(), g.end()) - g.begin() + 1));
+        xi.push_back(density_correlation_length(*in, s.L(), s.cluster_cell * s.d, s.d));
         ratio.push_back(g.back() / in->mean_rate);
     }
     Table& meta = res.table("fig11_selection", "instants of the snapshots, the common colour range, and N_c in the densest tenth");
@@ -819,6 +883,7 @@ void fig11(Result& res, const std::vector<Instant>& instants, const ClusterSpec&
               {"Nc_colour_hi", "1/s", std::vector<double>(mt.size(), hi)}, {"densest_tenth_with_max_Nc", "1", top},
               {"densest_tenth_Nc_over_mean", "1", ratio}});
     report_cluster_centres(res, mt, mc, top, ratio);
+    report_structure_growth(res, mt, xi);
 }
 
 // A run's point JSON holds only what the analysis reads: of the other rule's run the samples
