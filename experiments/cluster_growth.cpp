@@ -523,6 +523,28 @@ void report_elastic_shares(Result& res, const Samples& ls, const std::string& ta
     }
 }
 
+// Fig. 10(b), "for larger times, the number of elastic collisions increases": the TC-elastic
+// share of the pair collisions made after elastic_until (the last sample t <= elastic_until up to
+// the end) over the share made up to it. Above 1: the squares of Fig. 10(b) rise faster than the
+// circles. NaN if the run ends before elastic_until or has no elastic collision by then.
+void report_elastic_increase(Result& res, const Samples& st, double until, double n) {
+    std::size_t u = 0;
+    for (std::size_t i = 1; i < st.ts.size(); ++i)
+        if (st.ts[i] <= until) u = i;
+    const std::size_t e = st.ts.size() - 1;
+    double early = NAN, late = NAN;
+    if (u > 0 && e > u && st.cns[u] > 0 && st.cns[e] > st.cns[u]) {
+        early = st.ecns[u] / st.cns[u];
+        late = (st.ecns[e] - st.ecns[u]) / (st.cns[e] - st.cns[u]);
+    }
+    res.scalar("elastic_share_before_until", early, "1", "TC-elastic share of the pair collisions up to the last sample t <= elastic_until");
+    res.scalar("elastic_share_after_until", late, "1", "TC-elastic share of the pair collisions from that sample to the end");
+    res.scalar("elastic_share_late_over_early", early > 0 ? late / early : NAN, "1",
+               "elastic_share_after_until / elastic_share_before_until: above 1 when elastic collisions increase for t > elastic_until");
+    res.scalar("elastic_share_after_until_collisions", e > u ? 0.5 * (st.cns[e] - st.cns[u]) * n : NAN, "1",
+               "pair collisions after elastic_until (sets the counting error of elastic_share_after_until)");
+}
+
 void fig10(Result& res, const ClusterSpec& s, double t0, const Samples& st, const Samples* other) {
     const std::vector<double> kk = fig10_table(res, st, t0, s.late_slope_from);
     fig10_slopes(res, st.ts, kk, t0, s.samples_per_octave, s.late_slope_from);
@@ -530,6 +552,7 @@ void fig10(Result& res, const ClusterSpec& s, double t0, const Samples& st, cons
     report_elastic_shares(res, st, "", s.tc_both ? "both" : "either", s.elastic_until);
     if (other) report_elastic_shares(res, *other, s.tc_both ? "_either" : "_both", s.tc_both ? "either" : "both", s.elastic_until);
     res.scalar("elastic_per_particle_end", st.ecns.back(), "1", "TC-elastic collisions per particle at the end");
+    report_elastic_increase(res, st, s.elastic_until, double(s.n()));
     res.scalar("C_over_N_eq18_at_0.64s", 4 / (1 - s.r * s.r) * std::log(1 + 0.64 / t0), "1",
                "C/N at 0.64 s if the gas stayed homogeneous: 4/(1-r^2) ln(1 + t/t0)");
 }
@@ -755,8 +778,71 @@ void report_powerlaw_onset(Result& res, const std::vector<Instant>& instants) {
                "share of the instants with C/N > 70 where Eq. (22) fits better than Eq. (21)");
 }
 
+// Fig. 11's "grow in size": the density correlation length at each snapshot, and the share of
+// successive snapshots at which it is larger than at the one before.
+void report_structure_growth(Result& res, const std::vector<double>& mt, const std::vector<double>& xi) {
+    int pairs = 0, growing = 0;
+    for (std::size_t k = 1; k < xi.size(); ++k) {
+        if (!std::isfinite(xi[k]) || !std::isfinite(xi[k - 1])) continue;
+        ++pairs;
+        if (xi[k] > xi[k - 1]) ++growing;
+    }
+    res.scalar("density_corr_length_growing_share", pairs ? double(growing) / pairs : NAN, "1",
+               "share of successive Fig. 11 snapshots whose density correlation length exceeds the previous one's");
+    res.scalar("density_corr_length_pairs", double(pairs), "1", "number of such snapshot pairs");
+    res.scalar("density_corr_length_last_over_first", xi.size() > 1 ? xi.back() / xi.front() : NAN, "1",
+               "density correlation length at the last snapshot over that at the first");
+    for (std::size_t k = 0; k < mt.size(); ++k)
+        res.scalar("density_corr_length_t" + number_text(mt[k]), xi[k], "1",
+                   "first zero of the density autocorrelation (cells of cluster_cell d), in d, at this snapshot");
+    Table& t = res.table("structure_growth", "density correlation length at the Fig. 11 snapshots");
+    t.add({{"t", "s", mt}, {"corr_length_over_d", "1", xi}});
+}
+
 // Is the instant at t the Fig. 11 snapshot time tq?
 bool snapshot_at(double t, double tq) { return std::abs(t / tq - 1) < 1e-9; }
+
+// Fig. 11, "structures build up in the system and grow in size": the density correlation length,
+// the first zero of the radially averaged autocorrelation C(r) of the disk count per cell of
+// cluster_cell diameters (the cells of rate_by_density), linearly interpolated between cell
+// distances; in diameters. C(r) over every periodic displacement (m^4 products, 1e8 at m = 100).
+double density_correlation_length(const Instant& in, double L, double cell, double d) {
+    const auto m = std::max<std::size_t>(3, std::size_t(L / cell));
+    std::vector<double> o(m * m, 0.0);
+    for (const Vec2& q : in.pos) {
+        const auto ix = std::min(m - 1, std::size_t(q.x / L * double(m)));
+        const auto iy = std::min(m - 1, std::size_t(q.y / L * double(m)));
+        o[iy * m + ix] += 1;
+    }
+    const double mean = double(in.pos.size()) / double(m * m);
+    for (double& v : o) v -= mean;
+    const std::size_t rmax = m / 2 + 1;
+    std::vector<double> acc(rmax + 1, 0.0), cnt(rmax + 1, 0.0);
+    for (std::size_t dy = 0; dy < m; ++dy)
+        for (std::size_t dx = 0; dx < m; ++dx) {
+            const double sx = dx <= m / 2 ? double(dx) : double(dx) - double(m), sy = dy <= m / 2 ? double(dy) : double(dy) - double(m);
+            const auto r = std::size_t(std::lround(std::hypot(sx, sy)));
+            if (r > rmax) continue;
+            double sum = 0;
+            for (std::size_t y = 0; y < m; ++y) {
+                const double* a = &o[y * m];
+                const double* b = &o[((y + dy) % m) * m];
+                for (std::size_t x = 0; x < m; ++x) sum += a[x] * b[(x + dx) % m];
+            }
+            acc[r] += sum;
+            cnt[r] += 1;
+        }
+    if (!(acc[0] > 0)) return NAN;
+    const double c0 = acc[0] / cnt[0];
+    double prev = 1;
+    for (std::size_t r = 1; r <= rmax; ++r) {
+        if (cnt[r] == 0) continue;
+        const double c = acc[r] / cnt[r] / c0;
+        if (c <= 0) return (double(r) - 1 + prev / (prev - c)) * cell / d;
+        prev = c;
+    }
+    return NAN;
+}
 
 // Fig. 11: positions coloured by N_c at the paper's times, one colour range for all panels.
 // Sec. 4.2: "in the bright regions in the centers of the clusters the collision frequency is
@@ -775,7 +861,7 @@ void fig11(Result& res, const std::vector<Instant>& instants, const ClusterSpec&
                 lo = std::min(lo, v);
                 hi = std::max(hi, v);
             }
-    std::vector<double> mt, mc, top, ratio;
+    std::vector<double> mt, mc, top, ratio, xi;
     for (const Instant* in : shown) {
         mt.push_back(in->t);
         mc.push_back(in->cn);
@@ -789,6 +875,7 @@ void fig11(Result& res, const std::vector<Instant>& instants, const ClusterSpec&
         sn.add({{"x_over_d", "1", x}, {"y_over_d", "1", y}, {"N_c", "1/s", in->rate}});
         const auto g = rate_by_density(*in, s.L(), s.cluster_cell * s.d, 10);
         top.push_back(double(std::max_element(g.begin(), g.end()) - g.begin() + 1));
+        xi.push_back(density_correlation_length(*in, s.L(), s.cluster_cell * s.d, s.d));
         ratio.push_back(g.back() / in->mean_rate);
     }
     Table& meta = res.table("fig11_selection", "instants of the snapshots, the common colour range, and N_c in the densest tenth");
@@ -796,6 +883,7 @@ void fig11(Result& res, const std::vector<Instant>& instants, const ClusterSpec&
               {"Nc_colour_hi", "1/s", std::vector<double>(mt.size(), hi)}, {"densest_tenth_with_max_Nc", "1", top},
               {"densest_tenth_Nc_over_mean", "1", ratio}});
     report_cluster_centres(res, mt, mc, top, ratio);
+    report_structure_growth(res, mt, xi);
 }
 
 // A run's point JSON holds only what the analysis reads: of the other rule's run the samples

@@ -671,6 +671,44 @@ void add_ed_cooling(Result& res, const CoolingSpec& c, const std::vector<Trace>&
     hcs_a2(res, eds, c, "ed");
 }
 
+// Sec. 3.2, "more and more grazing collisions occur with increasing simulation time": the grazing
+// ratio of every window with its counting error (Poisson: the relative error of a ratio of two
+// bin-group counts is sqrt(1/C_hi + 1/C_lo); the window total cancels), and the share of
+// successive window pairs in which it does not fall by more than 3 combined standard errors.
+void add_grazing_trend(Result& res, const Trace& ed) {
+    std::vector<double> ratio, err;
+    for (const auto& w : ed.pbd) {
+        double hi = 0, lo = 0, nhi = 0, nlo = 0;
+        for (std::size_t b = 0; b < w.counts.size() && b < ed.pbd_centres.size(); ++b) {
+            const double x = ed.pbd_centres[b];
+            if (x >= 0.8 && x <= 1.0) { hi += double(w.counts[b]); ++nhi; }
+            if (x >= 0.0 && x <= 0.2) { lo += double(w.counts[b]); ++nlo; }
+        }
+        const double r = (hi > 0 && lo > 0) ? (hi / nhi) / (lo / nlo) : NAN;
+        ratio.push_back(r);
+        err.push_back(r * std::sqrt(1 / hi + 1 / lo));
+    }
+    Table& t = res.table("impact_parameter_grazing", "grazing ratio P(b/d>0.8)/P(b/d<0.2) of the ED run per window, with its counting error");
+    std::vector<double> b;
+    for (const auto& w : ed.pbd) b.push_back(w.t_begin);
+    t.add({{"t_begin", "s", b}, {"grazing_ratio", "1", ratio}, {"grazing_ratio_err", "1", err}});
+    int pairs = 0, rising = 0;
+    double min_z = NAN;
+    for (std::size_t k = 1; k < ratio.size(); ++k) {
+        if (!std::isfinite(ratio[k]) || !std::isfinite(ratio[k - 1])) continue;
+        const double z = (ratio[k] - ratio[k - 1]) / std::hypot(err[k], err[k - 1]);
+        ++pairs;
+        if (z >= -3) ++rising;
+        min_z = std::isnan(min_z) ? z : std::min(min_z, z);
+    }
+    res.scalar("pbd_grazing_rising_share", pairs ? double(rising) / pairs : NAN, "1",
+               "share of successive P(b/d) windows whose grazing ratio does not fall by more than 3 combined standard errors");
+    res.scalar("pbd_grazing_rising_pairs", double(pairs), "1", "number of successive window pairs judged");
+    res.scalar("pbd_grazing_step_min_z", min_z, "1", "smallest change of the grazing ratio between successive windows, in combined standard errors");
+    res.scalar("pbd_grazing_ratio_last_over_first", ratio.empty() ? NAN : ratio.back() / ratio.front(), "1",
+               "grazing ratio of the last window over the first (from the counts)");
+}
+
 // Fig. 3: P(b/d) of the ED run per time window, and grazing over central collisions in the first
 // and last window.
 void add_impact_parameter(Result& res, const Trace& ed) {
@@ -690,6 +728,7 @@ void add_impact_parameter(Result& res, const Trace& ed) {
     res.scalar("pbd_grazing_ratio_first", grazing_ratio(ed.pbd.front(), ed.pbd_centres), "1", "P(b/d>0.8)/P(b/d<0.2), first window, ED");
     res.scalar("pbd_grazing_ratio_last", grazing_ratio(ed.pbd.back(), ed.pbd_centres), "1", "P(b/d>0.8)/P(b/d<0.2), last window, ED");
     res.scalar("pbd_collisions_first", double(ed.pbd.front().total), "1", "collisions in the first window");
+    add_grazing_trend(res, ed);
 }
 
 // Figs. 6 and 7: g(r/d) and S(k) of one method at the snapshot times.
@@ -847,6 +886,64 @@ void add_cell_imprint(Result& res, const CoolingSpec& c, const Setup& s, const s
     res.scalar("dsmc_Sk_cell_imprint_over_ed", mean_sd(imprint)[0] / mean_sd(imprint_ed)[0], "1", "DSMC's contrast at the cell shell over ED's there (1: no imprint)");
 }
 
+// Sec. 3.1, "DSMC dissipates more energy than ED as soon as the number of central collisions is
+// overestimated": the energy lost per collision, -ln(K(b)/K(a)) / ((1 - r^2)/2 (C/N(b) - C/N(a)))
+// (1: a Maxwellian gas under molecular chaos at the global temperature), DSMC over ED, per seed in
+// windows of t/t0 (K and C/N interpolated linearly in t), then the seed mean of each window
+// (scripts/studies/cooling_loss_per_collision.md). From 2 t0 on, where ED's P(b/d) tilts towards
+// grazing collisions (Fig. 3), the smallest of those window ratios and the share of successive
+// windows in which it rises.
+void add_loss_per_collision(Result& res, const CoolingSpec& c, const std::vector<Trace>& eds, const std::vector<Trace>& dss) {
+    const double t0 = c.t0(), f = (1 - c.r * c.r) / 2;
+    const auto at = [](const std::vector<double>& t, const std::vector<double>& v, double x) {
+        for (std::size_t i = 1; i < t.size(); ++i)
+            if (t[i] >= x) return v[i - 1] + (v[i] - v[i - 1]) * (x - t[i - 1]) / (t[i] - t[i - 1]);
+        return double(NAN);
+    };
+    const auto loss = [&](const Trace& tr, double a, double b) {
+        const auto k = k_ratio(tr);
+        return -std::log(at(tr.t, k, b * t0) / at(tr.t, k, a * t0)) / (f * (at(tr.t, tr.cn, b * t0) - at(tr.t, tr.cn, a * t0)));
+    };
+    const std::vector<double> edges = {0.1, 0.5, 1, 2, 5, 10, 20, 50};
+    std::vector<double> lo, hi, ratio, sd;
+    for (std::size_t w = 0; w + 1 < edges.size(); ++w) {
+        std::vector<double> per_seed;
+        for (std::size_t k = 0; k < eds.size() && k < dss.size(); ++k) {
+            const double q = loss(dss[k], edges[w], edges[w + 1]) / loss(eds[k], edges[w], edges[w + 1]);
+            if (std::isfinite(q)) per_seed.push_back(q);
+        }
+        if (per_seed.empty()) continue;
+        const auto ms = mean_sd(per_seed);
+        lo.push_back(edges[w]);
+        hi.push_back(edges[w + 1]);
+        ratio.push_back(ms[0]);
+        sd.push_back(ms[1]);
+    }
+    Table& t = res.table("loss_per_collision", "energy lost per collision, DSMC over ED, windows of t/t0 (mean over seeds)");
+    t.add({{"t_over_t0_begin", "1", lo}, {"t_over_t0_end", "1", hi}, {"dsmc_over_ed", "1", ratio}, {"dsmc_over_ed_sd", "1", sd}});
+    double min_ratio = NAN, min_sd = NAN;
+    int pairs = 0, rising = 0;
+    for (std::size_t w = 0; w < ratio.size(); ++w) {
+        if (lo[w] < 2) continue;
+        if (std::isnan(min_ratio) || ratio[w] < min_ratio) {
+            min_ratio = ratio[w];
+            min_sd = sd[w];
+        }
+        if (w > 0 && lo[w - 1] >= 2) {
+            ++pairs;
+            if (ratio[w] > ratio[w - 1]) ++rising;
+        }
+    }
+    res.scalar("loss_per_collision_dsmc_over_ed_min_after_2t0", min_ratio, "1",
+               "smallest DSMC/ED energy loss per collision over the windows 2-5, 5-10, 10-20, 20-50 t0 (those inside the run), seed mean");
+    res.scalar("loss_per_collision_dsmc_over_ed_min_after_2t0_sd", min_sd, "1", "its seed standard deviation (NaN for one seed)");
+    res.scalar("loss_per_collision_dsmc_over_ed_2_5t0", ratio.size() > 3 && lo[3] == 2 ? ratio[3] : NAN, "1",
+               "DSMC/ED energy loss per collision over 2-5 t0, seed mean");
+    res.scalar("loss_per_collision_ratio_rising_share", pairs ? double(rising) / pairs : NAN, "1",
+               "share of successive windows from 2 t0 on in which DSMC/ED energy loss per collision rises");
+    res.scalar("loss_per_collision_ratio_rising_pairs", double(pairs), "1", "number of such window pairs");
+}
+
 // Figs. 2, 6 and 7 of DSMC, and DSMC against ED.
 void add_dsmc(Result& res, const CoolingSpec& c, const Setup& s, const std::vector<Trace>& eds, const std::vector<Trace>& dss) {
     const Trace& ds = dss.front();
@@ -857,6 +954,7 @@ void add_dsmc(Result& res, const CoolingSpec& c, const Setup& s, const std::vect
     res.scalar("dsmc_eq18_max_dev_2t0", max_dev(ds, t0, 2 * t0), "1", "max |K/K_18 - 1| for t <= 2 t0, DSMC");
     add_dsmc_kinetics(res, dss, c);
     add_ed_dsmc_energy(res, eds, dss, t0, c.departure_level);
+    add_loss_per_collision(res, c, eds, dss);
     const auto& g_last = ds.snaps.back().g;
     res.scalar("dsmc_g_inside_contact_mean", mean_over(g_last, ds.g_r, 0.0, 0.9), "1", "mean g(r/d < 0.9), last snapshot, DSMC (no exclusion hole: about 1)");
     res.scalar("dsmc_g_contact_peak", max_over(g_last, ds.g_r, 0.9, 1.1) / mean_over(g_last, ds.g_r, 2.5, 5.0), "1",

@@ -584,6 +584,65 @@ void report_tc_spread(Result& res, const ParameterStudySpec& s, const Fig9& f) {
     res.scalar("tc_small_elastic_fraction_max", el_max, "1", "largest TC-elastic share of all collisions at the end among the runs with t_c <= tc_small_max");
 }
 
+// Sec. 4.1, "for strong dissipation one observes jumps in C/N - meaning that a few particles
+// perform many collisions without affecting the global energy too much": the collision rate per
+// particle between successive samples, dC/N/dt, over sqrt(K/K0) (a homogeneous gas collides at a
+// rate proportional to its thermal speed), and its largest ratio to the median of the 16
+// neighbouring intervals (8 on each side): 1 for a smooth C/N(t), a jump makes it several.
+double cn_jump_factor(const Trace& tr) {
+    std::vector<double> rate;
+    for (std::size_t i = 1; i < tr.t.size(); ++i) {
+        const double dt = tr.t[i] - tr.t[i - 1], km = std::sqrt(tr.k(i) * tr.k(i - 1)) / tr.k(0);
+        rate.push_back(dt > 0 && km > 0 ? (tr.cn[i] - tr.cn[i - 1]) / dt / std::sqrt(km) : NAN);
+    }
+    double best = NAN;
+    for (std::size_t i = 0; i < rate.size(); ++i) {
+        if (!std::isfinite(rate[i])) continue;
+        std::vector<double> nb;
+        for (std::size_t j = i >= 8 ? i - 8 : 0; j < std::min(rate.size(), i + 9); ++j)
+            if (j != i && std::isfinite(rate[j])) nb.push_back(rate[j]);
+        if (nb.size() < 8) continue;
+        const double f = rate[i] / median_of(nb);
+        if (std::isfinite(f)) best = std::isnan(best) ? f : std::max(best, f);
+    }
+    return best;
+}
+
+// Jump factors of every run of Figs. 8 and 9 (seed mean), and per seed the largest over the
+// strong-dissipation runs of Fig. 8 (r <= 0.6) against the largest over the weak ones (r >= 0.9,
+// Sec. 3.2's "weak dissipation"): their paired difference over its standard error.
+void report_cn_jumps(Result& res, const ParameterStudySpec& s, const Sweep& sw) {
+    std::vector<double> pr, ptc, mean, sem;
+    for (std::size_t p = 0; p < sw.points.size(); ++p) {
+        std::vector<double> f;
+        for (const Trace& tr : sw.traces[p]) f.push_back(cn_jump_factor(tr));
+        pr.push_back(sw.points[p].r);
+        ptc.push_back(sw.points[p].t_c);
+        mean.push_back(mean_of(f));
+        sem.push_back(sem_of(f));
+    }
+    std::vector<double> strong, weak, diff;
+    for (long k = 0; k < s.seeds; ++k) {
+        double js = NAN, jw = NAN;
+        for (std::size_t a = 0; a < s.fig8_r.size(); ++a) {
+            const double f = cn_jump_factor(sw.traces[sw.fig8_idx[a]][std::size_t(k)]);
+            if (!std::isfinite(f)) continue;
+            if (s.fig8_r[a] <= 0.6) js = std::isnan(js) ? f : std::max(js, f);
+            if (s.fig8_r[a] >= 0.9) jw = std::isnan(jw) ? f : std::max(jw, f);
+        }
+        strong.push_back(js);
+        weak.push_back(jw);
+        diff.push_back(js - jw);
+    }
+    res.scalar("cn_jump_strong_mean", mean_of(strong), "1", "seed mean of the largest C/N jump factor over the Fig. 8 runs with r <= 0.6");
+    res.scalar("cn_jump_weak_mean", mean_of(weak), "1", "seed mean of the largest C/N jump factor over the Fig. 8 runs with r >= 0.9");
+    res.scalar("cn_jump_strong_minus_weak_z", mean_of(diff) / sem_of(diff), "1",
+               "seed mean of (strong - weak) jump factor over its standard error (paired by seed)");
+    res.scalar("cn_jump_strong_over_weak", mean_of(strong) / mean_of(weak), "1", "cn_jump_strong_mean / cn_jump_weak_mean");
+    Table& t = res.table("cn_jumps", "largest jump of the normalised collision rate (dC/N/dt)/sqrt(K/K0) over its 16 neighbours, per point (seed mean)");
+    t.add({{"r", "1", pr}, {"t_c", "s", ptc}, {"jump_factor", "1", mean}, {"jump_factor_sem", "1", sem}});
+}
+
 Result run(const RunContext& ctx) {
     const auto s = read_spec<ParameterStudySpec>(ctx.params);
     Sweep sw = run_sweep(ctx, s);
@@ -596,6 +655,7 @@ Result run(const RunContext& ctx) {
     report_fig9_summary(res, f9);
     report_tc_late(res, f9);
     report_tc_spread(res, s, f9);
+    report_cn_jumps(res, s, sw);
     return res;
 }
 
