@@ -135,7 +135,7 @@ struct CommonFlags {
 int dry_run(const std::string& name, const RunOptions& o) {
     resolve_parameters(name, o);
     sweep_plan(name, o);
-    load_claims(project_root() / "expected" / (name + ".toml"), name);
+    experiment_claims(name);
     std::printf("%s: input accepted (%s scale); --dry-run: nothing run\n", name.c_str(), to_string(o.scale));
     return 0;
 }
@@ -176,7 +176,7 @@ int run_all(const RunOptions& base) {
     // Bad input anywhere stops `all` before the first run, not after an hour of runs.
     for (const auto& e : experiment_registry()) {
         resolve_parameters(e.name, base);
-        load_claims(project_root() / "expected" / (e.name + ".toml"), e.name);
+        experiment_claims(e.name);
     }
     int rc = 0;
     VerdictCounts totals;

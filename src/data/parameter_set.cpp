@@ -160,9 +160,10 @@ ParameterSet ParameterSet::load(const std::filesystem::path& file, Scale scale) 
     set.file_ = where;
     if (!root.is_table()) throw InputError(where + ": not a table of keys");
     for (const auto& [key, v] : root.as_table())
-        if (key != "name" && key != "paper" && key != "description" && key != "figure" && key != "parameters")
+        if (key != "name" && key != "paper" && key != "description" && key != "figure" && key != "parameters" &&
+            key != "outputs")
             throw InputError(where + " (line " + std::to_string(v.location().line()) + "): unknown key '" + key +
-                             "'; allowed: name, paper, description, [[figure]], [parameters.<name>]");
+                             "'; allowed: name, paper, description, [[figure]], [parameters.<name>], [outputs]");
     if (!root.contains("parameters") || !root.at("parameters").is_table())
         throw InputError(where + ": missing [parameters] table");
     std::vector<std::pair<std::uint_least32_t, Parameter>> ordered;

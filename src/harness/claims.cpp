@@ -84,7 +84,8 @@ std::string VerdictCounts::text() const {
            " DEVIATION, " + std::to_string(skipped) + " skipped";
 }
 
-std::vector<Claim> load_claims(const std::filesystem::path& file, const std::string& experiment) {
+std::vector<Claim> load_claims(const std::filesystem::path& file, const std::string& experiment,
+                               const DeclaredOutputs* outputs) {
     const std::string where = file.string();
     if (!std::filesystem::exists(file)) throw InputError(where + ": expected-claims file is missing");
     std::vector<Claim> claims;
@@ -126,6 +127,10 @@ std::vector<Claim> load_claims(const std::filesystem::path& file, const std::str
             if (k.measured.empty() || k.measured.find_first_of(" \t\n") != std::string::npos)
                 throw InputError(claim_where + line(c.at("measured")) + ": measured '" + k.measured +
                                  "' is not a scalar name (non-empty, no spaces)");
+            if (outputs && outputs->declared() && !outputs->declares_scalar(k.measured))
+                throw InputError(claim_where + line(c.at("measured")) + ": measured '" + k.measured +
+                                 "' is not an output of " + experiment + " (experiments/" + experiment +
+                                 ".toml [outputs] declares no such scalar)");
             for (const auto& [key, val] : {std::pair{"rel_tol", k.rel_tol}, std::pair{"abs_tol", k.abs_tol}})
                 if (val && !(*val >= 0 && std::isfinite(*val)))
                     throw InputError(claim_where + line(c.at(key)) + ": " + key + " = " + num(*val) +

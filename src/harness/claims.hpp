@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "data/parameter_set.hpp"
+#include "harness/declared_outputs.hpp"
 
 namespace granrepro {
 
@@ -69,8 +70,10 @@ struct VerdictCounts {
 
 // Throws InputError naming the file, the claim and the key for a malformed claim, including a
 // known deviation without a band (or without its reason) at a scale where it applies, and a
-// missing or unknown tolerance_kind / deviation_band_kind.
-std::vector<Claim> load_claims(const std::filesystem::path& file, const std::string& experiment);
+// missing or unknown tolerance_kind / deviation_band_kind, and, given the experiment's declared
+// outputs, a claim whose measured scalar is not among them.
+std::vector<Claim> load_claims(const std::filesystem::path& file, const std::string& experiment,
+                               const DeclaredOutputs* outputs = nullptr);
 // scalars: name -> value (null or NaN for a measurement that could not be made).
 std::vector<ClaimResult> evaluate_claims(const std::vector<Claim>& claims,
                                          const nlohmann::json& scalars, Scale scale);

@@ -8,6 +8,7 @@
 
 #include "data/parameter_set.hpp"
 #include "data/result.hpp"
+#include "harness/declared_outputs.hpp"
 
 namespace granrepro {
 
@@ -56,6 +57,7 @@ struct FigureInfo {
 struct ExperimentInfo {
     std::string name, paper, description;
     std::vector<FigureInfo> figures;
+    DeclaredOutputs outputs; // [outputs]: every scalar and table a run writes (declared_outputs.hpp)
     std::filesystem::path file;
     static ExperimentInfo load(const std::filesystem::path& file); // throws InputError
 };

@@ -42,6 +42,23 @@ ExperimentInfo ExperimentInfo::load(const std::filesystem::path& file) {
         if (root.contains("figure"))
             for (const auto& f : toml::find<toml::array>(root, "figure"))
                 info.figures.push_back({toml::find<std::string>(f, "id"), toml::find<std::string>(f, "caption")});
+        if (root.contains("outputs")) {
+            const toml::value& o = root.at("outputs");
+            for (const auto& [key, v] : o.as_table())
+                if (key != "scalars" && key != "tables")
+                    throw InputError(file.string() + " (line " + std::to_string(v.location().line()) +
+                                     "): [outputs] has unknown key '" + key + "'; allowed: scalars, tables");
+            for (auto [key, list] : {std::pair{"scalars", &info.outputs.scalars}, std::pair{"tables", &info.outputs.tables}}) {
+                if (!o.contains(key)) continue;
+                for (const auto& v : toml::find<toml::array>(o, key)) {
+                    const std::string pattern = toml::get<std::string>(v);
+                    if (const std::string why = output_pattern_error(pattern); !why.empty())
+                        throw InputError(file.string() + " (line " + std::to_string(v.location().line()) + "): [outputs] " +
+                                         key + " '" + pattern + "' holds " + why + "; a name, <n> standing for a number");
+                    list->push_back(pattern);
+                }
+            }
+        }
         return info;
     } catch (const InputError&) {
         throw;

@@ -45,10 +45,16 @@ void remove_figure(const std::filesystem::path& dir, const std::string& id) {
 
 } // namespace
 
-std::string missing_table(const std::string& script, const std::filesystem::path& tables_dir) {
+std::vector<std::string> literal_tables(const std::string& script) {
     static const std::regex named(R"(datadir\.'/([A-Za-z0-9_]+)\.tsv')");
-    for (std::sregex_iterator it(script.begin(), script.end(), named), end; it != end; ++it)
-        if (!std::filesystem::exists(tables_dir / ((*it)[1].str() + ".tsv"))) return (*it)[1].str();
+    std::vector<std::string> names;
+    for (std::sregex_iterator it(script.begin(), script.end(), named), end; it != end; ++it) names.push_back((*it)[1].str());
+    return names;
+}
+
+std::string missing_table(const std::string& script, const std::filesystem::path& tables_dir) {
+    for (const auto& name : literal_tables(script))
+        if (!std::filesystem::exists(tables_dir / (name + ".tsv"))) return name;
     return "";
 }
 

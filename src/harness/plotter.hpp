@@ -5,6 +5,7 @@
 #pragma once
 #include <filesystem>
 #include <string>
+#include <vector>
 
 namespace granrepro {
 
@@ -18,6 +19,8 @@ enum class RenderOutcome { Clean, Warned, Failed, Skipped };
 // The first table that `script` names literally (datadir.'/<name>.tsv') and tables_dir lacks;
 // "" if none. Names the script builds at run time are not checked.
 std::string missing_table(const std::string& script, const std::filesystem::path& tables_dir);
+// The tables a script names literally (datadir.'/<name>.tsv'), in order of appearance.
+std::vector<std::string> literal_tables(const std::string& script);
 
 // The gnuplot assignments of the parameters that `script` declares in a line
 // "# Parameters set by granrepro: a, b", with their values in the run's summary.json: a number as

@@ -63,6 +63,7 @@ ParameterSet resolve_parameters(const std::string& name, const RunOptions& opt) 
 
 namespace {
 fs::path expected_file(const std::string& name) { return project_root() / "expected" / (name + ".toml"); }
+
 bool makes(const ExperimentInfo& info, const std::string& figure) {
     return std::any_of(info.figures.begin(), info.figures.end(), [&](const auto& f) { return f.id == figure; });
 }
@@ -229,7 +230,7 @@ int run_experiment(const std::string& name, const RunOptions& opt, VerdictCounts
     for (const auto& f : opt.figures)
         if (!makes(info, f)) throw InputError("figure " + f + " is not made by experiment " + name);
     // Read the claims before spending time on the run: a broken file is an input error.
-    const auto claims = load_claims(expected_file(name), name);
+    const auto claims = load_claims(expected_file(name), name, &info.outputs);
     SweepPlan plan = sweep_plan(name, opt);
     ensure_writable_directory(opt.out, "--out");
 
@@ -320,6 +321,20 @@ int run_experiment(const std::string& name, const RunOptions& opt, VerdictCounts
                                                 : "; no checkpoint had been written yet, the rerun starts afresh"));
     }
     Result& result = *ran;
+    // experiments/<name>.toml [outputs] must cover what the run wrote, since claims and plot
+    // scripts are checked against it when they load: a code change that writes a name it does
+    // not declare fails here (in CI's quick runs), before anything is written; the checkpoint
+    // stays, so the rerun after declaring it resumes.
+    if (info.outputs.declared()) {
+        std::string undeclared;
+        for (const auto& sc : result.scalars)
+            if (!info.outputs.declares_scalar(sc.name)) undeclared += " scalar " + sc.name;
+        for (const auto& t : result.tables)
+            if (!info.outputs.declares_table(t.name)) undeclared += " table " + t.name;
+        if (!undeclared.empty())
+            throw std::runtime_error(name + " wrote outputs that " + info.file.string() +
+                                     " [outputs] does not declare (declare them, <n> for a number):" + undeclared);
+    }
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     // The CPU time lets `bench sweep` tell a run's serial part from time lost to other processes.
     run_log().line("run finished: wall time " + std::to_string(wall) + " s, CPU " +
@@ -440,9 +455,14 @@ SweepPlan sweep_plan(const std::string& name, const RunOptions& opt) {
 
 bool has_results(const std::string& name, const fs::path& out) { return fs::exists(out / name / "summary.json"); }
 
+std::vector<Claim> experiment_claims(const std::string& name) {
+    const ExperimentInfo info = experiment_info(name);
+    return load_claims(expected_file(name), name, &info.outputs);
+}
+
 int check_experiment(const std::string& name, const fs::path& out, const CheckOptions& opt, VerdictCounts* totals) {
     find_experiment(name);
-    const auto claims = load_claims(expected_file(name), name);
+    const auto claims = experiment_claims(name);
     const fs::path summary_path = out / name / "summary.json";
     if (!fs::exists(summary_path))
         throw InputError("check " + name + ": no results in " + (out / name).string() + "; run `granrepro " +

@@ -38,6 +38,8 @@ SweepPlan sweep_plan(const std::string& name, const RunOptions& opt);
 
 const Experiment& find_experiment(const std::string& name);          // throws InputError
 ExperimentInfo experiment_info(const std::string& name);
+// expected/<name>.toml, each claim's measured scalar checked against the declared outputs.
+std::vector<Claim> experiment_claims(const std::string& name);
 // The experiment that makes figure `id`; throws InputError listing the known figures.
 std::string experiment_of_figure(const std::string& id);
 // Resolves parameters (scale, --set) and runs the experiment's validate(): used by the run and

@@ -1,0 +1,91 @@
+// Declared outputs (issue 28): the pattern matcher, and the contract between experiments/*.toml
+// [outputs], the claims of expected/*.toml and the tables the plot scripts name literally.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "core/input_error.hpp"
+#include "harness/claims.hpp"
+#include "harness/declared_outputs.hpp"
+#include "harness/experiment.hpp"
+#include "harness/plotter.hpp"
+#include "harness/runner.hpp"
+
+using namespace granrepro;
+namespace fs = std::filesystem;
+
+TEST(DeclaredOutputs, NumberPlaceholderMatchesNumbersOnly) {
+    EXPECT_TRUE(matches_output_pattern("v_crit_kN<n>", "v_crit_kN200"));
+    EXPECT_TRUE(matches_output_pattern("v_crit_kN<n>", "v_crit_kN2e+05"));
+    EXPECT_TRUE(matches_output_pattern("series_k<n>_e<n>_fast", "series_k2000_e0.85_fast"));
+    EXPECT_TRUE(matches_output_pattern("rise_z_vx<n>", "rise_z_vx0.1"));
+    EXPECT_TRUE(matches_output_pattern("t_col", "t_col"));
+    EXPECT_FALSE(matches_output_pattern("v_crit_kN<n>", "v_crit_kN"));       // <n> is one character or more
+    EXPECT_FALSE(matches_output_pattern("v_crit_kN<n>", "v_crit_kNabc"));    // not a number
+    EXPECT_FALSE(matches_output_pattern("v_crit_kN<n>", "v_crit_kN200_x"));  // the whole name
+    EXPECT_FALSE(matches_output_pattern("rise_z_vx<n>", "rise_z_pipe_vx0.1"));
+    EXPECT_FALSE(matches_output_pattern("t_col", "t_col_k200"));
+    EXPECT_FALSE(matches_output_pattern("t_col", "t_co"));
+}
+
+TEST(DeclaredOutputs, MalformedPatternsAreNamed) {
+    EXPECT_EQ(output_pattern_error("v_<n>"), "");
+    EXPECT_NE(output_pattern_error(""), "");
+    EXPECT_NE(output_pattern_error("v_<k>"), "");
+    EXPECT_NE(output_pattern_error("v_<n"), "");
+    EXPECT_NE(output_pattern_error("a b"), "");
+    EXPECT_NE(output_pattern_error("tables/x"), "");
+}
+
+// Every experiment declares its outputs, and every claim of expected/ names a declared scalar:
+// experiment_claims() refuses the file otherwise (the --dry-run path).
+TEST(DeclaredOutputs, EveryClaimNamesADeclaredScalar) {
+    for (const auto& e : experiment_registry()) {
+        const ExperimentInfo info = experiment_info(e.name);
+        EXPECT_TRUE(info.outputs.declared()) << e.name;
+        EXPECT_NO_THROW(experiment_claims(e.name)) << e.name;
+    }
+}
+
+// A claim naming a quantity the experiment does not make is refused when the claims load, with
+// the file, the claim and its line.
+TEST(DeclaredOutputs, AnUndeclaredClaimIsRefusedAtLoad) {
+    const fs::path file = fs::temp_directory_path() / ("declared-outputs-" + std::to_string(::getpid()) + ".toml");
+    std::ofstream(file) << "experiment = \"brake-failure\"\n\n[[claim]]\nid = \"typo\"\nstatement = \"s\"\n"
+                           "source = \"s\"\nmeasured = \"v_crit_typo\"\npaper = 1.0\nrel_tol = 0.1\n"
+                           "tolerance_reason = \"r\"\ntolerance_kind = \"paper_precision\"\n";
+    const ExperimentInfo info = experiment_info("brake-failure");
+    try {
+        load_claims(file, "brake-failure", &info.outputs);
+        ADD_FAILURE() << "an undeclared measured name was accepted";
+    } catch (const InputError& e) {
+        const std::string what = e.what();
+        EXPECT_NE(what.find(file.string()), std::string::npos) << what;
+        EXPECT_NE(what.find("claim typo"), std::string::npos) << what;
+        EXPECT_NE(what.find("(line 7)"), std::string::npos) << what;
+        EXPECT_NE(what.find("v_crit_typo"), std::string::npos) << what;
+    }
+    EXPECT_NO_THROW(load_claims(file, "brake-failure")); // without declarations: only the claim's own form
+    fs::remove(file);
+}
+
+// Every table a plot script names literally is declared by the experiment that makes the figure.
+TEST(DeclaredOutputs, EveryLiteralPlotTableIsDeclared) {
+    int checked = 0;
+    for (const auto& e : experiment_registry()) {
+        const ExperimentInfo info = experiment_info(e.name);
+        for (const auto& f : info.figures) {
+            std::ifstream in(project_root() / "plots" / (f.id + ".gp"));
+            std::stringstream text;
+            text << in.rdbuf();
+            for (const auto& t : literal_tables(text.str())) {
+                EXPECT_TRUE(info.outputs.declares_table(t)) << f.id << ".gp names table " << t << ", which "
+                                                            << e.name << " does not declare";
+                ++checked;
+            }
+        }
+    }
+    EXPECT_GT(checked, 10);
+}
