@@ -10,8 +10,10 @@ import h5py
 import numpy as np
 
 SCHEMA = "granrepro-result"
-SCHEMA_VERSION = 2  # the version this reader's writer emits
-READS_VERSIONS = (1, 2)  # 1: before the content hashes (summary_json_hash, data_h5_hash)
+SCHEMA_VERSION = 3  # the version this reader's writer emits
+# 1: before the content hashes (summary_json_hash, data_h5_hash); 2: before the stored sweep
+# points (/points) and the whole run's totals (total_wall_time_s, total_cpu_time_s)
+READS_VERSIONS = (1, 2, 3)
 
 
 class Table(dict):
@@ -54,6 +56,10 @@ class Run:
     parameters: dict[str, Quantity] = field(default_factory=dict)
     claims: list[dict] = field(default_factory=list)
     provenance: dict = field(default_factory=dict)
+    # Schema 3: every sweep point (data.h5 /points/records): dicts with "sweep", "point",
+    # "inputs" (fingerprint), "resumed", "persisted", "cost" {cpu_s, wall_s, started_unix, part,
+    # rank} and "outcome" (the point's JSON). Empty for files written before schema 3.
+    points: list[dict] = field(default_factory=list)
 
     def value(self, scalar: str) -> float:
         return self.scalars[scalar].value
@@ -132,6 +138,8 @@ def load(out_dir: str, tables=None) -> Run:
             run.tables[tname] = t
         if "provenance" in f:
             run.provenance = _attrs(f["provenance"])
+        if "points" in f:
+            run.points = json.loads(bytes(f["points"]["records"][()]).decode())
     summary = os.path.join(out_dir, "summary.json")
     if os.path.exists(summary):
         with open(summary) as s:

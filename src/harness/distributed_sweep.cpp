@@ -9,11 +9,14 @@
 #include <optional>
 #include <thread>
 #include <time.h>
+#include <unistd.h>
 
 #include "core/input_error.hpp"
 #include "core/interrupt.hpp"
+#include "core/stable_hash.hpp"
 #include "harness/mpi_world.hpp"
 #include "harness/progress.hpp"
+#include "harness/run_checkpoint.hpp"
 #include "harness/run_log.hpp"
 #include "harness/sweep_checkpoint.hpp"
 
@@ -36,11 +39,35 @@ double thread_cpu_seconds() {
     return double(ts.tv_sec) + 1e-9 * double(ts.tv_nsec);
 }
 
-// compute(i) and its cost [CPU s].
-std::pair<nlohmann::json, double> timed(const std::function<nlohmann::json(long)>& compute, long i) {
+double unix_seconds() {
+    timespec ts{};
+    clock_gettime(CLOCK_REALTIME, &ts);
+    return double(ts.tv_sec) + 1e-9 * double(ts.tv_nsec);
+}
+
+// This process's id among the invocations that computed a sweep's points (a resumed run, shards):
+// 16 hex digits from the pid and the time of the first call.
+const std::string& part_id() {
+    static const std::string id = [] {
+        timespec ts{};
+        clock_gettime(CLOCK_REALTIME, &ts);
+        return hex64(fnv1a64(std::to_string(::getpid()) + " " + std::to_string(ts.tv_sec) + "." + std::to_string(ts.tv_nsec)));
+    }();
+    return id;
+}
+
+// compute(i) and its cost (CPU s of this thread, wall s, start time).
+std::pair<nlohmann::json, PointCost> timed(const std::function<nlohmann::json(long)>& compute, long i) {
+    PointCost cost;
+    cost.started_unix = unix_seconds();
+    cost.part = part_id();
+    cost.rank = mpi::rank();
+    const auto w0 = std::chrono::steady_clock::now();
     const double c0 = thread_cpu_seconds();
     nlohmann::json value = compute(i);
-    return {std::move(value), thread_cpu_seconds() - c0};
+    cost.cpu_s = thread_cpu_seconds() - c0;
+    cost.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - w0).count();
+    return {std::move(value), cost};
 }
 
 [[noreturn]] void point_failed(long i, const char* what) {
@@ -70,7 +97,8 @@ void end_of_sweep() {
 }
 
 // Rank > 0: each thread asks rank 0 for a point, computes it, sends the result with the next
-// request ("<index> <CPU seconds> <json>"), until rank 0 answers -1.
+// request ("<index> <CPU seconds> <wall seconds> <start unix s> <part> <json>"), until rank 0
+// answers -1.
 void serve_points(const RunContext& ctx, const std::function<nlohmann::json(long)>& compute) {
     auto worker = [&](int thread) {
         const int tag = 1 + thread;
@@ -85,8 +113,9 @@ void serve_points(const RunContext& ctx, const std::function<nlohmann::json(long
             if (next < 0) return;
             try {
                 auto [value, cost] = timed(compute, long(next));
-                char head[64];
-                std::snprintf(head, sizeof head, "%lld %.17g ", next, cost);
+                char head[160];
+                std::snprintf(head, sizeof head, "%lld %.17g %.17g %.17g %s ", next, cost.cpu_s, cost.wall_s,
+                              cost.started_unix, cost.part.c_str());
                 message = head + value.dump();
             } catch (const std::exception& e) {
                 point_failed(long(next), e.what());
@@ -120,9 +149,11 @@ SweepResult distributed_sweep(const RunContext& ctx, const std::string& label, c
     out.points.resize(std::size_t(n));
     out.cpu_seconds.assign(std::size_t(n), -1.0);
     std::vector<char> have(std::size_t(n), 0);
+    std::vector<PointCost> costs(static_cast<std::size_t>(n));
     for (long i = 0; i < n; ++i)
         if (auto saved = checkpoint ? checkpoint->load(i) : std::nullopt) {
-            out.points[std::size_t(i)] = std::move(*saved);
+            out.points[std::size_t(i)] = std::move(saved->value);
+            costs[std::size_t(i)] = saved->cost;
             have[std::size_t(i)] = 1;
             ++out.resumed; // not computed again
         }
@@ -166,13 +197,15 @@ SweepResult distributed_sweep(const RunContext& ctx, const std::string& label, c
         std::lock_guard<std::mutex> lock(mutex);
         return next < todo.size() && !interrupt_requested() ? todo[next++] : -1;
     };
-    auto store = [&](long i, nlohmann::json value, double cost, int rank) {
+    auto store = [&](long i, nlohmann::json value, const PointCost& cost) {
         std::lock_guard<std::mutex> lock(mutex); // also makes the interruption hook exact
-        if (checkpoint) checkpoint->save(i, value);
+        if (checkpoint) checkpoint->save(i, value, cost);
         out.points[std::size_t(i)] = std::move(value);
-        out.cpu_seconds[std::size_t(i)] = cost;
+        out.cpu_seconds[std::size_t(i)] = cost.cpu_s;
+        costs[std::size_t(i)] = cost;
         char text[160];
-        std::snprintf(text, sizeof text, "sweep %s: point %ld cost %.6g CPU s (rank %d)", label.c_str(), i, cost, rank);
+        std::snprintf(text, sizeof text, "sweep %s: point %ld cost %.6g CPU s (rank %d)", label.c_str(), i, cost.cpu_s,
+                      cost.rank);
         run_log().line(text);
         progress.done(i);
         if (++computed == stop_after) {
@@ -187,7 +220,7 @@ SweepResult distributed_sweep(const RunContext& ctx, const std::string& label, c
             while ((i = dispense()) >= 0) {
                 const ProgressSlot slot(&progress, i); // the point's engine time shows in the progress line
                 auto [value, cost] = timed(compute, i);
-                store(i, std::move(value), cost, mpi::rank());
+                store(i, std::move(value), cost);
             }
         } catch (const std::exception& e) {
             if (spread) point_failed(i, e.what());
@@ -226,9 +259,21 @@ SweepResult distributed_sweep(const RunContext& ctx, const std::string& label, c
             const std::size_t space = message.find(' ');
             const long done = std::stol(message.substr(0, space));
             if (done >= 0) {
-                const std::size_t space2 = message.find(' ', space + 1);
-                store(done, nlohmann::json::parse(message.substr(space2 + 1)),
-                      std::stod(message.substr(space + 1, space2 - space - 1)), status.MPI_SOURCE);
+                // "<index> <cpu> <wall> <start> <part> <json>"
+                std::size_t at = space + 1;
+                auto field = [&] {
+                    const std::size_t end = message.find(' ', at);
+                    std::string f = message.substr(at, end - at);
+                    at = end + 1;
+                    return f;
+                };
+                PointCost cost;
+                cost.cpu_s = std::stod(field());
+                cost.wall_s = std::stod(field());
+                cost.started_unix = std::stod(field());
+                cost.part = field();
+                cost.rank = status.MPI_SOURCE;
+                store(done, nlohmann::json::parse(message.substr(at)), cost);
             }
             long long give = dispense();
             MPI_Request request;
@@ -256,6 +301,18 @@ SweepResult distributed_sweep(const RunContext& ctx, const std::string& label, c
                             std::to_string(present) + " of " + std::to_string(n) +
                             " in the checkpoint; `granrepro gather " + label + "` with the same flags writes the results");
     }
+    if (ctx.points) // every point, as the results store it (data.h5 /points)
+        for (long i = 0; i < n; ++i) {
+            SweepPoint p;
+            p.sweep = label;
+            p.index = i;
+            p.inputs = sweep_point_inputs_hash(ctx, label, i, n);
+            p.outcome = out.points[std::size_t(i)];
+            p.cost = costs[std::size_t(i)];
+            p.resumed = have[std::size_t(i)] != 0;
+            p.persisted = files == PointFiles::Saved;
+            ctx.points->points.push_back(std::move(p));
+        }
     return out;
 }
 

@@ -8,6 +8,7 @@
 
 #include "data/parameter_set.hpp"
 #include "data/result.hpp"
+#include "data/sweep_points.hpp"
 #include "harness/declared_outputs.hpp"
 
 namespace granrepro {
@@ -33,6 +34,9 @@ struct RunContext {
     std::filesystem::path work_dir; // for checkpoints of long runs (survives an interrupted run)
     double checkpoint_interval = 60.0; // [s] wall time between mid-run checkpoints (RunCheckpoint)
     SweepPlan sweep = {};
+    // Where distributed_sweep records every point (computed or resumed) for the results' /points;
+    // null: not recorded.
+    SweepPoints* points = nullptr;
 };
 
 struct Experiment {

@@ -31,6 +31,15 @@ std::string checkpoint_fingerprint(const RunContext& ctx) {
     return hex64(fnv1a64(j.dump())); // nlohmann::json keeps object keys sorted: canonical text
 }
 
+std::string sweep_point_inputs_hash(const RunContext& ctx, const std::string& label, long index, long count) {
+    nlohmann::json values = nlohmann::json::object();
+    const nlohmann::json all = ctx.params.to_json();
+    for (auto it = all.begin(); it != all.end(); ++it) values[it.key()] = it.value()["value"];
+    const nlohmann::json j = {{"parameters", values}, {"scale", to_string(ctx.scale)}, {"seed", ctx.seed},
+                              {"sweep", label}, {"point", index}, {"points", count}};
+    return "fnv1a64:" + hex64(fnv1a64(j.dump()));
+}
+
 RunCheckpoint::RunCheckpoint(const RunContext& ctx, const std::string& name)
     : interval_(ctx.checkpoint_interval), quiet_(ctx.quiet), last_(std::chrono::steady_clock::now()) {
     fs::create_directories(ctx.work_dir);

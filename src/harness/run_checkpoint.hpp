@@ -29,6 +29,13 @@ namespace granrepro {
 // std::hash. Checkpoint file and folder names carry it.
 std::string checkpoint_fingerprint(const RunContext& ctx);
 
+// The fingerprint of one sweep point's inputs, "fnv1a64:<16 hex digits>": FNV-1a 64 of the
+// canonical JSON {"parameters": {name: value, ...} (resolved, as read; units and source texts
+// left out), "scale", "seed", "sweep": label, "point": index, "points": count}. A point's own
+// inputs (its k_N, e_N, random stream, ...) are a function of these by construction
+// (distributed_sweep.hpp), so equal fingerprints mean equal inputs to the same code.
+std::string sweep_point_inputs_hash(const RunContext& ctx, const std::string& label, long index, long count);
+
 class RunCheckpoint {
 public:
     // name distinguishes several runs of one experiment (e.g. "ed" and "dsmc").

@@ -141,7 +141,7 @@ bool check_data_file(const fs::path& file, const std::string& name, const fs::pa
     if (!fs::exists(file)) throw InputError(file.string() + ": missing (summary.json has no data file beside it)");
     try {
         const H5File f = H5File::open(file.string());
-        const long version = f.require_schema("granrepro-result", 1, 2);
+        const long version = f.require_schema("granrepro-result", 1, 3);
         if (const std::string e = f.read_string_attr("experiment"); e != name)
             throw std::runtime_error("holds results of experiment '" + e + "'");
         // A one-sided edit of these would judge the data by the wrong claims ("paper" on quick
@@ -176,6 +176,12 @@ bool check_data_file(const fs::path& file, const std::string& name, const fs::pa
             const nlohmann::json& recorded = summary["data_h5_hash"];
             if (recorded.value("scalars", "") != found["scalars"])
                 disagree(file, "its scalars differ from the hash summary.json recorded for them (edited since the run?)", name);
+            // Schema 3: the stored sweep points (/points/records) too.
+            if (recorded.contains("points") != found.contains("points") ||
+                (found.contains("points") && recorded["points"] != found["points"]))
+                disagree(file, found.contains("points") ? "its stored sweep points (/points) differ from the hash summary.json recorded for them (edited since the run?)"
+                                                        : "has no stored sweep points (/points), but summary.json records their hash",
+                         name);
             const nlohmann::json tables = recorded.value("tables", nlohmann::json::object());
             const std::string omitted = f.has_attr("omitted_tables") ? f.read_string_attr("omitted_tables") : "";
             for (auto it = found["tables"].begin(); it != found["tables"].end(); ++it)
@@ -289,6 +295,8 @@ int run_experiment(const std::string& name, const RunOptions& opt, VerdictCounts
     fs::create_directories(work_dir);
     RunContext ctx{params, opt.scale, opt.seed, opt.threads, opt.quiet || !rank0, work_dir, opt.checkpoint_interval};
     ctx.sweep = plan;
+    SweepPoints points; // every sweep point, for the results' /points
+    ctx.points = &points;
 
     const auto t0 = std::chrono::steady_clock::now();
     const std::clock_t cpu0 = std::clock(); // this process's CPU time, all threads
@@ -336,9 +344,9 @@ int run_experiment(const std::string& name, const RunOptions& opt, VerdictCounts
                                      " [outputs] does not declare (declare them, <n> for a number):" + undeclared);
     }
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    const double cpu = double(std::clock() - cpu0) / CLOCKS_PER_SEC;
     // The CPU time lets `bench sweep` tell a run's serial part from time lost to other processes.
-    run_log().line("run finished: wall time " + std::to_string(wall) + " s, CPU " +
-                   std::to_string(double(std::clock() - cpu0) / CLOCKS_PER_SEC) + " s");
+    run_log().line("run finished: wall time " + std::to_string(wall) + " s, CPU " + std::to_string(cpu) + " s");
 
     // Every write is checked; a failure names the file where it would have ended up, and the
     // old results stay as they were (nothing is renamed into place).
@@ -352,8 +360,18 @@ int run_experiment(const std::string& name, const RunOptions& opt, VerdictCounts
     try {
         std::vector<std::pair<std::string, std::string>> plot_texts;
         for (const auto& id : to_render) plot_texts.emplace_back(id, read_file(project_root() / "plots" / (id + ".gp")));
-        const Provenance prov{name,     info.paper, read_file(info.file),           opt.scale, opt.seed,
-                              wall,     opt.threads, opt.command_line, read_file(expected_file(name)), plot_texts};
+        Provenance prov{name,     info.paper, read_file(info.file),           opt.scale, opt.seed,
+                        wall,     opt.threads, opt.command_line, read_file(expected_file(name)), plot_texts};
+        prov.points = &points;
+        run_totals(prov, points, wall, cpu);
+        if (prov.resumed_points > 0)
+            run_log().line("whole run, resumed points included: wall time " + std::to_string(prov.total_wall_time_s) +
+                           " s, CPU " + std::to_string(prov.total_cpu_time_s) + " s (" +
+                           std::to_string(prov.resumed_points) + " points resumed" +
+                           (prov.points_without_cost ? ", " + std::to_string(prov.points_without_cost) +
+                                                           " of them without a recorded cost: lower bounds"
+                                                     : std::string()) +
+                           ")");
         nlohmann::json summary = summary_json(prov, params, result);
         summary["claims"] = claims_to_json(verdicts);
         write_result_h5(stage->path() / "data.h5", prov, params, result, summary_content_hash(summary));

@@ -19,15 +19,16 @@ SweepCheckpoint::SweepCheckpoint(const RunContext& ctx, const std::string& label
     std::filesystem::create_directories(dir_);
 }
 
-std::optional<nlohmann::json> SweepCheckpoint::load(long point) const {
+std::optional<SweepCheckpoint::Loaded> SweepCheckpoint::load(long point) const {
     const auto file = dir_ / (std::to_string(point) + ".json");
     std::ifstream in(file);
     if (!in) return std::nullopt;
     std::string problem;
     try {
         const nlohmann::json j = nlohmann::json::parse(in);
-        if (!j.is_object() || j.value("schema", "") != kPointSchema || j.value("schema_version", 0) != 1)
-            problem = "not a granrepro-sweep-point v1 file";
+        if (!j.is_object() || j.value("schema", "") != kPointSchema ||
+            (j.value("schema_version", 0) != 1 && j.value("schema_version", 0) != 2))
+            problem = "not a granrepro-sweep-point v1 or v2 file";
         else if (!j.contains("point") || j["point"] != point)
             problem = "holds another point";
         else if (!j.contains("value") || !j.contains("fnv1a64") || j["fnv1a64"] != hex64(fnv1a64(j["value"].dump())))
@@ -35,7 +36,17 @@ std::optional<nlohmann::json> SweepCheckpoint::load(long point) const {
         else {
             std::lock_guard<std::mutex> lock(mutex_);
             ++resumed_;
-            return j["value"];
+            Loaded loaded{j["value"], {}};
+            if (const auto c = j.find("cost"); c != j.end() && c->is_object()) {
+                PointCost& k = loaded.cost;
+                auto num = [&](const char* f) { return c->contains(f) && (*c)[f].is_number() ? (*c)[f].get<double>() : -1.0; };
+                k.cpu_s = num("cpu_s");
+                k.wall_s = num("wall_s");
+                k.started_unix = num("started_unix");
+                k.part = c->value("part", "");
+                k.rank = c->value("rank", 0);
+            }
+            return loaded;
         }
     } catch (const std::exception&) {
         problem = "torn or not JSON";
@@ -44,9 +55,11 @@ std::optional<nlohmann::json> SweepCheckpoint::load(long point) const {
     return std::nullopt;
 }
 
-void SweepCheckpoint::save(long point, const nlohmann::json& value) {
-    const nlohmann::json j = {{"schema", kPointSchema}, {"schema_version", 1}, {"point", point},
-                              {"fnv1a64", hex64(fnv1a64(value.dump()))}, {"value", value}};
+void SweepCheckpoint::save(long point, const nlohmann::json& value, const PointCost& cost) {
+    const nlohmann::json c = {{"cpu_s", cost.cpu_s}, {"wall_s", cost.wall_s}, {"started_unix", cost.started_unix},
+                              {"part", cost.part}, {"rank", cost.rank}};
+    const nlohmann::json j = {{"schema", kPointSchema}, {"schema_version", 2}, {"point", point},
+                              {"fnv1a64", hex64(fnv1a64(value.dump()))}, {"value", value}, {"cost", c}};
     std::filesystem::create_directories(dir_); // a shard's commit may have removed an empty folder
     write_file_atomically(dir_ / (std::to_string(point) + ".json"), j.dump());
 }

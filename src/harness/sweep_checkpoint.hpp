@@ -3,8 +3,9 @@
 // seed. Re-running the same command after an interruption loads the finished points instead of
 // recomputing them; any change of inputs changes the fingerprint and starts afresh. The runner
 // deletes the directory once the results are written.
-// A point file is {"schema": "granrepro-sweep-point", "schema_version": 1, "point": i,
-// "fnv1a64": <FNV-1a 64 of value.dump()>, "value": ...}; written durably (fsync, rename). A file
+// A point file is {"schema": "granrepro-sweep-point", "schema_version": 2, "point": i,
+// "fnv1a64": <FNV-1a 64 of value.dump()>, "value": ..., "cost": {cpu_s, wall_s, started_unix, part,
+// rank}}; version 1 files (without "cost") are read too, their cost unknown. Written durably (fsync, rename). A file
 // that is torn, not JSON, another point's, or whose value does not match its hash (`{}`, garbage)
 // is recomputed with a note on stderr, never trusted and never a permanent failure.
 // Each point is its own file, written through a rename, so concurrent --points shards and MPI
@@ -16,6 +17,7 @@
 #include <optional>
 #include <string>
 
+#include "data/sweep_points.hpp"
 #include "harness/experiment.hpp"
 
 namespace granrepro {
@@ -24,8 +26,12 @@ class SweepCheckpoint {
 public:
     // `label` tells apart the sweeps of one run (an experiment may sweep twice).
     explicit SweepCheckpoint(const RunContext& ctx, const std::string& label = "");
-    std::optional<nlohmann::json> load(long point) const;
-    void save(long point, const nlohmann::json& value);
+    struct Loaded {
+        nlohmann::json value;
+        PointCost cost; // as recorded when the point was computed (unknown: -1)
+    };
+    std::optional<Loaded> load(long point) const;
+    void save(long point, const nlohmann::json& value, const PointCost& cost);
     long resumed() const { return resumed_; }
 
 private:

@@ -1,5 +1,7 @@
 #include "io/h5_file.hpp"
 
+#include <algorithm>
+
 #include <cctype>
 #include <stdexcept>
 
@@ -201,6 +203,21 @@ void H5Object::dataset(const std::string& name, const std::vector<double>& v,
     const H5Object ds = write_dataset(id_, name, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, v.size(), v.data());
     ds.attr("unit", unit);
     if (!description.empty()) ds.attr("description", description);
+}
+
+void H5Object::compressed_text(const std::string& name, const std::string& text) const {
+    const hsize_t n = text.size();
+    const H5Object space = simple_space(n);
+    const H5Object dcpl(check(H5Pcreate(H5P_DATASET_CREATE), "property list"), &H5Pclose);
+    if (n > 0 && H5Zfilter_avail(H5Z_FILTER_DEFLATE) > 0) {
+        const hsize_t chunk = std::min<hsize_t>(n, hsize_t(1) << 20);
+        check(H5Pset_chunk(dcpl.id(), 1, &chunk), "chunk " + name);
+        check(H5Pset_deflate(dcpl.id(), 9), "deflate " + name);
+    }
+    const H5Object d(wcheck(H5Dcreate2(id_, name.c_str(), H5T_STD_U8LE, space.id(), H5P_DEFAULT, dcpl.id(), H5P_DEFAULT),
+                            id_, "create dataset " + name),
+                     &H5Dclose);
+    if (n) wcheck(H5Dwrite(d.id(), H5T_NATIVE_UINT8, H5S_ALL, H5S_ALL, H5P_DEFAULT, text.data()), id_, "write dataset " + name);
 }
 
 template <class T>

@@ -33,6 +33,9 @@ public:
     void dataset(const std::string& name, const std::vector<double>& v, const std::string& unit,
                  const std::string& description = {}) const;
     void bytes(const std::string& name, const std::vector<unsigned char>& v) const { array(name, v); }
+    // A 1-D uint8 dataset of text (e.g. JSON), deflate-compressed (level 9, chunked) where the
+    // HDF5 library has the filter; read back with read_bytes.
+    void compressed_text(const std::string& name, const std::string& text) const;
     // A 1-D dataset stored bit for bit (checkpoints). T: double, int32, uint8, uint32, uint64.
     template <class T>
     void array(const std::string& name, const std::vector<T>& v) const;

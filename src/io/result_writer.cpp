@@ -1,5 +1,6 @@
 #include "io/result_writer.hpp"
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <ctime>
@@ -131,7 +132,7 @@ std::string utc_now() {
 void write_result_h5(const std::filesystem::path& file, const Provenance& prov, const ParameterSet& params,
                      const Result& result, const std::string& summary_hash) {
     H5File f = H5File::create(file.string());
-    f.stamp_schema("granrepro-result", 2);
+    f.stamp_schema("granrepro-result", 3);
     f.attr("experiment", prov.experiment);
     f.attr("paper", prov.paper);
     f.attr("scale", std::string(to_string(prov.scale)));
@@ -142,6 +143,11 @@ void write_result_h5(const std::filesystem::path& file, const Provenance& prov, 
     f.attr("created_utc", utc_now());
     f.attr("experiment_file", prov.experiment_file_text);
     f.attr("summary_json_hash", summary_hash);
+    f.attr("cpu_time_s", prov.cpu_time_s);
+    f.attr("total_wall_time_s", prov.total_wall_time_s);
+    f.attr("total_cpu_time_s", prov.total_cpu_time_s);
+    f.attr("resumed_points", prov.resumed_points);
+    f.attr("points_without_cost", prov.points_without_cost);
     {
         const H5Object g = f.group("parameters");
         for (const auto& p : params.all()) {
@@ -172,6 +178,15 @@ void write_result_h5(const std::filesystem::path& file, const Provenance& prov, 
         g.attr("description", t.description);
         for (const auto& c : t.columns) g.dataset(c.name, c.values, c.unit);
         attach_x_scale(g, t);
+    }
+    if (prov.points && !prov.points->points.empty()) {
+        const H5Object g = f.group("points");
+        g.attr("count", long(prov.points->points.size()));
+        std::string sweeps;
+        for (const auto& p : prov.points->points)
+            if (("," + sweeps + ",").find("," + p.sweep + ",") == std::string::npos) sweeps += (sweeps.empty() ? "" : ",") + p.sweep;
+        g.attr("sweeps", sweeps);
+        g.compressed_text("records", points_records_text(*prov.points));
     }
     {
         const H5Object g = f.group("provenance");
@@ -226,11 +241,80 @@ nlohmann::json summary_json(const Provenance& prov, const ParameterSet& params, 
     for (const auto& p : params.all())
         if (p.overridden) sets[p.name] = p.value_text();
     for (const auto& s : result.scalars) units[s.name] = s.unit;
-    return {{"schema", "granrepro-summary"}, {"schema_version", 2}, {"experiment", prov.experiment},
+    nlohmann::json hashes = data_content_hash(result);
+    if (prov.points && !prov.points->points.empty()) hashes["points"] = points_hash(points_records_text(*prov.points));
+    return {{"schema", "granrepro-summary"}, {"schema_version", 3}, {"experiment", prov.experiment},
             {"scale", to_string(prov.scale)}, {"seed", prov.seed}, {"code_version", code_version()},
-            {"wall_time_s", prov.wall_time_s}, {"command_line", prov.command_line},
+            {"wall_time_s", prov.wall_time_s}, {"cpu_time_s", prov.cpu_time_s},
+            {"total_wall_time_s", prov.total_wall_time_s}, {"total_cpu_time_s", prov.total_cpu_time_s},
+            {"resumed_points", prov.resumed_points}, {"points_without_cost", prov.points_without_cost},
+            {"stored_points", prov.points ? long(prov.points->points.size()) : 0L},
+            {"command_line", prov.command_line},
             {"overridden_parameters", sets}, {"scalars", scalars_json(result)}, {"units", units},
-            {"parameters", params.to_json()}, {"data_h5_hash", data_content_hash(result)}};
+            {"parameters", params.to_json()}, {"data_h5_hash", hashes}};
+}
+
+std::string points_records_text(const SweepPoints& points) {
+    nlohmann::json a = nlohmann::json::array();
+    for (const auto& p : points.points) {
+        const PointCost& c = p.cost;
+        a.push_back({{"sweep", p.sweep},
+                     {"point", p.index},
+                     {"inputs", p.inputs},
+                     {"resumed", p.resumed},
+                     {"persisted", p.persisted},
+                     {"cost", {{"cpu_s", c.cpu_s}, {"wall_s", c.wall_s}, {"started_unix", c.started_unix},
+                               {"part", c.part}, {"rank", c.rank}}},
+                     {"outcome", p.outcome}});
+    }
+    return a.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+}
+
+std::string points_hash(const std::string& records_text) { return "fnv1a64:" + hex64(fnv1a64(records_text)); }
+
+void run_totals(Provenance& prov, const SweepPoints& points, double wall_s, double cpu_s) {
+    prov.cpu_time_s = cpu_s;
+    double cpu_here = 0, cpu_all = 0;
+    long resumed = 0, unknown = 0;
+    struct Span { double a = INFINITY, b = -INFINITY; };
+    std::vector<std::pair<std::string, Span>> parts; // earlier invocations
+    for (const auto& p : points.points) {
+        const PointCost& c = p.cost;
+        resumed += p.resumed;
+        if (c.cpu_s < 0) {
+            unknown += p.resumed;
+            continue;
+        }
+        cpu_all += c.cpu_s;
+        if (!p.resumed && c.rank == 0) cpu_here += c.cpu_s; // inside this process's CPU time
+        if (p.resumed && c.started_unix >= 0 && c.wall_s >= 0) {
+            auto it = std::find_if(parts.begin(), parts.end(), [&](const auto& q) { return q.first == c.part; });
+            if (it == parts.end()) it = parts.insert(parts.end(), {c.part, Span{}});
+            it->second.a = std::min(it->second.a, c.started_unix);
+            it->second.b = std::max(it->second.b, c.started_unix + c.wall_s);
+        }
+    }
+    // The union of the earlier invocations' spans (shards may have run at the same time).
+    std::vector<Span> spans;
+    for (const auto& [id, sp] : parts) spans.push_back(sp);
+    std::sort(spans.begin(), spans.end(), [](const Span& x, const Span& y) { return x.a < y.a; });
+    double earlier = 0, end = -INFINITY;
+    for (const auto& sp : spans) {
+        const double from = std::max(sp.a, end);
+        if (sp.b > from) earlier += sp.b - from;
+        end = std::max(end, sp.b);
+    }
+    prov.total_wall_time_s = wall_s + earlier;
+    prov.total_cpu_time_s = cpu_s - cpu_here + cpu_all;
+    prov.resumed_points = resumed;
+    prov.points_without_cost = unknown;
+}
+
+nlohmann::json read_points_records(const std::filesystem::path& h5) {
+    const H5File f = H5File::open(h5.string());
+    if (!f.has("points")) return nlohmann::json::array();
+    const std::vector<unsigned char> bytes = f.open_group("points").read_bytes("records");
+    return nlohmann::json::parse(std::string(bytes.begin(), bytes.end()));
 }
 
 nlohmann::json data_content_hash(const Result& result) {
@@ -263,7 +347,12 @@ nlohmann::json data_content_hash(const std::filesystem::path& h5) {
         for (const auto& c : links_in_creation_order(g)) column(h, g, c);
         tables[t] = h.hex();
     }
-    return {{"scalars", scalars.hex()}, {"tables", tables}};
+    nlohmann::json out = {{"scalars", scalars.hex()}, {"tables", tables}};
+    if (f.has("points")) {
+        const std::vector<unsigned char> bytes = f.open_group("points").read_bytes("records");
+        out["points"] = points_hash(std::string(bytes.begin(), bytes.end()));
+    }
+    return out;
 }
 
 // Bytes that are not UTF-8 (an --out path in Latin-1, in command_line) become U+FFFD: dump() would
@@ -279,10 +368,10 @@ std::string summary_text(const nlohmann::json& summary) {
 std::vector<std::string> write_compact_result_h5(const std::filesystem::path& src, const std::filesystem::path& dst,
                                                  std::size_t max_values) {
     const H5File in = H5File::open(src.string());
-    in.require_schema("granrepro-result", 1, 2);
+    in.require_schema("granrepro-result", 1, 3);
     H5File out = H5File::create(dst.string());
     for (const auto& a : in.attribute_names()) in.copy_attr_to(a, out);
-    for (const char* g : {"parameters", "scalars", "provenance"})
+    for (const char* g : {"parameters", "scalars", "provenance", "points"})
         if (in.has(g)) in.copy_to(g, out);
     const H5Object tables_in = in.open_group("tables");
     const H5Object tables_out = out.group("tables");

@@ -1,4 +1,4 @@
-// The result schema "granrepro-result" (version 2), written into a run's directory; docs/schema.md
+// The result schema "granrepro-result" (version 3; 3 adds /points and the run totals), written into a run's directory; docs/schema.md
 // describes every group, dataset and attribute (a test checks it names all that the writer emits):
 //   data.h5       root attributes: schema, schema_version, experiment, paper, scale, seed (uint64),
 //                 code_version, wall_time_s, threads, created_utc, experiment_file (its full text),
@@ -24,6 +24,7 @@
 
 #include "data/parameter_set.hpp"
 #include "data/result.hpp"
+#include "data/sweep_points.hpp"
 
 namespace granrepro {
 
@@ -36,7 +37,29 @@ struct Provenance {
     std::string command_line;                                      // as typed
     std::string expected_file_text;                                // expected/<experiment>.toml
     std::vector<std::pair<std::string, std::string>> plot_texts;   // figure id, plots/<id>.gp
+    // Schema 3: the cost of the whole run, resumed points included (run_totals()), and every
+    // sweep point (data.h5 /points; null: none recorded).
+    double cpu_time_s = 0;        // this invocation's process CPU time [s]
+    double total_wall_time_s = 0; // wall_time_s + the wall time of earlier invocations it resumed
+    double total_cpu_time_s = 0;  // cpu_time_s + the CPU time of the points it resumed (and of other ranks)
+    long resumed_points = 0;
+    long points_without_cost = 0; // resumed points from files before costs were recorded: totals are lower bounds
+    const SweepPoints* points = nullptr;
 };
+
+// The results' record of every sweep point: the text of data.h5's /points/records, a JSON array
+// of {"sweep", "point", "inputs", "resumed", "persisted", "cost": {cpu_s, wall_s, started_unix,
+// part, rank}, "outcome"} (docs/schema.md), and its content hash "fnv1a64:<hex>".
+std::string points_records_text(const SweepPoints& points);
+std::string points_hash(const std::string& records_text);
+// The run's totals from its points: fills cpu_time_s (given), total_wall_time_s,
+// total_cpu_time_s, resumed_points, points_without_cost of prov. wall_s and cpu_s: this
+// invocation's wall and process CPU time. Earlier invocations' wall time is the union of the
+// spans of the points each computed (start of its first to end of its last), so concurrent
+// shards count once; their serial parts outside points are not known and left out.
+void run_totals(Provenance& prov, const SweepPoints& points, double wall_s, double cpu_s);
+// The stored points of a result file (empty if it has none: written before schema 3).
+nlohmann::json read_points_records(const std::filesystem::path& h5);
 
 // summary_hash: summary_content_hash() of the summary.json written beside it (root attribute
 // summary_json_hash).

@@ -104,9 +104,16 @@ TEST(SweepCheckpoint, DamagedPointFilesAreRecomputedNotTrusted) {
     fs::path dir;
     {
         SweepCheckpoint c(ctx);
-        c.save(0, value);
-        c.save(1, nlohmann::json{{"t", {2.0}}, {"n", 1}});
-        ASSERT_EQ(c.load(0), value);
+        PointCost cost;
+        cost.cpu_s = 1.5;
+        cost.wall_s = 2.5;
+        c.save(0, value, cost);
+        c.save(1, nlohmann::json{{"t", {2.0}}, {"n", 1}}, {});
+        const auto loaded = c.load(0);
+        ASSERT_TRUE(loaded.has_value());
+        EXPECT_EQ(loaded->value, value);
+        EXPECT_EQ(loaded->cost.cpu_s, 1.5); // the recorded cost comes back with the resumed point
+        EXPECT_EQ(loaded->cost.wall_s, 2.5);
         EXPECT_EQ(c.resumed(), 1);
         for (const auto& e : fs::directory_iterator(work)) dir = e.path();
     }
@@ -126,7 +133,16 @@ TEST(SweepCheckpoint, DamagedPointFilesAreRecomputedNotTrusted) {
         EXPECT_EQ(c.resumed(), 0);
     }
     put(dir / "0.json", good0);
-    EXPECT_EQ(SweepCheckpoint(ctx).load(0), value);
+    EXPECT_EQ(SweepCheckpoint(ctx).load(0)->value, value);
+    // A version 1 file (before costs were recorded) still resumes, its cost unknown.
+    auto v1 = nlohmann::json::parse(good0);
+    v1["schema_version"] = 1;
+    v1.erase("cost");
+    put(dir / "0.json", v1.dump());
+    const auto old = SweepCheckpoint(ctx).load(0);
+    ASSERT_TRUE(old.has_value());
+    EXPECT_EQ(old->value, value);
+    EXPECT_EQ(old->cost.cpu_s, -1.0);
 }
 
 // ---- the commit ---------------------------------------------------------------------------
@@ -443,8 +459,9 @@ TEST(DataSafety, CheckRefusesOneSidedEdits) {
     const fs::path dir = out / "brake-failure", json_file = dir / "summary.json", h5 = dir / "data.h5";
     const std::string summary_text = slurp(json_file), data = slurp(h5);
     const nlohmann::json summary = nlohmann::json::parse(summary_text);
-    ASSERT_EQ(summary.at("schema_version"), 2);
+    ASSERT_EQ(summary.at("schema_version"), 3);
     ASSERT_TRUE(summary.at("data_h5_hash").at("tables").contains("fig3"));
+    ASSERT_TRUE(summary.at("data_h5_hash").contains("points"));
     const Outcome clean = run(check);
     ASSERT_EQ(clean.code, 0) << clean.err;
     EXPECT_EQ(clean.out.find("unverified"), std::string::npos) << clean.out;
@@ -495,6 +512,19 @@ TEST(DataSafety, CheckRefusesOneSidedEdits) {
     put(h5, data);
     overwrite_root_attr(h5, "scale", "paper");
     expect_one_line_exit(run(check), 2, {json_file.string() + ": ", "'scale' is \"quick\" but data.h5 beside it has \"paper\""});
+    put(h5, data);
+    // Schema 3: a stored sweep point's outcome edited (what `verify` compares with).
+    {
+        const H5Object f = open_for_edit(h5);
+        const H5Object g(H5Gopen2(f.id(), "points", H5P_DEFAULT), &H5Gclose);
+        const auto bytes = g.read_bytes("records");
+        nlohmann::json records = nlohmann::json::parse(std::string(bytes.begin(), bytes.end()));
+        ASSERT_FALSE(records.empty());
+        records[0]["outcome"] = {{"edited", 1}};
+        ASSERT_GE(H5Ldelete(g.id(), "records", H5P_DEFAULT), 0);
+        g.compressed_text("records", records.dump());
+    }
+    expect_one_line_exit(run(check), 2, {h5.string() + ": ", "stored sweep points (/points) differ from the hash"});
     put(h5, data);
     EXPECT_EQ(run(check).code, 0);
 
