@@ -53,6 +53,12 @@ namespace granrepro::experiments {
 
 namespace {
 
+// How Eq. (7) combines a pair's partners, and what a TC-elastic collision does to friction.
+enum class TcRule { either, both };
+enum class TcFriction { drop, keep };
+void parse_choice(const std::string& s, TcRule& x) { x = s == "both" ? TcRule::both : TcRule::either; }
+void parse_choice(const std::string& s, TcFriction& x) { x = s == "keep" ? TcFriction::keep : TcFriction::drop; }
+
 // Read once from experiments/pipe-arching.toml, which holds every parameter's unit, range and source.
 struct PipeArchingSpec {
     long n_particles = 0, n_seeds = 0, crack_min_particles = 0, crack_min_above = 0;
@@ -61,7 +67,8 @@ struct PipeArchingSpec {
     double t_relax = 0, t_end = 0, frame_dt = 0, dist_dt = 0; // [s]
     double epsilon = 0, mu = 0, beta0 = 0, q = 0, t_c = 0;    // t_c [s]
     double epsilon_w = 0, mu_w = 0, beta0_w = 0;
-    std::string tc_rule, tc_friction;                         // "either"/"both", "drop"/"keep"
+    TcRule tc_rule = TcRule::either;
+    TcFriction tc_friction = TcFriction::drop;
     std::vector<double> snapshot_times, dist_times_before, dist_times_after; // [s]
     double hot_rate = 0;                                      // [1/s]
     double link = 0, wall_reach = 0, pressure_band = 0, crack_opening = 0; // [d]
@@ -284,7 +291,7 @@ EdEngine build_column(const Pipe& s, const std::vector<Vec2>& lat, std::uint64_t
     const EdConfig cfg{.lx = s.L, .ly = s.ly, .periodic_x = false, .periodic_y = false, .gravity = {0.0, -s.g},
                        .law = RoughDiskCollision{1.0, 0.0, -1.0, s.q},
                        .walls = {EdWall{0, 0.0, +1}, EdWall{0, s.L, -1}, EdWall{1, s.y_floor, +1}},
-                       .t_c = 0.0, .tc_both = s.tc_rule == "both", .tc_keep_friction = s.tc_friction == "keep"};
+                       .t_c = 0.0, .tc_both = s.tc_rule == TcRule::both, .tc_keep_friction = s.tc_friction == TcFriction::keep};
     return EdEngine(cfg, lat, vel, std::vector<double>(n, 0.5 * s.d), std::vector<double>(n, s.mass), {}, -s.t_relax);
 }
 
