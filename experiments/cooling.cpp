@@ -40,8 +40,7 @@
 #include "scenarios/ed_gas.hpp"
 #include "theory/kinetic_theory.hpp"
 
-namespace granrepro {
-// Text choices of cooling.toml, found by read_spec through argument-dependent lookup.
+namespace granrepro { // text choices of cooling.toml (read_spec finds them by argument-dependent lookup)
 static void parse_choice(const std::string& s, DsmcFreeVolume& v) {
     v = s == "cell" ? DsmcFreeVolume::cell : s == "mean" ? DsmcFreeVolume::mean : DsmcFreeVolume::off;
 }
@@ -72,8 +71,7 @@ struct CoolingSpec {
     double departure_level = 0;
     bool run_ed = true, run_dsmc = true;
     double dsmc_cell_diameters = 0, dsmc_mft_fraction = 0, dsmc_step_factor = 0;
-    DsmcFreeVolume dsmc_free_volume = DsmcFreeVolume::off;
-    DsmcPartner dsmc_partner = DsmcPartner::uniform;
+    DsmcFreeVolume dsmc_free_volume = DsmcFreeVolume::off; DsmcPartner dsmc_partner = DsmcPartner::uniform;
     long dsmc_free_volume_block = 0;
     bool dsmc_no_repeat = false, dsmc_displacement = false;
     template <class V>

@@ -53,12 +53,10 @@ namespace granrepro::experiments {
 
 namespace {
 
-// How Eq. (7) combines a pair's partners, and what a TC-elastic collision does to friction.
-enum class TcRule { either, both };
-enum class TcFriction { drop, keep };
+enum class TcRule { either, both };    // Eq. (7) for a pair: elastic if either or both partners collided within t_c
+enum class TcFriction { drop, keep }; // what a TC-elastic collision does to mu and beta0
 void parse_choice(const std::string& s, TcRule& x) { x = s == "both" ? TcRule::both : TcRule::either; }
 void parse_choice(const std::string& s, TcFriction& x) { x = s == "keep" ? TcFriction::keep : TcFriction::drop; }
-
 // Read once from experiments/pipe-arching.toml, which holds every parameter's unit, range and source.
 struct PipeArchingSpec {
     long n_particles = 0, n_seeds = 0, crack_min_particles = 0, crack_min_above = 0;
@@ -749,8 +747,7 @@ double fraction_below(const std::vector<double>& v, double x) {
         if (!std::isnan(y) && y <= x + 1e-12) ++k;
     return k / double(v.size());
 }
-// Mean, sd and standard error over the finite values, from running sums (differs from
-// seed_stats' two-pass mean_sd in the last bits; kept so that the results stay identical).
+// Over the finite values, from running sums (seed_stats' two-pass mean_sd differs in the last bits).
 struct MeanSem {
     double mean = NAN, sd = NAN, sem = NAN, n = 0;
 };
