@@ -102,12 +102,9 @@ void validate(const ParameterSet& p) {
         p.reject(geometry, "the " + std::to_string(n) +
                                " grains do not fit on a triangular lattice of spacing >= d_mean (1 + polydispersity) "
                                "between the wall crests; lower phi");
-    const double d_min = s.d_mean * (1 - s.polydispersity);
-    const double m_min = s.m_mean * (d_min / s.d_mean) * (d_min / s.d_mean);
     for (double k : b.kN_list)
         for (double e : b.eN_list) {
-            // build_pipe's step: the stiffest (lightest free-free) pair, Eq. (5).
-            const double dt = pipe_law(k, e, s.m_mean).collision_time(0.5 * m_min) / s.steps_per_contact;
+            const double dt = pipe_time_step(s, pipe_law(k, e, s.m_mean)); // build_pipe's step
             p.limit_work({"budget_tcol", "budget_min", "steps_per_contact", "kN_list", "eN_list", "phi", "width", "length", "d_mean"},
                          double(n) * time_budget(b, k, e) / dt, kMaxGrainSteps, "grain-steps in one run");
             // One sample per step at most: sample_dt = 1e-300 overflowed window/sample_dt and

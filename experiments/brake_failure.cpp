@@ -379,7 +379,7 @@ void report_readings(Result& r, const BrakeFailureSpec& s, const Sweep& w, const
 
 Result run(const RunContext& ctx) {
     const auto s = read_spec<BrakeFailureSpec>(ctx.params);
-    const LinearSpringDashpot law{s.k_N, s.gamma_N};
+    const LinearSpringDashpot law = s.law();
     const Sweep w{law, law.collision_time(s.m_free) / s.steps_per_contact, log_space(s.vy_min, s.vy_max, s.n_vy),
                   log_space(s.vy_min, 10 * s.vy_max, s.n_vy), HertzKuwabaraKono::matched_at(law.k_N, law.gamma_N, s.hkk_xi_ref)};
     const std::vector<Curve> curves = shoot_curves(s, w, ctx);

@@ -40,6 +40,13 @@
 #include "scenarios/ed_gas.hpp"
 #include "theory/kinetic_theory.hpp"
 
+namespace granrepro { // text choices of cooling.toml (read_spec finds them by argument-dependent lookup)
+static void parse_choice(const std::string& s, DsmcFreeVolume& v) {
+    v = s == "cell" ? DsmcFreeVolume::cell : s == "mean" ? DsmcFreeVolume::mean : DsmcFreeVolume::off;
+}
+static void parse_choice(const std::string& s, DsmcPartner& v) { v = s == "nearest" ? DsmcPartner::nearest : DsmcPartner::uniform; }
+} // namespace granrepro
+
 namespace granrepro::experiments {
 
 namespace {
@@ -64,7 +71,7 @@ struct CoolingSpec {
     double departure_level = 0;
     bool run_ed = true, run_dsmc = true;
     double dsmc_cell_diameters = 0, dsmc_mft_fraction = 0, dsmc_step_factor = 0;
-    std::string dsmc_free_volume, dsmc_partner;
+    DsmcFreeVolume dsmc_free_volume = DsmcFreeVolume::off; DsmcPartner dsmc_partner = DsmcPartner::uniform;
     long dsmc_free_volume_block = 0;
     bool dsmc_no_repeat = false, dsmc_displacement = false;
     template <class V>
@@ -101,11 +108,10 @@ DsmcConfig dsmc_config(const CoolingSpec& c, double L) {
     cfg.t_c = c.dsmc_t_c;
     cfg.min_cell_diameters = c.dsmc_cell_diameters;
     cfg.step_factor = c.dsmc_step_factor;
-    const std::string& fv = c.dsmc_free_volume;
-    cfg.free_volume = fv == "cell" ? DsmcFreeVolume::cell : fv == "mean" ? DsmcFreeVolume::mean : DsmcFreeVolume::off;
+    cfg.free_volume = c.dsmc_free_volume;
     cfg.free_volume_block = std::uint32_t(c.dsmc_free_volume_block);
     cfg.displacement = c.dsmc_displacement;
-    cfg.partner = c.dsmc_partner == "nearest" ? DsmcPartner::nearest : DsmcPartner::uniform;
+    cfg.partner = c.dsmc_partner;
     cfg.no_repeat_partner = c.dsmc_no_repeat;
     cfg.mft_fraction = c.dsmc_mft_fraction;
     return cfg;

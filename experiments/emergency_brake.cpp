@@ -211,7 +211,7 @@ double grows_with_kN(const Result& r, const EmergencyBrakeSpec& s) {
 
 Result run(const RunContext& ctx) {
     const auto s = read_spec<EmergencyBrakeSpec>(ctx.params);
-    const LinearSpringDashpot law{s.k_N, s.gamma_N};
+    const LinearSpringDashpot law = s.law();
     const auto vy = log_space(s.vy_min, s.vy_max, s.n_vy);
     const std::size_t n = vy.size();
     const std::vector<Series> series = all_series(s, law);

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "analysis/eddy_pair.hpp"
+#include "analysis/seed_stats.hpp"
 #include "analysis/stress_shape.hpp"
 #include "core/input_error.hpp"
 #include "core/rng_stream.hpp"
@@ -661,11 +662,6 @@ void fig5_orderings(Result& res, const ImpactSpec& s, const std::vector<PointRes
                "fraction of seeds with v_rms(0.95) > v_rms(0.8) > v_rms(0.9), the order of the paper's sigma_max values 1.56 > 0.894 > 0.568");
     res.scalar("v_rms_ratio_080_over_090_geomean", std::exp(r89), "1", "v_rms(0.8)/v_rms(0.9) at t_end, geometric mean over seeds (paper's factors: 3)");
     res.scalar("v_rms_ratio_080_over_095_geomean", std::exp(r895), "1", "v_rms(0.8)/v_rms(0.95) at t_end, geometric mean over seeds (paper's factors: 7)");
-}
-
-double median(std::vector<double> x) {
-    std::sort(x.begin(), x.end());
-    return x.empty() ? NAN : x.size() % 2 ? x[x.size() / 2] : 0.5 * (x[x.size() / 2 - 1] + x[x.size() / 2]);
 }
 
 // Fig. 5 left: two co-rotating eddies with small stresses inside.

@@ -17,12 +17,12 @@
 #include <chrono>
 #include <cmath>
 #include <gsl/gsl_fit.h>
-#include <gsl/gsl_statistics_double.h>
 #include <nlohmann/json.hpp>
 #include <numeric>
 #include <string>
 
 #include "analysis/curve_analysis.hpp"
+#include "analysis/seed_stats.hpp"
 #include "core/rng_stream.hpp"
 #include "data/spec.hpp"
 #include "engines/ed/ed_engine.hpp"
@@ -182,40 +182,19 @@ MeanCurve mean_curve(const std::vector<Trace>& seeds, const std::vector<double>&
         }
         if (v.size() != seeds.size()) break; // every seed must have reached x
         m.x.push_back(x);
-        m.mean.push_back(gsl_stats_mean(v.data(), 1, v.size()));
-        m.sem.push_back(v.size() > 1 ? gsl_stats_sd(v.data(), 1, v.size()) / std::sqrt(double(v.size())) : NAN);
+        const MeanSd ms = mean_sd(v);
+        m.mean.push_back(ms.mean);
+        m.sem.push_back(ms.sem);
     }
     return m;
 }
 
-double mean_of(const std::vector<double>& v) {
-    std::vector<double> w;
-    for (double x : v)
-        if (std::isfinite(x)) w.push_back(x);
-    return w.empty() ? NAN : gsl_stats_mean(w.data(), 1, w.size());
-}
-double sem_of(const std::vector<double>& v) {
-    std::vector<double> w;
-    for (double x : v)
-        if (std::isfinite(x)) w.push_back(x);
-    return w.size() > 1 ? gsl_stats_sd(w.data(), 1, w.size()) / std::sqrt(double(w.size())) : NAN;
-}
 template <class Row>
 std::vector<double> column(const std::vector<Row>& rows, double Row::*field) {
     std::vector<double> v;
     for (const Row& row : rows) v.push_back(row.*field);
     return v;
 }
-double median_of(std::vector<double> v) { // NaN counts as +infinity (never happened)
-    for (double& x : v)
-        if (std::isnan(x)) x = INFINITY;
-    std::sort(v.begin(), v.end());
-    if (v.empty()) return NAN;
-    const std::size_t h = v.size() / 2;
-    const double med = v.size() % 2 ? v[h] : 0.5 * (v[h - 1] + v[h]);
-    return std::isinf(med) ? NAN : med;
-}
-
 PowerLawFit fit_zeta(const std::vector<double>& x, const std::vector<double>& log10k, double lo, double hi) {
     std::vector<double> y;
     for (double l : log10k) y.push_back(std::pow(10.0, l));
@@ -365,11 +344,11 @@ std::vector<Fig8Row> report_fig8_rows(Result& res, const ParameterStudySpec& s, 
         const double r = s.fig8_r[a], cth = (1 - r * r) / 2;
         std::vector<Fig8Run> runs;
         for (const Trace& tr : sw.traces[sw.fig8_idx[a]]) runs.push_back(fig8_run(tr, cth, s));
-        const auto cs = column(runs, &Fig8Run::c), devs = column(runs, &Fig8Run::departure);
-        const Fig8Row& f = rows.emplace_back(Fig8Row{r, mean_of(cs), sem_of(cs), cth, mean_of(devs), sem_of(devs),
-                                                     median_of(column(runs, &Fig8Run::onset)),
-                                                     mean_of(column(runs, &Fig8Run::max_aniso)),
-                                                     mean_of(column(runs, &Fig8Run::early_aniso))});
+        const MeanSd c = mean_sd(column(runs, &Fig8Run::c)), dev = mean_sd(column(runs, &Fig8Run::departure));
+        const Fig8Row& f = rows.emplace_back(Fig8Row{r, c.mean, c.sem, cth, dev.mean, dev.sem,
+                                                     median(column(runs, &Fig8Run::onset), NonFinite::censored),
+                                                     mean_sd(column(runs, &Fig8Run::max_aniso)).mean,
+                                                     mean_sd(column(runs, &Fig8Run::early_aniso)).mean});
         const std::string rv = number_text(r), rl = "_r" + rv;
         res.scalar("c_fit" + rl, f.c_fit, "1", "fitted c of K/K0 = exp(-c C/N) over the first exp_fit_efolds, seed mean, r = " + rv);
         res.scalar("c_fit_err" + rl, f.c_err, "1", "its standard error over the seeds");
@@ -471,8 +450,8 @@ Fig9 report_fig9_rows(Result& res, const ParameterStudySpec& s, const Sweep& sw,
             sa.push_back(-fit_zeta(one.x, one.mean, e1[0], e1[1]).exponent);
             sc.push_back(-fit_zeta(one.x, one.mean, e2[0], e2[1]).exponent);
         }
-        row.z1e = sem_of(sa);
-        row.z2e = sem_of(sc);
+        row.z1e = mean_sd(sa).sem;
+        row.z2e = mean_sd(sc).sem;
         f.single_early.insert(f.single_early.end(), sa.begin(), sa.end());
         f.single_late.insert(f.single_late.end(), sc.begin(), sc.end());
         row.k_late = mean_at(f.mean_t[b], f.t_common, row.k_late_e);
@@ -497,17 +476,18 @@ void report_fig9_summary(Result& res, const Fig9& f) {
         {"zeta_late_err", &Fig9Row::z2e}, {"log10_K_over_K0_at_common_end", &Fig9Row::k_late},
         {"log10_K_over_K0_at_common_end_sem", &Fig9Row::k_late_e}, {"elastic_fraction_end", &Fig9Row::el_frac}};
     for (const auto& [name, field] : columns) t.add(name, "1").values = column(f.rows, field);
-    const auto z1 = column(f.rows, &Fig9Row::z1), z2 = column(f.rows, &Fig9Row::z2), z3 = column(f.rows, &Fig9Row::z3);
-    res.scalar("zeta_early_mean", mean_of(z1), "1", "early exponent averaged over the t_c values of Fig. 9");
-    res.scalar("zeta_early_sem", sem_of(z1), "1", "its standard error from the scatter over t_c");
-    res.scalar("zeta_late_mean", mean_of(z2), "1", "late exponent averaged over the t_c values of Fig. 9");
-    res.scalar("zeta_late_sem", sem_of(z2), "1", "its standard error from the scatter over t_c");
-    res.scalar("zeta_tail_mean", mean_of(z3), "1", "exponent of the seed-mean K over zeta_fit_tail, averaged over t_c");
-    res.scalar("zeta_tail_sem", sem_of(z3), "1", "its standard error from the scatter over t_c");
+    const MeanSd z1 = mean_sd(column(f.rows, &Fig9Row::z1)), z2 = mean_sd(column(f.rows, &Fig9Row::z2)),
+                 z3 = mean_sd(column(f.rows, &Fig9Row::z3));
+    res.scalar("zeta_early_mean", z1.mean, "1", "early exponent averaged over the t_c values of Fig. 9");
+    res.scalar("zeta_early_sem", z1.sem, "1", "its standard error from the scatter over t_c");
+    res.scalar("zeta_late_mean", z2.mean, "1", "late exponent averaged over the t_c values of Fig. 9");
+    res.scalar("zeta_late_sem", z2.sem, "1", "its standard error from the scatter over t_c");
+    res.scalar("zeta_tail_mean", z3.mean, "1", "exponent of the seed-mean K over zeta_fit_tail, averaged over t_c");
+    res.scalar("zeta_tail_sem", z3.sem, "1", "its standard error from the scatter over t_c");
     // Single-run scatter of the exponents (the paper's numbers come from single runs).
-    res.scalar("zeta_early_single_run_sd", sem_of(f.single_early) * std::sqrt(double(f.single_early.size())), "1",
+    res.scalar("zeta_early_single_run_sd", mean_sd(f.single_early).sem * std::sqrt(double(f.single_early.size())), "1",
                "standard deviation of the early exponent of single runs (all seeds and t_c)");
-    res.scalar("zeta_late_single_run_sd", sem_of(f.single_late) * std::sqrt(double(f.single_late.size())), "1",
+    res.scalar("zeta_late_single_run_sd", mean_sd(f.single_late).sem * std::sqrt(double(f.single_late.size())), "1",
                "standard deviation of the late exponent of single runs (all seeds and t_c)");
 }
 

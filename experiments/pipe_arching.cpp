@@ -35,6 +35,7 @@
 #include "analysis/crack_detector.hpp"
 #include "analysis/arch_waves.hpp"
 #include "analysis/disjoint_sets.hpp"
+#include "analysis/seed_stats.hpp"
 #include "core/rng_stream.hpp"
 #include "data/spec.hpp"
 #include "engines/ed/ed_engine.hpp"
@@ -52,6 +53,10 @@ namespace granrepro::experiments {
 
 namespace {
 
+enum class TcRule { either, both };    // Eq. (7) for a pair: elastic if either or both partners collided within t_c
+enum class TcFriction { drop, keep }; // what a TC-elastic collision does to mu and beta0
+void parse_choice(const std::string& s, TcRule& x) { x = s == "both" ? TcRule::both : TcRule::either; }
+void parse_choice(const std::string& s, TcFriction& x) { x = s == "keep" ? TcFriction::keep : TcFriction::drop; }
 // Read once from experiments/pipe-arching.toml, which holds every parameter's unit, range and source.
 struct PipeArchingSpec {
     long n_particles = 0, n_seeds = 0, crack_min_particles = 0, crack_min_above = 0;
@@ -60,7 +65,8 @@ struct PipeArchingSpec {
     double t_relax = 0, t_end = 0, frame_dt = 0, dist_dt = 0; // [s]
     double epsilon = 0, mu = 0, beta0 = 0, q = 0, t_c = 0;    // t_c [s]
     double epsilon_w = 0, mu_w = 0, beta0_w = 0;
-    std::string tc_rule, tc_friction;                         // "either"/"both", "drop"/"keep"
+    TcRule tc_rule = TcRule::either;
+    TcFriction tc_friction = TcFriction::drop;
     std::vector<double> snapshot_times, dist_times_before, dist_times_after; // [s]
     double hot_rate = 0;                                      // [1/s]
     double link = 0, wall_reach = 0, pressure_band = 0, crack_opening = 0; // [d]
@@ -283,7 +289,7 @@ EdEngine build_column(const Pipe& s, const std::vector<Vec2>& lat, std::uint64_t
     const EdConfig cfg{.lx = s.L, .ly = s.ly, .periodic_x = false, .periodic_y = false, .gravity = {0.0, -s.g},
                        .law = RoughDiskCollision{1.0, 0.0, -1.0, s.q},
                        .walls = {EdWall{0, 0.0, +1}, EdWall{0, s.L, -1}, EdWall{1, s.y_floor, +1}},
-                       .t_c = 0.0, .tc_both = s.tc_rule == "both", .tc_keep_friction = s.tc_friction == "keep"};
+                       .t_c = 0.0, .tc_both = s.tc_rule == TcRule::both, .tc_keep_friction = s.tc_friction == TcFriction::keep};
     return EdEngine(cfg, lat, vel, std::vector<double>(n, 0.5 * s.d), std::vector<double>(n, s.mass), {}, -s.t_relax);
 }
 
@@ -735,32 +741,13 @@ SeedRun run_seed(const Pipe& s, std::uint64_t seed, long index, bool figure) {
     return out;
 }
 
-// Quantile q of values where NaN means "did not happen before t_end" (ranked as +infinity).
-double censored_quantile(std::vector<double> v, double q) {
-    for (double& x : v)
-        if (std::isnan(x)) x = INFINITY;
-    std::sort(v.begin(), v.end());
-    if (v.empty()) return NAN;
-    const double pos = q * double(v.size() - 1);
-    const std::size_t lo = std::size_t(std::floor(pos)), hi = std::size_t(std::ceil(pos));
-    const double a = v[lo], b = v[hi];
-    if (!std::isfinite(a) || !std::isfinite(b)) return std::isfinite(a) && lo == hi ? a : NAN;
-    return a + (pos - double(lo)) * (b - a);
-}
 double fraction_below(const std::vector<double>& v, double x) {
     double k = 0;
     for (double y : v)
         if (!std::isnan(y) && y <= x + 1e-12) ++k;
     return k / double(v.size());
 }
-double median_finite(std::vector<double> v) {
-    std::erase_if(v, [](double x) { return !std::isfinite(x); });
-    if (v.empty()) return NAN;
-    std::sort(v.begin(), v.end());
-    const std::size_t k = v.size() / 2;
-    return v.size() % 2 ? v[k] : 0.5 * (v[k - 1] + v[k]);
-}
-
+// Over the finite values, from running sums (seed_stats' two-pass mean_sd differs in the last bits).
 struct MeanSem {
     double mean = NAN, sd = NAN, sem = NAN, n = 0;
 };
@@ -787,9 +774,9 @@ template <class Pred> double share_finite(const std::vector<double>& v, Pred pre
 // v̄ at t = 0 over seeds, after the elastic relaxation.
 void report_relaxation(Result& res, const std::vector<SeedRun>& runs) {
     const std::vector<double> v0s = per_seed(runs, &SeedRun::vbar0), vlate = per_seed(runs, &SeedRun::vbar_relax_late);
-    res.scalar("vbar_t0", median_finite(v0s), "m/s", "v̄ = sqrt(<v^2>) at t = 0, median over seeds");
+    res.scalar("vbar_t0", median(v0s), "m/s", "v̄ = sqrt(<v^2>) at t = 0, median over seeds");
     res.scalar("vbar_t0_run0", runs.front().vbar0, "m/s", "v̄ at t = 0, run 0");
-    res.scalar("vbar_relax_drift", median_finite(v0s) / median_finite(vlate) - 1, "1",
+    res.scalar("vbar_relax_drift", median(v0s) / median(vlate) - 1, "1",
                "v̄(0) over the mean v̄ of the last third of the relaxation, minus 1 (steadiness)");
 }
 
@@ -804,7 +791,7 @@ void report_fig14_times(Result& res, const PipeArchingSpec& s, const std::vector
         tt.push_back(t);
         v0.push_back(f0.per_time[k].value);
         e0.push_back(f0.per_time[k].error);
-        med.push_back(median_finite(per_seed(runs, [&](const SeedRun& r) { return r.per_time.at(k).value; })));
+        med.push_back(median(per_seed(runs, [&](const SeedRun& r) { return r.per_time.at(k).value; })));
         const std::string what = k < n_before ? "A_" : "B_", eq = k < n_before ? "Eq. (21)" : "Eq. (22)";
         res.scalar(what + tlabel(t), v0.back(), "1/s", eq + " fit at this time alone, run 0");
         res.scalar(what + "err_" + tlabel(t), e0.back(), "1/s", "its standard error");
@@ -831,11 +818,11 @@ void report_fig14_fits(Result& res, const PipeArchingSpec& s, const std::vector<
     // Deviance of the exponential over that of the power law: < 1 where Eq. (21) fits better.
     const auto ratio_early = per_seed(runs, [](const SeedRun& r) { return r.dev_exp_early / r.dev_pow_early; });
     const auto ratio_late = per_seed(runs, [](const SeedRun& r) { return r.dev_exp_late / r.dev_pow_late; });
-    res.scalar("fig14_times_before_median", median_finite(per_seed(runs, &SeedRun::times_before)), "1", "Fig. 14(a) times before the run's first arch, pooled into A, median over seeds");
-    res.scalar("fig14_times_after_median", median_finite(per_seed(runs, &SeedRun::times_after)), "1", "Fig. 14(b) times after the run's first arch, pooled into B, median over seeds");
-    res.scalar("A_fit_median_seeds", median_finite(As), "1/s", "Eq. (21) A, median over seeds");
-    res.scalar("B_fit_median_seeds", median_finite(Bs), "1/s", "Eq. (22) B, median over seeds");
-    res.scalar("B_over_A_median_seeds", median_finite(BA), "1", "B/A per seed, median (unit-free)");
+    res.scalar("fig14_times_before_median", median(per_seed(runs, &SeedRun::times_before)), "1", "Fig. 14(a) times before the run's first arch, pooled into A, median over seeds");
+    res.scalar("fig14_times_after_median", median(per_seed(runs, &SeedRun::times_after)), "1", "Fig. 14(b) times after the run's first arch, pooled into B, median over seeds");
+    res.scalar("A_fit_median_seeds", median(As), "1/s", "Eq. (21) A, median over seeds");
+    res.scalar("B_fit_median_seeds", median(Bs), "1/s", "Eq. (22) B, median over seeds");
+    res.scalar("B_over_A_median_seeds", median(BA), "1", "B/A per seed, median (unit-free)");
     // The paper's numbers come from one run: where they fall in our distribution over seeds.
     res.scalar("B_over_A_fraction_below_paper", share_finite(BA, [](double y) { return y <= 14.0; }), "1",
                "fraction of seeds with B/A <= 14, the paper's value (its percentile in our distribution)");
@@ -848,19 +835,19 @@ void report_fig14_fits(Result& res, const PipeArchingSpec& s, const std::vector<
     res.scalar("B_over_A_seed_sd", ba.sd, "1", "standard deviation of B/A over seeds");
     // The two readings of the paper's 'A = 1, B = 14 s^-1' (Sec. 5): the axis in units of
     // 1e3 1/s, or in collisions per window dist_dt.
-    res.scalar("A_in_1e3_per_s", median_finite(As) / 1e3, "1", "A, median over seeds, in 1e3 1/s (reading 1: paper 1)");
-    res.scalar("B_in_1e3_per_s", median_finite(Bs) / 1e3, "1", "B, median over seeds, in 1e3 1/s (reading 1: paper 14)");
-    res.scalar("A_per_window", median_finite(As) * ddt, "1", "A, median over seeds, in collisions per dist_dt (reading 2: paper 1)");
-    res.scalar("B_per_window", median_finite(Bs) * ddt, "1", "B, median over seeds, in collisions per dist_dt (reading 2: paper 14)");
+    res.scalar("A_in_1e3_per_s", median(As) / 1e3, "1", "A, median over seeds, in 1e3 1/s (reading 1: paper 1)");
+    res.scalar("B_in_1e3_per_s", median(Bs) / 1e3, "1", "B, median over seeds, in 1e3 1/s (reading 1: paper 14)");
+    res.scalar("A_per_window", median(As) * ddt, "1", "A, median over seeds, in collisions per dist_dt (reading 2: paper 1)");
+    res.scalar("B_per_window", median(Bs) * ddt, "1", "B, median over seeds, in collisions per dist_dt (reading 2: paper 14)");
     Table& ft = res.table("fits", "Eqs. (21), (22) pooled over each panel's four times, as drawn in Fig. 14 and checked: median over seeds, standard error of the mean over seeds, run 0 with its fit error");
     const std::vector<std::pair<const char*, double>> cols = {
-        {"A", median_finite(As)}, {"A_sem", a.sem}, {"A_run0", f0.A}, {"A_run0_err", f0.A_err},
-        {"B", median_finite(Bs)}, {"B_sem", b.sem}, {"B_run0", f0.B}, {"B_run0_err", f0.B_err}};
+        {"A", median(As)}, {"A_sem", a.sem}, {"A_run0", f0.A}, {"A_run0_err", f0.A_err},
+        {"B", median(Bs)}, {"B_sem", b.sem}, {"B_run0", f0.B}, {"B_run0_err", f0.B_err}};
     for (const auto& [name, x] : cols) ft.add(name, "1/s").values = {x};
     ft.add({{"seeds", "1", {double(runs.size())}}, {"dist_dt", "s", {ddt}}});
-    res.scalar("exp_over_pow_deviance_before", median_finite(ratio_early), "1",
+    res.scalar("exp_over_pow_deviance_before", median(ratio_early), "1",
                "deviance of Eq. (21) over that of Eq. (22), Fig. 14(a) times, median over seeds (< 1: exponential fits better)");
-    res.scalar("exp_over_pow_deviance_after", median_finite(ratio_late), "1",
+    res.scalar("exp_over_pow_deviance_after", median(ratio_late), "1",
                "the same at the Fig. 14(b) times (> 1: power law fits better)");
 }
 
@@ -902,9 +889,9 @@ void report_arch_times(Result& res, const std::vector<SeedRun>& runs) {
     Table& cd = res.table("arch_time_cdf", "fraction of seeds with an arch by time t");
     cd.add({{"t_arch", "s", tt}, {"fraction", "1", fr}});
     auto quartiles = [&](const std::string& name, const std::vector<double>& v, const std::string& what) {
-        res.scalar(name + "_q25", censored_quantile(v, 0.25), "s", what + ", lower quartile over seeds (none = +inf)");
-        res.scalar(name + "_median", censored_quantile(v, 0.5), "s", what + ", median over seeds");
-        res.scalar(name + "_q75", censored_quantile(v, 0.75), "s", what + ", upper quartile over seeds");
+        res.scalar(name + "_q25", quantile(v, 0.25, NonFinite::censored), "s", what + ", lower quartile over seeds (none = +inf)");
+        res.scalar(name + "_median", quantile(v, 0.5, NonFinite::censored), "s", what + ", median over seeds");
+        res.scalar(name + "_q75", quantile(v, 0.75, NonFinite::censored), "s", what + ", upper quartile over seeds");
     };
     quartiles("t_arch", ta, "first arch");
     quartiles("t_precursor", tp, "first hot wall disk of the first arch");
@@ -924,12 +911,12 @@ void report_arch_times(Result& res, const std::vector<SeedRun>& runs) {
     // Section 5 takes P(N_c) at 0.02-0.05 s as "before the first arch (or crack) occurs".
     res.scalar("arch_by_0.05_fraction", fraction_below(ta, 0.05), "1",
                "fraction of seeds whose first arch formed by 0.05 s, the last Fig. 14(a) time");
-    res.scalar("arch_height_median", median_finite(per_seed(runs, &SeedRun::y_arch)), "d", "lab height of the first arch above the removed floor, median");
-    res.scalar("arch_initial_height_median", median_finite(per_seed(runs, &SeedRun::y0_arch)), "d", "initial (t = 0) height of the first arch's disks, median");
-    res.scalar("crack_initial_height_median", median_finite(per_seed(runs, &SeedRun::y0_crack)), "d", "initial height of the disks bounding the first crack, median");
-    res.scalar("precursor_lead_median", median_finite(precursor_lead), "s", "first arch minus its first hot wall disk, median (paper: 0.008 s)");
-    res.scalar("crack_after_arch_median", median_finite(crack_after_arch), "s", "first crack minus first arch, median over seeds with both (paper: ~0.004 s)");
-    res.scalar("crack_arch_height_offset_median", median_finite(crack_near_arch), "d",
+    res.scalar("arch_height_median", median(per_seed(runs, &SeedRun::y_arch)), "d", "lab height of the first arch above the removed floor, median");
+    res.scalar("arch_initial_height_median", median(per_seed(runs, &SeedRun::y0_arch)), "d", "initial (t = 0) height of the first arch's disks, median");
+    res.scalar("crack_initial_height_median", median(per_seed(runs, &SeedRun::y0_crack)), "d", "initial height of the disks bounding the first crack, median");
+    res.scalar("precursor_lead_median", median(precursor_lead), "s", "first arch minus its first hot wall disk, median (paper: 0.008 s)");
+    res.scalar("crack_after_arch_median", median(crack_after_arch), "s", "first crack minus first arch, median over seeds with both (paper: ~0.004 s)");
+    res.scalar("crack_arch_height_offset_median", median(crack_near_arch), "d",
                "|initial height of first crack - that of first arch|, median over seeds with both");
     const SeedRun& f0 = runs.front();
     res.scalar("t_arch_run0", f0.t_arch, "s", "first arch, run 0");
@@ -941,15 +928,15 @@ void report_arch_times(Result& res, const std::vector<SeedRun>& runs) {
 
 // The section's other statements (Sec. 5), per seed, then over seeds.
 void report_section(Result& res, const std::vector<SeedRun>& runs) {
-    auto median = [&](double SeedRun::*f) { return median_finite(per_seed(runs, f)); };
-    res.scalar("fluid_layers_median", median(&SeedRun::fluid_layers), "1",
+    auto med = [&](double SeedRun::*f) { return median(per_seed(runs, f)); };
+    res.scalar("fluid_layers_median", med(&SeedRun::fluid_layers), "1",
                "top rows at t = 0 in which at least half of the disks lost a lattice neighbour, median");
     double broken = 0;
     for (double x : per_seed(runs, &SeedRun::lattice_broken_below)) broken = std::max(broken, x);
     res.scalar("lattice_broken_below_max", broken, "1", "share of the disks below those rows that lost a lattice neighbour, largest over seeds");
-    res.scalar("react_lag_median", median(&SeedRun::react_lag), "s",
+    res.scalar("react_lag_median", med(&SeedRun::react_lag), "s",
                "first frame with half of the initiating disk's neighbours hot, minus its first hot frame, median (paper: 0.004 s)");
-    res.scalar("arch_left_4ms_median", median(&SeedRun::arch_left_4ms), "1",
+    res.scalar("arch_left_4ms_median", med(&SeedRun::arch_left_4ms), "1",
                "share of the first arch's disks still hot 4 ms after it spanned the width, median");
     // Later arches above and below are 0 or 1, and NaN together (no frame 4 ms after the first).
     const auto above = per_seed(runs, &SeedRun::arch_above_later), below = per_seed(runs, &SeedRun::arch_below_later);
@@ -958,27 +945,27 @@ void report_section(Result& res, const std::vector<SeedRun>& runs) {
     res.scalar("arch_above_later_fraction", share_finite(above, one), "1", "seeds with a later arch (after the first + 4 ms) more than arch_separation above the first");
     res.scalar("arch_below_later_fraction", share_finite(below, one), "1", "the same below");
     res.scalar("arch_above_and_below_fraction", share_finite(both, one), "1", "seeds with later arches both above and below");
-    res.scalar("plug_wall_load_median", median(&SeedRun::plug_wall_load), "1",
+    res.scalar("plug_wall_load_median", med(&SeedRun::plug_wall_load), "1",
                "wall impulse on the arch's plug within 4 ms of the arch over the plug's weight times that time, median (1: the walls hold the plug)");
     const auto rel = per_seed(runs, [](const SeedRun& r) { return r.plug_wall_load / r.friction_share; });
-    res.scalar("plug_wall_load_over_mean_median", median_finite(rel), "1",
+    res.scalar("plug_wall_load_over_mean_median", median(rel), "1",
                "plug_wall_load over the column's wall share over the whole fall, per seed, median (> 1: the walls hold the plug harder than the column)");
-    res.scalar("arch_brake_median", median(&SeedRun::arch_brake), "m/s",
+    res.scalar("arch_brake_median", med(&SeedRun::arch_brake), "m/s",
                "largest gain of v_y(plug) - v_y(material below) within arch_window of the arch, median (> 0: the plug falls slower)");
-    res.scalar("opening_below_median", median(&SeedRun::opening_below), "d",
+    res.scalar("opening_below_median", med(&SeedRun::opening_below), "d",
                "largest growth of the distance between plug and material below within arch_window of the arch, median");
-    res.scalar("opening_max_before_median", median(&SeedRun::opening_max_before), "d",
+    res.scalar("opening_max_before_median", med(&SeedRun::opening_max_before), "d",
                "widest wall-to-wall crack before the first arch, median over seeds (the falling column's own gaps)");
-    res.scalar("opening_max_after_median", median(&SeedRun::opening_max_after), "d",
+    res.scalar("opening_max_after_median", med(&SeedRun::opening_max_after), "d",
                "widest wall-to-wall crack within arch_window after the first arch, median");
-    res.scalar("opening_max_all_median", median(&SeedRun::opening_max_all), "d",
+    res.scalar("opening_max_all_median", med(&SeedRun::opening_max_all), "d",
                "widest wall-to-wall crack at any frame from t_detect_min on, median over seeds");
     // The distribution of the widest gap, not only crack yes/no (issue 27).
     for (const auto& [name, f] : {std::pair{"opening_max_all", &SeedRun::opening_max_all}, std::pair{"opening_max_after", &SeedRun::opening_max_after}}) {
         std::vector<double> v = per_seed(runs, f);
         std::erase_if(v, [](double x) { return !std::isfinite(x); });
-        res.scalar(std::string(name) + "_q25", v.empty() ? NAN : censored_quantile(v, 0.25), "d", "its lower quartile over seeds");
-        res.scalar(std::string(name) + "_q75", v.empty() ? NAN : censored_quantile(v, 0.75), "d", "its upper quartile over seeds");
+        res.scalar(std::string(name) + "_q25", v.empty() ? NAN : quantile(v, 0.25, NonFinite::censored), "d", "its lower quartile over seeds");
+        res.scalar(std::string(name) + "_q75", v.empty() ? NAN : quantile(v, 0.75, NonFinite::censored), "d", "its upper quartile over seeds");
         res.scalar(std::string(name) + "_max", v.empty() ? NAN : *std::max_element(v.begin(), v.end()), "d", "its largest value over seeds");
     }
     // Successive waves (arch_aftermath): the share of steps that rise, pooled over seeds, and the
@@ -991,9 +978,9 @@ void report_section(Result& res, const std::vector<SeedRun>& runs) {
                "share of those steps in which the new wave starts higher than the previous one");
     res.scalar("wave_stronger_fraction", share_finite(per_seed(runs, &SeedRun::wave_stronger), [](double y) { return y == 1.0; }), "1",
                "seeds in which a later wave (arch more than arch_separation from the first, after its first 4 ms) had more hot disks than the first arch, among seeds with an arch");
-    res.scalar("crack_below_arch_median", median(&SeedRun::crack_below_arch), "d",
+    res.scalar("crack_below_arch_median", med(&SeedRun::crack_below_arch), "d",
                "initial height of the first arch minus that of the first crack, median (> 0: crack below)");
-    res.scalar("crack_at_initiator_median", median(&SeedRun::crack_at_initiator), "d",
+    res.scalar("crack_at_initiator_median", med(&SeedRun::crack_at_initiator), "d",
                "crack course at the initiating disk's wall minus the disk's height, at the crack's first frame, median");
     // Disks at the walls slow down (Sec. 5): v_y(wall) - v_y(inside) in the plug at the arch,
     // against the same at the window's start; the mean difference over seeds and its z-score.
@@ -1002,7 +989,7 @@ void report_section(Result& res, const std::vector<SeedRun>& runs) {
     res.scalar("wall_slowdown_arch_mean", ws.mean, "m/s", "v_y(wall disks) - v_y(inner disks) of the plug at the arch, mean over seeds (> 0: wall disks slower)");
     res.scalar("wall_slowdown_gain_mean", dd.mean, "m/s", "the same minus its value arch_window before the arch, mean over seeds");
     res.scalar("wall_slowdown_gain_z", dd.sem > 0 ? dd.mean / dd.sem : NAN, "1", "that mean over its standard error (seed scatter)");
-    res.scalar("wall_load_peak_median", median(&SeedRun::wall_load_peak), "1",
+    res.scalar("wall_load_peak_median", med(&SeedRun::wall_load_peak), "1",
                "largest 5-frame mean of the walls' share of the weight, median over seeds");
 }
 
@@ -1011,10 +998,10 @@ void report_costs(Result& res, const std::vector<SeedRun>& runs) {
     const auto resid = per_seed(runs, [](const SeedRun& r) { return std::abs(r.momentum_residual); });
     res.scalar("momentum_balance_residual_max", *std::max_element(resid.begin(), resid.end()), "1",
                "max over seeds of |dP_y - (-M g t + J_wall)| / (M g t) over the fall");
-    res.scalar("wall_friction_share", median_finite(per_seed(runs, &SeedRun::friction_share)), "1", "side-wall impulse over M g t_end, median (0: free fall)");
-    res.scalar("seconds_per_seed_median", median_finite(per_seed(runs, &SeedRun::wall_seconds)), "s", "wall time of one seed (relaxation + fall)");
-    res.scalar("collisions_per_seed_median", median_finite(per_seed(runs, &SeedRun::collisions)), "1", "pair collisions during the fall, median");
-    res.scalar("tc_elastic_share_median", median_finite(per_seed(runs, &SeedRun::elastic_share)), "1", "share of the fall's pair collisions made elastic by TC");
+    res.scalar("wall_friction_share", median(per_seed(runs, &SeedRun::friction_share)), "1", "side-wall impulse over M g t_end, median (0: free fall)");
+    res.scalar("seconds_per_seed_median", median(per_seed(runs, &SeedRun::wall_seconds)), "s", "wall time of one seed (relaxation + fall)");
+    res.scalar("collisions_per_seed_median", median(per_seed(runs, &SeedRun::collisions)), "1", "pair collisions during the fall, median");
+    res.scalar("tc_elastic_share_median", median(per_seed(runs, &SeedRun::elastic_share)), "1", "share of the fall's pair collisions made elastic by TC");
 }
 
 Result run(const RunContext& ctx) {

@@ -9,11 +9,11 @@
 #include <ctime>
 #include <filesystem>
 #include <fstream>
-#include <gsl/gsl_statistics_double.h>
 #include <string>
 #include <unistd.h>
 #include <vector>
 
+#include "analysis/seed_stats.hpp"
 #include "core/spawn.hpp"
 #include "core/stable_hash.hpp"
 #include "scenarios/pipe_setup.hpp"
@@ -79,8 +79,6 @@ std::uint64_t state_hash(const Engine& eng) {
         bits.append(reinterpret_cast<const char*>(v->data()), v->size() * sizeof(double));
     return fnv1a64(bits);
 }
-
-double median(std::vector<double> v) { return v.empty() ? NAN : gsl_stats_median(v.data(), 1, v.size()); }
 
 // ---- LAMMPS ----------------------------------------------------------------------------------
 

@@ -5,7 +5,6 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
-#include <gsl/gsl_statistics_double.h>
 #include <numeric>
 #include <fcntl.h>
 #include <regex>
@@ -13,6 +12,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include "analysis/seed_stats.hpp"
 #include "core/input_error.hpp"
 #include "harness/experiment.hpp"
 
@@ -45,8 +45,6 @@ double timed_run(const std::vector<std::string>& argv) {
                                  " ... (rerun it by hand to see why)");
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
-
-double median(std::vector<double> v) { return gsl_stats_median(v.data(), 1, v.size()); }
 
 } // namespace
 

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <vector>
 
+#include "analysis/seed_stats.hpp"
 #include "core/input_error.hpp"
 #include "data/parameter_set.hpp"
 #include "bench/hard_disk_bench.hpp"
@@ -16,11 +17,6 @@
 namespace granrepro {
 
 namespace {
-
-double median(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    return v[v.size() / 2];
-}
 
 // Median over opt.repeats runs of each quantity that `run` returns.
 template <class Run>

@@ -4,13 +4,13 @@
 #pragma once
 #include <array>
 #include <cmath>
-#include <numbers>
 #include <string>
 #include <vector>
 
 #include "engines/soft/few_body_engine.hpp"
 #include "data/parameter_set.hpp"
 #include "models/coulomb_shear.hpp"
+#include "models/linear_spring_dashpot.hpp"
 
 namespace granrepro {
 
@@ -50,6 +50,7 @@ struct ImpactShotSpec {
     // Centre distance at which the free grain touches a wall grain [m].
     double reach() const { return 0.5 * (d_free + d_wall); }
     CoulombShear shear() const { return {mu, friction_normal}; }
+    LinearSpringDashpot law() const { return {k_N, gamma_N}; }
     // A shot of this free grain from (x0, 0) at (-vx_toward, vy); a single wall grain unless
     // wall_spacing is set.
     ImpactSetup shot(double x0, double vx_toward, double vy, double dt) const {
@@ -70,9 +71,8 @@ inline double validate_free_wall_law(const ParameterSet& p, const ImpactShotSpec
         p.reject(std::vector<std::string>{"gamma_N", "k_N", "m_free"},
                  "over-damped free-wall contact; gamma_N must be below 2 sqrt(k_N/m_free) = " +
                      number_text(2 * std::sqrt(k / m)) + " 1/s so that e_N is in (0, 1]");
-    const double w2 = k / m - 0.25 * g * g;
-    const double dt = std::numbers::pi / std::sqrt(w2) / s.steps_per_contact;
-    if (!(dt > 0 && std::isfinite(dt)) || !(w2 < INFINITY))
+    const double dt = s.law().collision_time(m) / s.steps_per_contact;
+    if (!(dt > 0 && std::isfinite(dt)))
         p.reject(std::vector<std::string>{"k_N", "m_free", "steps_per_contact"},
                  "the time step t_col/steps_per_contact (Eq. 4) is " + number_text(dt) + " s, not a usable number");
     return dt;

@@ -49,12 +49,16 @@ bool pipe_lattice_fits(const PipeSpec& s) {
     return long(lattice_sites(s, n).size()) >= n;
 }
 
-PipeEngine<LinearSpringDashpot, CoulombShear> build_pipe(const PipeSpec& s) {
-    const LinearSpringDashpot law = pipe_law(s.k_N, s.e_N, s.m_mean);
+double pipe_time_step(const PipeSpec& s, const LinearSpringDashpot& law) {
     const double d_min = s.d_mean * (1 - s.polydispersity);
     const double m_min = s.m_mean * (d_min / s.d_mean) * (d_min / s.d_mean);
-    const double dt = law.collision_time(0.5 * m_min) / s.steps_per_contact; // stiffest pair, Eq. (5)
-    PipeEngine<LinearSpringDashpot, CoulombShear> eng(law, CoulombShear{s.mu, s.friction_normal}, s.geo, dt, s.skin);
+    return law.collision_time(0.5 * m_min) / s.steps_per_contact;
+}
+
+PipeEngine<LinearSpringDashpot, CoulombShear> build_pipe(const PipeSpec& s) {
+    const LinearSpringDashpot law = pipe_law(s.k_N, s.e_N, s.m_mean);
+    PipeEngine<LinearSpringDashpot, CoulombShear> eng(law, CoulombShear{s.mu, s.friction_normal}, s.geo,
+                                                      pipe_time_step(s, law), s.skin);
     RngStream rng(s.seed, s.stream);
     const long n = pipe_grain_count(s);
     std::vector<std::pair<double, double>> sites = lattice_sites(s, n);

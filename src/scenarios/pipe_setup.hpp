@@ -33,8 +33,10 @@ LinearSpringDashpot pipe_law(double k_N, double e_N, double m_mean);
 
 // Triangular lattice between the wall crests, N sites chosen at random; diameters uniform in
 // d_mean (1 ± polydispersity), masses ∝ d^2 (uniform areal density) with m(d_mean) = m_mean.
-// dt = t_col / steps_per_contact of the stiffest (lightest free-free) pair, Eq. (5).
+// dt = pipe_time_step(s, pipe_law(s.k_N, s.e_N, s.m_mean)): t_col / steps_per_contact of the
+// stiffest (lightest free-free) pair under that law, Eq. (5) [s].
 PipeEngine<LinearSpringDashpot, CoulombShear> build_pipe(const PipeSpec& s);
+double pipe_time_step(const PipeSpec& s, const LinearSpringDashpot& law);
 
 // The number of grains build_pipe places (area fraction phi of the channel between the crests),
 // and whether its start lattice holds them: the up-front check of phi.
