@@ -582,7 +582,7 @@ double cn_jump_factor(const Trace& tr) {
         for (std::size_t j = i >= 8 ? i - 8 : 0; j < std::min(rate.size(), i + 9); ++j)
             if (j != i && std::isfinite(rate[j])) nb.push_back(rate[j]);
         if (nb.size() < 8) continue;
-        const double f = rate[i] / median_of(nb);
+        const double f = rate[i] / median(nb, NonFinite::censored);
         if (std::isfinite(f)) best = std::isnan(best) ? f : std::max(best, f);
     }
     return best;
@@ -598,8 +598,8 @@ void report_cn_jumps(Result& res, const ParameterStudySpec& s, const Sweep& sw) 
         for (const Trace& tr : sw.traces[p]) f.push_back(cn_jump_factor(tr));
         pr.push_back(sw.points[p].r);
         ptc.push_back(sw.points[p].t_c);
-        mean.push_back(mean_of(f));
-        sem.push_back(sem_of(f));
+        mean.push_back(mean_sd(f).mean);
+        sem.push_back(mean_sd(f).sem);
     }
     std::vector<double> strong, weak, diff;
     for (long k = 0; k < s.seeds; ++k) {
@@ -614,11 +614,11 @@ void report_cn_jumps(Result& res, const ParameterStudySpec& s, const Sweep& sw) 
         weak.push_back(jw);
         diff.push_back(js - jw);
     }
-    res.scalar("cn_jump_strong_mean", mean_of(strong), "1", "seed mean of the largest C/N jump factor over the Fig. 8 runs with r <= 0.6");
-    res.scalar("cn_jump_weak_mean", mean_of(weak), "1", "seed mean of the largest C/N jump factor over the Fig. 8 runs with r >= 0.9");
-    res.scalar("cn_jump_strong_minus_weak_z", mean_of(diff) / sem_of(diff), "1",
+    res.scalar("cn_jump_strong_mean", mean_sd(strong).mean, "1", "seed mean of the largest C/N jump factor over the Fig. 8 runs with r <= 0.6");
+    res.scalar("cn_jump_weak_mean", mean_sd(weak).mean, "1", "seed mean of the largest C/N jump factor over the Fig. 8 runs with r >= 0.9");
+    res.scalar("cn_jump_strong_minus_weak_z", mean_sd(diff).mean / mean_sd(diff).sem, "1",
                "seed mean of (strong - weak) jump factor over its standard error (paired by seed)");
-    res.scalar("cn_jump_strong_over_weak", mean_of(strong) / mean_of(weak), "1", "cn_jump_strong_mean / cn_jump_weak_mean");
+    res.scalar("cn_jump_strong_over_weak", mean_sd(strong).mean / mean_sd(weak).mean, "1", "cn_jump_strong_mean / cn_jump_weak_mean");
     Table& t = res.table("cn_jumps", "largest jump of the normalised collision rate (dC/N/dt)/sqrt(K/K0) over its 16 neighbours, per point (seed mean)");
     t.add({{"r", "1", pr}, {"t_c", "s", ptc}, {"jump_factor", "1", mean}, {"jump_factor_sem", "1", sem}});
 }
