@@ -14,9 +14,9 @@ jobs=$(nproc)
 # configuration that loses tests (e.g. GRANREPRO_TESTS=OFF, a failed gtest discovery) fails here
 # instead of passing with "No tests were found".
 min_unit=185
-min_integration=98
+min_integration=102
 min_validation=25
-min_repro=29
+min_repro=46
 min_sweep=12
 min_report=3
 

@@ -14,6 +14,7 @@
 
 #include "cli/bench.hpp"
 #include "cli/report.hpp"
+#include "cli/verify_command.hpp"
 #include "core/input_error.hpp"
 #include "core/interrupt.hpp"
 #include "core/provenance.hpp"
@@ -346,6 +347,8 @@ static int run_main(int argc, char** argv) {
         if (!missing.empty())
             std::fprintf(stderr, "granrepro: export --all: no results in %s for: %s\n", common.out.c_str(), missing.c_str());
     });
+
+    add_verify_command(app, rc);
 
     CLI::App* all = app.add_subcommand("all", "run every experiment, render every figure, check every claim");
     common.add_to(all, false);

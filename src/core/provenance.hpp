@@ -8,6 +8,9 @@
 
 namespace granrepro {
 const char* code_version();
+// "sha256:<16 hex digits>" over the sources and experiment files that decide what a run computes
+// (cmake/WriteVersion.cmake lists them; expected/ is not among them). Recorded in every result.
+const char* physics_hash();
 // {"compiler", "GCC 12.2.0"}, {"hdf5", "1.10.8"}, {"fftw", "fftw-3.3.10-sse2-avx"}, {"gsl", "2.7.1"}
 std::vector<std::pair<std::string, std::string>> library_versions();
 } // namespace granrepro

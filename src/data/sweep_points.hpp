@@ -4,6 +4,8 @@
 // Filled by harness/distributed_sweep (computed and resumed points alike), written by io.
 #pragma once
 #include <cstdint>
+#include <exception>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -33,6 +35,26 @@ struct SweepPoint {
 
 struct SweepPoints {
     std::vector<SweepPoint> points; // in the order the sweeps ran, each sweep by index
+};
+
+// `granrepro verify`: rerun one point of a stored sweep (SweepPlan::Mode::Verify). The sweep
+// computes only `point`; if `aggregate`, it returns every point (the others from `stored`) so
+// the experiment builds its scalars as the run did, else it throws PointRerunDone.
+struct PointRerun {
+    std::string sweep;                    // the label of the sweep that holds the point
+    long point = 0;
+    bool aggregate = false;
+    std::map<long, nlohmann::json> stored; // the other points' outcomes, for aggregate
+    // Filled by the sweep:
+    bool computed = false;
+    long count = 0;          // points in the sweep
+    std::string inputs;      // the point's inputs fingerprint now
+    nlohmann::json outcome;  // as the results store it (through JSON text)
+    PointCost cost;
+};
+
+struct PointRerunDone : std::exception {
+    const char* what() const noexcept override { return "sweep point recomputed"; }
 };
 
 } // namespace granrepro

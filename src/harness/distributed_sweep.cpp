@@ -143,6 +143,29 @@ SweepResult distributed_sweep(const RunContext& ctx, const std::string& label, c
     }
 #endif
     const long n = long(order.size());
+    if (ctx.sweep.mode == SweepPlan::Mode::Verify) {
+        PointRerun& v = *ctx.sweep.rerun;
+        if (label != v.sweep)
+            throw InputError("verify: the results store sweep '" + v.sweep + "' but the experiment now sweeps '" + label + "'");
+        if (v.point < 0 || v.point >= n)
+            throw InputError("--point " + std::to_string(v.point) + ": the sweep " + label + " now has " + std::to_string(n) +
+                             " points (0 to " + std::to_string(n - 1) + ")");
+        v.count = n;
+        v.inputs = sweep_point_inputs_hash(ctx, label, v.point, n);
+        auto [value, cost] = timed(compute, v.point);
+        v.outcome = nlohmann::json::parse(value.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace));
+        v.cost = cost;
+        v.computed = true;
+        if (!v.aggregate) throw PointRerunDone{};
+        SweepResult out;
+        out.cpu_seconds.assign(std::size_t(n), -1.0);
+        for (long i = 0; i < n; ++i) {
+            if (i == v.point) out.points.push_back(v.outcome);
+            else if (const auto it = v.stored.find(i); it != v.stored.end()) out.points.push_back(it->second);
+            else throw InputError("verify: the results do not store point " + std::to_string(i) + " of sweep " + label);
+        }
+        return out;
+    }
     std::optional<SweepCheckpoint> checkpoint;
     if (files == PointFiles::Saved) checkpoint.emplace(ctx, label);
     SweepResult out;

@@ -19,8 +19,10 @@ struct SweepPlan {
         All,    // compute every point not in the checkpoint (with MPI: spread over the ranks)
         Shard,  // --points I/N: compute shard I of N into the checkpoint, then stop
         Gather, // `gather`: compute nothing; every point must be in the checkpoint
+        Verify, // `verify`: compute one point (rerun), no checkpoint (data/sweep_points.hpp)
     };
     Mode mode = Mode::All;
+    PointRerun* rerun = nullptr; // Verify
     int shard = 1, shards = 1; // 1 <= shard <= shards
     int ranks = 1;             // MPI ranks serving this sweep (1: this process alone)
 };

@@ -161,6 +161,7 @@ bool check_data_file(const fs::path& file, const std::string& name, const fs::pa
         same("scale", f.read_string_attr("scale"), false);
         same("seed", seed_of(f), false);
         if (f.has_attr("code_version")) same("code_version", f.read_string_attr("code_version"), true);
+        if (f.has_attr("physics_hash")) same("physics_hash", f.read_string_attr("physics_hash"), true);
         const bool hashed = version >= 2 || summary.value("schema_version", 0) >= 2;
         if (hashed) {
             if (!f.has_attr("summary_json_hash"))
@@ -285,7 +286,7 @@ int run_experiment(const std::string& name, const RunOptions& opt, VerdictCounts
     if (stage) {
         run_log().open(stage->path() / "run.log");
         run_log().line("command: " + opt.command_line);
-        run_log().line(std::string("granrepro ") + code_version() + "; data files from " + project_root().string());
+        run_log().line(std::string("granrepro ") + code_version() + " (physics " + physics_hash() + "); data files from " + project_root().string());
         run_log().line(std::string("experiment ") + name + ", scale " + to_string(opt.scale) + ", seed " +
                        std::to_string(opt.seed) + ", threads " + std::to_string(opt.threads));
         for (const auto& p : params.all())
@@ -476,6 +477,17 @@ bool has_results(const std::string& name, const fs::path& out) { return fs::exis
 std::vector<Claim> experiment_claims(const std::string& name) {
     const ExperimentInfo info = experiment_info(name);
     return load_claims(expected_file(name), name, &info.outputs);
+}
+
+nlohmann::json read_checked_summary(const std::string& name, const fs::path& out, bool* verified) {
+    const fs::path summary_path = out / name / "summary.json";
+    if (!fs::exists(summary_path))
+        throw InputError("no results of " + name + " in " + (out / name).string() + "; run `granrepro " + name +
+                         "` first");
+    nlohmann::json summary = read_summary(summary_path, name);
+    const bool v = check_data_file(out / name / "data.h5", name, summary_path, summary);
+    if (verified) *verified = v;
+    return summary;
 }
 
 int check_experiment(const std::string& name, const fs::path& out, const CheckOptions& opt, VerdictCounts* totals) {

@@ -138,6 +138,7 @@ void write_result_h5(const std::filesystem::path& file, const Provenance& prov, 
     f.attr("scale", std::string(to_string(prov.scale)));
     f.attr_u64("seed", prov.seed);
     f.attr("code_version", std::string(code_version()));
+    f.attr("physics_hash", std::string(physics_hash()));
     f.attr("wall_time_s", prov.wall_time_s);
     f.attr("threads", long(prov.threads));
     f.attr("created_utc", utc_now());
@@ -245,7 +246,7 @@ nlohmann::json summary_json(const Provenance& prov, const ParameterSet& params, 
     if (prov.points && !prov.points->points.empty()) hashes["points"] = points_hash(points_records_text(*prov.points));
     return {{"schema", "granrepro-summary"}, {"schema_version", 3}, {"experiment", prov.experiment},
             {"scale", to_string(prov.scale)}, {"seed", prov.seed}, {"code_version", code_version()},
-            {"wall_time_s", prov.wall_time_s}, {"cpu_time_s", prov.cpu_time_s},
+            {"physics_hash", physics_hash()}, {"wall_time_s", prov.wall_time_s}, {"cpu_time_s", prov.cpu_time_s},
             {"total_wall_time_s", prov.total_wall_time_s}, {"total_cpu_time_s", prov.total_cpu_time_s},
             {"resumed_points", prov.resumed_points}, {"points_without_cost", prov.points_without_cost},
             {"stored_points", prov.points ? long(prov.points->points.size()) : 0L},
@@ -268,6 +269,25 @@ std::string points_records_text(const SweepPoints& points) {
                      {"outcome", p.outcome}});
     }
     return a.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+}
+
+nlohmann::json compact_outcome(const nlohmann::json& outcome, std::size_t max_values, bool* changed) {
+    if (outcome.is_array()) {
+        const bool numbers = std::all_of(outcome.begin(), outcome.end(), [](const auto& x) { return x.is_number() || x.is_null(); });
+        if (numbers && outcome.size() > max_values) {
+            if (changed) *changed = true;
+            return {{"omitted_values", outcome.size()}, {"fnv1a64", points_hash(outcome.dump())}};
+        }
+        nlohmann::json a = nlohmann::json::array();
+        for (const auto& x : outcome) a.push_back(compact_outcome(x, max_values, changed));
+        return a;
+    }
+    if (outcome.is_object()) {
+        nlohmann::json o = nlohmann::json::object();
+        for (auto it = outcome.begin(); it != outcome.end(); ++it) o[it.key()] = compact_outcome(it.value(), max_values, changed);
+        return o;
+    }
+    return outcome;
 }
 
 std::string points_hash(const std::string& records_text) { return "fnv1a64:" + hex64(fnv1a64(records_text)); }
@@ -349,8 +369,11 @@ nlohmann::json data_content_hash(const std::filesystem::path& h5) {
     }
     nlohmann::json out = {{"scalars", scalars.hex()}, {"tables", tables}};
     if (f.has("points")) {
-        const std::vector<unsigned char> bytes = f.open_group("points").read_bytes("records");
-        out["points"] = points_hash(std::string(bytes.begin(), bytes.end()));
+        // A compact copy whose large arrays were digested vouches with the full records' hash.
+        const H5Object g = f.open_group("points");
+        const std::vector<unsigned char> bytes = g.read_bytes("records");
+        out["points"] = g.has_attr("full_records_hash") ? g.read_string_attr("full_records_hash")
+                                                        : points_hash(std::string(bytes.begin(), bytes.end()));
     }
     return out;
 }
@@ -371,8 +394,32 @@ std::vector<std::string> write_compact_result_h5(const std::filesystem::path& sr
     in.require_schema("granrepro-result", 1, 3);
     H5File out = H5File::create(dst.string());
     for (const auto& a : in.attribute_names()) in.copy_attr_to(a, out);
-    for (const char* g : {"parameters", "scalars", "provenance", "points"})
+    for (const char* g : {"parameters", "scalars", "provenance"})
         if (in.has(g)) in.copy_to(g, out);
+    if (in.has("points")) {
+        const H5Object pin = in.open_group("points");
+        const H5Object pout = out.group("points");
+        for (const auto& a : pin.attribute_names()) pin.copy_attr_to(a, pout);
+        const std::vector<unsigned char> bytes = pin.read_bytes("records");
+        const std::string text(bytes.begin(), bytes.end());
+        nlohmann::json records = nlohmann::json::parse(text);
+        bool any = false;
+        for (auto& r : records) {
+            bool changed = false;
+            nlohmann::json c = compact_outcome(r["outcome"], kMaxPointArrayValues, &changed);
+            if (!changed) continue;
+            r["outcome"] = std::move(c);
+            r["compacted"] = true;
+            any = true;
+        }
+        if (any) {
+            if (!pin.has_attr("compacted_arrays_over")) pout.attr("compacted_arrays_over", long(kMaxPointArrayValues));
+            if (!pin.has_attr("full_records_hash")) pout.attr("full_records_hash", points_hash(text));
+            pout.compressed_text("records", records.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace));
+        } else {
+            pout.compressed_text("records", text);
+        }
+    }
     const H5Object tables_in = in.open_group("tables");
     const H5Object tables_out = out.group("tables");
     std::vector<std::string> omitted;

@@ -87,10 +87,20 @@ std::string summary_content_hash(const nlohmann::json& summary);
 // summary.json's text: indented, invalid UTF-8 replaced by U+FFFD as in summary_content_hash.
 std::string summary_text(const nlohmann::json& summary);
 
+// In a compact copy, a stored point's arrays of more numbers than this (cluster-growth's
+// per-particle counts: 79524 at paper scale) are replaced by a digest (compact_outcome).
+inline constexpr std::size_t kMaxPointArrayValues = 10000;
+// The outcome with every array of more than max_values numbers replaced by its digest
+// {"omitted_values": n, "fnv1a64": "fnv1a64:<hex of the array's compact JSON>"}; *changed tells
+// whether one was. `verify` compacts a recomputed outcome the same way to compare it.
+nlohmann::json compact_outcome(const nlohmann::json& outcome, std::size_t max_values, bool* changed = nullptr);
+
 // A compact copy of a result file, small enough to commit next to the figures (paper_figures/):
 // the root attributes, /parameters, /scalars and every table of at most max_values values in
 // all; larger tables (particle snapshots) are left out and named, with their sizes, in the root
-// attribute "omitted_tables". Returns the names of the omitted tables.
+// attribute "omitted_tables". /points is kept, its large arrays digested (kMaxPointArrayValues;
+// /points attributes compacted_arrays_over and full_records_hash, the hash summary.json
+// recorded). Returns the names of the omitted tables.
 std::vector<std::string> write_compact_result_h5(const std::filesystem::path& src, const std::filesystem::path& dst,
                                                  std::size_t max_values);
 

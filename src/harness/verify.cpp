@@ -1,0 +1,331 @@
+#include "harness/verify.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <unistd.h>
+
+#include "core/input_error.hpp"
+#include "core/provenance.hpp"
+#include "harness/claims.hpp"
+#include "harness/experiment.hpp"
+#include "harness/runner.hpp"
+#include "io/h5_file.hpp"
+#include "io/result_writer.hpp"
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace granrepro {
+
+bool is_timing_name(const std::string& name) {
+    auto has = [&](const char* s) { return name.find(s) != std::string::npos; };
+    auto ends = [&](const std::string& s) { return name.size() >= s.size() && name.compare(name.size() - s.size(), s.size(), s) == 0; };
+    return has("wall_seconds") || has("wall_time") || has("seconds_per") || ends("per_second") || name == "resumed_points";
+}
+
+namespace {
+
+struct Diff {
+    std::string path, before, after;
+    double abs = NAN, rel = NAN;
+};
+
+struct Comparison {
+    long compared = 0;
+    std::vector<std::string> timing; // not compared
+    std::vector<Diff> diffs;
+};
+
+std::string shown(const json& j) {
+    const std::string s = j.dump(-1, ' ', false, json::error_handler_t::replace);
+    return s.size() > 48 ? s.substr(0, 45) + "..." : s;
+}
+
+// Value by value; numbers bit for bit (their shortest round-trip text, as stored).
+void compare(const json& a, const json& b, const std::string& path, Comparison& c) {
+    if (a.is_number() && b.is_number()) {
+        ++c.compared;
+        if (a.dump() != b.dump()) {
+            const double x = a.get<double>(), y = b.get<double>();
+            c.diffs.push_back({path, a.dump(), b.dump(), std::fabs(y - x), x != 0 ? std::fabs((y - x) / x) : NAN});
+        }
+        return;
+    }
+    if (a.is_object() && b.is_object()) {
+        for (auto it = a.begin(); it != a.end(); ++it) {
+            const std::string p = path + "/" + it.key();
+            if (is_timing_name(it.key())) {
+                c.timing.push_back(p);
+                continue;
+            }
+            if (!b.contains(it.key())) c.diffs.push_back({p, shown(it.value()), "(absent)"});
+            else compare(it.value(), b[it.key()], p, c);
+        }
+        for (auto it = b.begin(); it != b.end(); ++it)
+            if (!a.contains(it.key()) && !is_timing_name(it.key()))
+                c.diffs.push_back({path + "/" + it.key(), "(absent)", shown(it.value())});
+        return;
+    }
+    if (a.is_array() && b.is_array()) {
+        if (a.size() != b.size())
+            c.diffs.push_back({path, std::to_string(a.size()) + " entries", std::to_string(b.size()) + " entries"});
+        for (std::size_t i = 0; i < std::min(a.size(), b.size()); ++i) compare(a[i], b[i], path + "[" + std::to_string(i) + "]", c);
+        return;
+    }
+    ++c.compared;
+    if (a != b) c.diffs.push_back({path, shown(a), shown(b)});
+}
+
+std::string number(double x, const char* format = "%.4g") {
+    if (!std::isfinite(x)) return "-";
+    char b[40];
+    std::snprintf(b, sizeof b, format, x);
+    return b;
+}
+
+// Prints the outcome of one comparison; returns true if identical.
+bool report(const std::string& what, const Comparison& c, bool same_version) {
+    std::string timing;
+    if (!c.timing.empty()) {
+        std::vector<std::string> names;
+        for (const auto& t : c.timing) {
+            const std::string leaf = t.substr(t.rfind('/') + 1);
+            if (std::find(names.begin(), names.end(), leaf) == names.end()) names.push_back(leaf);
+        }
+        timing = "; not compared (timings, resume counts): " + joined(names);
+    }
+    if (c.diffs.empty()) {
+        std::printf("  %s: %ld values %s%s\n", what.c_str(), c.compared,
+                    same_version ? "bit for bit identical" : "identical, value by value", timing.c_str());
+        return true;
+    }
+    std::printf("  %s: %zu of %ld values differ%s:\n", what.c_str(), c.diffs.size(), c.compared, timing.c_str());
+    const std::size_t shown_max = 20;
+    for (std::size_t i = 0; i < c.diffs.size() && i < shown_max; ++i) {
+        const Diff& d = c.diffs[i];
+        std::printf("    %s: %s -> %s", d.path.empty() ? "(value)" : d.path.c_str(), d.before.c_str(), d.after.c_str());
+        if (std::isfinite(d.abs)) std::printf("  (by %s, relative %s)", number(d.abs).c_str(), number(d.rel).c_str());
+        std::printf("\n");
+    }
+    if (c.diffs.size() > shown_max) std::printf("    ... and %zu more\n", c.diffs.size() - shown_max);
+    return false;
+}
+
+// A folder under /tmp for the rerun's work (long runs inside a point may checkpoint), removed after.
+struct TempDir {
+    fs::path path;
+    TempDir() {
+        std::string tmpl = (fs::temp_directory_path() / "granrepro-verify-XXXXXX").string();
+        if (!::mkdtemp(tmpl.data())) throw std::runtime_error("cannot create a temporary folder in " + fs::temp_directory_path().string());
+        path = tmpl;
+    }
+    ~TempDir() {
+        std::error_code ec;
+        fs::remove_all(path, ec);
+    }
+};
+
+// The parameters as the run resolved them: the experiments/<name>.toml text stored in data.h5,
+// at the recorded scale, with the recorded --set overrides.
+ParameterSet recorded_parameters(const Experiment& exp, const fs::path& h5, const json& summary, Scale scale,
+                                 const fs::path& tmp) {
+    const H5File f = H5File::open(h5.string());
+    const fs::path file = tmp / (exp.name + ".toml");
+    {
+        std::ofstream o(file);
+        o << f.read_string_attr("experiment_file");
+    }
+    ParameterSet params = ParameterSet::load(file, scale);
+    const json sets = summary.value("overridden_parameters", json::object());
+    for (auto it = sets.begin(); it != sets.end(); ++it)
+        params.set(it.key() + "=" + (it.value().is_string() ? it.value().get<std::string>() : it.value().dump()));
+    exp.validate(params);
+    return params;
+}
+
+std::uint64_t recorded_seed(const json& summary) {
+    const json& s = summary.at("seed");
+    if (s.is_number_unsigned() || s.is_number_integer()) return s.get<std::uint64_t>();
+    return std::stoull(s.get<std::string>()); // files before 2026-12: the seed as text
+}
+
+json scalars_through_json(const Result& r) { return json::parse(scalars_json(r).dump()); }
+
+// Claims that read a moved scalar, with the verdict before and after under expected/ as it is now.
+void report_claims(const std::string& name, const json& before, const json& after, const Comparison& c, Scale scale) {
+    std::vector<std::string> moved;
+    for (const auto& d : c.diffs) moved.push_back(d.path.substr(d.path.rfind('/') + 1));
+    const auto claims = load_claims(project_root() / "expected" / (name + ".toml"), name);
+    const auto v0 = evaluate_claims(claims, before, scale), v1 = evaluate_claims(claims, after, scale);
+    int n = 0;
+    for (std::size_t i = 0; i < claims.size(); ++i) {
+        if (std::find(moved.begin(), moved.end(), claims[i].measured) == moved.end()) continue;
+        if (n++ == 0) std::printf("  claims reading them:\n");
+        std::printf("    %s (reads %s): %s -> %s%s\n", claims[i].id.c_str(), claims[i].measured.c_str(), to_string(v0[i].verdict),
+                    to_string(v1[i].verdict), v0[i].verdict == v1[i].verdict ? "" : "  (verdict changes)");
+    }
+    if (n == 0 && !moved.empty()) std::printf("  no claim reads the moved scalars\n");
+}
+
+void list_points(const std::string& name, const json& summary, const json& records, long version) {
+    const std::string head = name + " (" + summary.value("scale", "?") + " scale, seed " + summary["seed"].dump() + ", " +
+                             summary.value("code_version", "?") + ")";
+    if (records.empty()) {
+        std::printf("%s: no stored points: results written before point storage (data.h5 schema_version %ld)\n",
+                    head.c_str(), version);
+        return;
+    }
+    std::printf("%s: %zu stored points; whole run %s s wall, %s s CPU (%s points resumed)\n", head.c_str(), records.size(),
+                number(summary.value("total_wall_time_s", NAN), "%.1f").c_str(),
+                number(summary.value("total_cpu_time_s", NAN), "%.1f").c_str(),
+                summary.contains("resumed_points") ? summary["resumed_points"].dump().c_str() : "?");
+    std::printf("%6s  %-18s %10s %10s  %-7s %s\n", "point", "sweep", "CPU s", "wall s", "resumed", "inputs");
+    for (const auto& r : records) {
+        const json& c = r["cost"];
+        std::printf("%6ld  %-18s %10s %10s  %-7s %s%s\n", r["point"].get<long>(), r.value("sweep", "").c_str(),
+                    number(c.value("cpu_s", -1.0) >= 0 ? c.value("cpu_s", -1.0) : NAN, "%.3f").c_str(),
+                    number(c.value("wall_s", -1.0) >= 0 ? c.value("wall_s", -1.0) : NAN, "%.3f").c_str(),
+                    r.value("resumed", false) ? "yes" : "no", r.value("inputs", "").c_str(),
+                    r.value("compacted", false) ? "  (large arrays digested)" : "");
+    }
+}
+
+} // namespace
+
+int verify_experiment(const VerifyOptions& opt) {
+    const Experiment& exp = find_experiment(opt.experiment);
+    const std::string& name = exp.name;
+    const json summary = read_checked_summary(name, opt.out);
+    const fs::path h5 = opt.out / name / "data.h5";
+    const long version = H5File::open(h5.string()).read_long_attr("schema_version");
+    const json records = read_points_records(h5);
+    if (opt.list) {
+        list_points(name, summary, records, version);
+        return 0;
+    }
+    const Scale scale = parse_scale(summary.at("scale").get<std::string>());
+    const std::uint64_t seed = recorded_seed(summary);
+    const std::string recorded_version = summary.value("code_version", "unknown");
+    // A build from a dirty tree ("-dirty") is not a version: its code is not known.
+    const auto dirty = [](const std::string& v) { return v.find("dirty") != std::string::npos; };
+    const bool same_version = recorded_version == code_version() && !dirty(recorded_version);
+    const TempDir tmp;
+    const ParameterSet params = recorded_parameters(exp, h5, summary, scale, tmp.path);
+    RunContext ctx{params, scale, seed, opt.threads, true, tmp.path / "work", 1e12};
+    const std::string where = (opt.out / name).string();
+    const std::string versions = "code: recorded " + recorded_version + ", now " + code_version() +
+                                 (same_version ? " (same: bit for bit)" : " (another version: value by value)");
+
+    if (records.empty()) {
+        if (exp.distributed || opt.point)
+            throw InputError("verify " + name + ": unverifiable: results written before point storage (" + where +
+                             "/data.h5 is of schema_version " + std::to_string(version) + "; rerun `granrepro " + name +
+                             " --scale " + to_string(scale) + "` to store its sweep points)");
+        // Cheap (no distributed sweep, under 2 s at paper scale): the whole experiment again.
+        std::printf("verify %s: the whole experiment (%s scale, seed %llu; results written before point storage)\n",
+                    name.c_str(), to_string(scale), static_cast<unsigned long long>(seed));
+        std::printf("  %s\n", versions.c_str());
+        const Result r = exp.run(ctx);
+        Comparison c;
+        const json before = summary.at("scalars"), after = scalars_through_json(r);
+        compare(before, after, "", c);
+        bool same = report("scalars", c, same_version);
+        if (summary.contains("data_h5_hash")) {
+            const json now = data_content_hash(r)["tables"], then = summary["data_h5_hash"].value("tables", json::object());
+            std::vector<std::string> moved;
+            for (auto it = then.begin(); it != then.end(); ++it)
+                if (!now.contains(it.key()) || now[it.key()] != it.value()) moved.push_back(it.key());
+            std::printf("  tables: %s\n", moved.empty() ? (std::to_string(then.size()) + " tables bit for bit identical (content hashes)").c_str()
+                                                       : ("differ: " + joined(moved)).c_str());
+            same = same && moved.empty();
+        } else {
+            std::printf("  tables: not compared (results written before content hashes)\n");
+        }
+        if (!c.diffs.empty()) report_claims(name, before, after, c, scale);
+        std::printf("verify %s: %s\n", name.c_str(), same ? "reproduced" : "differs");
+        return same ? 0 : 1;
+    }
+
+    // The point: as asked, or the cheapest by recorded CPU cost.
+    const json* rec = nullptr;
+    if (opt.point) {
+        for (const auto& r : records)
+            if (r["point"] == *opt.point) rec = &r;
+        if (!rec)
+            throw InputError("--point " + std::to_string(*opt.point) + ": " + where + " stores points 0 to " +
+                             std::to_string(records.size() - 1) + " (`verify " + name + " --list` shows them)");
+    } else {
+        for (const auto& r : records) {
+            const double c = r["cost"].value("cpu_s", -1.0);
+            if (!rec || (c >= 0 && (*rec)["cost"].value("cpu_s", -1.0) > c)) rec = &r;
+        }
+    }
+    PointRerun rerun;
+    rerun.sweep = (*rec)["sweep"].get<std::string>();
+    rerun.point = (*rec)["point"].get<long>();
+    rerun.aggregate = !opt.point_only;
+    for (const auto& r : records) {
+        if (r["sweep"] != rerun.sweep) rerun.aggregate = false; // more than one sweep: the point alone
+        else if (r["point"] != rerun.point) {
+            if (r.value("compacted", false)) rerun.aggregate = false;
+            rerun.stored[r["point"].get<long>()] = r["outcome"];
+        }
+    }
+    ctx.sweep.mode = SweepPlan::Mode::Verify;
+    ctx.sweep.rerun = &rerun;
+    const double recorded_cpu = (*rec)["cost"].value("cpu_s", -1.0);
+    std::printf("verify %s: point %ld of %zu (sweep %s; %s scale, seed %llu; recorded cost %s CPU s)\n", name.c_str(),
+                rerun.point, records.size(), rerun.sweep.c_str(), to_string(scale), static_cast<unsigned long long>(seed),
+                number(recorded_cpu >= 0 ? recorded_cpu : NAN, "%.3g").c_str());
+    std::printf("  %s\n", versions.c_str());
+    std::fflush(stdout);
+    std::optional<Result> result;
+    try {
+        result.emplace(exp.run(ctx));
+    } catch (const PointRerunDone&) {
+    }
+    if (!rerun.computed) throw std::runtime_error("verify " + name + ": the experiment ran no sweep point");
+    bool same = true;
+    if (rerun.inputs == (*rec).value("inputs", "")) {
+        std::printf("  inputs: fingerprint %s as recorded\n", rerun.inputs.c_str());
+    } else {
+        std::printf("  inputs: fingerprint %s, recorded %s: the parameters as read now differ from the run's\n",
+                    rerun.inputs.c_str(), (*rec).value("inputs", "?").c_str());
+        same = false;
+    }
+    std::printf("  cost now: %s CPU s, %s s wall\n", number(rerun.cost.cpu_s, "%.3g").c_str(), number(rerun.cost.wall_s, "%.3g").c_str());
+    json fresh = rerun.outcome;
+    if ((*rec).value("compacted", false)) {
+        const H5File f = H5File::open(h5.string());
+        const H5Object g = f.open_group("points");
+        const long over = g.has_attr("compacted_arrays_over") ? g.read_long_attr("compacted_arrays_over") : long(kMaxPointArrayValues);
+        fresh = compact_outcome(fresh, std::size_t(over));
+    }
+    Comparison point;
+    compare((*rec)["outcome"], fresh, "", point);
+    same = report("point outcome" + std::string((*rec).value("compacted", false) ? " (arrays over the compaction limit by digest)" : ""),
+                  point, same_version) && same;
+    if (result) {
+        Comparison sc;
+        const json before = summary.at("scalars"), after = scalars_through_json(*result);
+        compare(before, after, "", sc);
+        same = report("scalars (point " + std::to_string(rerun.point) + " recomputed, the other " +
+                          std::to_string(rerun.stored.size()) + " as stored)",
+                      sc, same_version) && same;
+        if (!sc.diffs.empty()) report_claims(name, before, after, sc, scale);
+    } else {
+        std::printf("  scalars: not rebuilt (%s)\n",
+                    opt.point_only                             ? "--point-only"
+                    : rerun.stored.size() + 1 < records.size() ? "the results hold more than one sweep"
+                                                               : "other points are stored with digested arrays");
+    }
+    std::printf("verify %s: point %ld %s\n", name.c_str(), rerun.point,
+                same ? (same_version ? "reproduced bit for bit" : "reproduced, value by value") : "differs");
+    return same ? 0 : 1;
+}
+
+} // namespace granrepro
