@@ -2,6 +2,9 @@
 # Regenerates paper_figures/ from paper-scale runs of every experiment at one clean commit.
 #   scripts/paper_figures.sh            run (or resume) every experiment, then collect
 #   scripts/paper_figures.sh --collect  run nothing, only collect the finished runs of this commit
+#   scripts/paper_figures.sh --recheck  run nothing, rewrite paper_figures/CHECK.md and report/ from the
+#                                       committed numbers with this binary's claims (after a change to
+#                                       expected/ only: claims change verdicts, not data)
 # Refuses a dirty tree (tracked files modified) and a binary not built from HEAD: paper_figures/
 # must come from one commit (CI: tests/repro/physics_hashes.sh). Runs go to a staging folder,
 # $OUT (default out-paper-<commit>/); the same command resumes: finished experiments of this
@@ -22,10 +25,12 @@ bin=./build/granrepro
 max_mb=20
 scale=${SCALE:-paper} # SCALE=quick: a trial of this script (minutes); never commit its paper_figures/
 collect_only=0
+recheck=0
 case "${1:-}" in
   --collect) collect_only=1 ;;
+  --recheck) recheck=1 ;;
   "") ;;
-  *) echo "paper_figures.sh: unknown argument '$1'; allowed: --collect" >&2; exit 2 ;;
+  *) echo "paper_figures.sh: unknown argument '$1'; allowed: --collect, --recheck" >&2; exit 2 ;;
 esac
 
 if [ -n "$(git status --porcelain --untracked-files=no)" ]; then
@@ -42,12 +47,43 @@ if [[ "$version" != *"$commit"* ]]; then
   echo "paper_figures.sh: $bin is '$version', not built from HEAD $commit: rebuild (cmake --build build)" >&2
   exit 2
 fi
+experiments=$("$bin" list | awk '/^[a-z]/ {print $1}')
+# CHECK.md of the results in $1 (made at code version $2): every experiment's check table with its
+# known deviations explained, and the totals, as CI runs it.
+write_check() {
+  local dir=$1 made_at=$2
+  {
+    echo "# Check table of the paper-scale runs that made these figures"
+    echo
+    echo "Made by scripts/paper_figures.sh from the runs at $made_at (paper_figures/RUN.json: the whole"
+    echo "run's wall and CPU time, resumed points included; each data.h5 holds every sweep point,"
+    echo "\`granrepro verify <experiment> --list\`), judged with the claims of expected/ at $(git rev-parse --short=7 HEAD)."
+    echo "Re-check with \`./build/granrepro check --all --out paper_figures\` (\`--explain\` prints the known deviations)."
+    echo
+    echo '```'
+    for e in $experiments; do
+      line=$(python3 -c 'import json, sys; d = json.load(open(sys.argv[1])); print(d["code_version"], "seed", d["seed"], "%.0f s wall, %.0f s CPU" % (d.get("total_wall_time_s") or d["wall_time_s"], d.get("total_cpu_time_s") or 0))' \
+               "$dir/$e/summary.json")
+      echo "# $e: $line"
+      "$bin" check "$e" --out "$dir" --explain || true
+      echo
+    done
+    "$bin" check --all --missing-ok --out "$dir" 2>&1 | grep -E '^totals:|no results' || true
+    echo '```'
+  } > "$dir/CHECK.md"
+  # The reviewer's report of these results (granrepro report), linked from the README.
+  "$bin" report --out "$dir" > /dev/null
+}
+if ((recheck)); then
+  write_check paper_figures "$(python3 -c 'import json; print(json.load(open("paper_figures/RUN.json"))["code_version"])')"
+  echo "paper_figures/CHECK.md and paper_figures/report/ rewritten with the claims of $commit; git add paper_figures && git commit"
+  exit 0
+fi
 out=${OUT:-out-$scale-$commit}
 mkdir -p "$out"
 # The start of the whole regeneration, kept across resumes.
 [ -f "$out/.started" ] || date -u +%Y-%m-%dT%H:%M:%SZ > "$out/.started"
 threads=$(nproc)
-experiments=$("$bin" list | awk '/^[a-z]/ {print $1}')
 
 # A finished run of this code version at paper scale (the argument goes in as argv, not as code).
 finished() {
@@ -109,25 +145,7 @@ run = {"schema": "granrepro-paper-figures-run", "schema_version": 1, "commit": c
 json.dump(run, open(os.path.join(new, "RUN.json"), "w"), indent=2)
 open(os.path.join(new, "RUN.json"), "a").write("\n")
 PY
-{
-  echo "# Check table of the paper-scale runs that made these figures"
-  echo
-  echo "Made by scripts/paper_figures.sh at commit $commit ($version) from the committed"
-  echo "paper_figures/<experiment>/summary.json; RUN.json has the whole run's wall and CPU time (resumed"
-  echo "points included), each data.h5 every sweep point (\`granrepro verify <experiment> --list\`)."
-  echo "Re-check with \`./build/granrepro check --all --out paper_figures\` (\`--explain\` prints the known deviations)."
-  echo
-  echo '```'
-  for e in $experiments; do
-    line=$(python3 -c 'import json, sys; d = json.load(open(sys.argv[1])); print(d["code_version"], "seed", d["seed"], "%.0f s wall, %.0f s CPU" % (d["total_wall_time_s"], d["total_cpu_time_s"]))' \
-             "$new/$e/summary.json")
-    echo "# $e: $line"
-    "$bin" check "$e" --out "$new" --explain || true
-    echo
-  done
-  "$bin" check --all --missing-ok --out "$new" 2>&1 | grep -E '^totals:|no results' || true
-  echo '```'
-} > "$new/CHECK.md"
+write_check "$new" "$version"
 size_kb=$(du -sk "$new" | cut -f1)
 if ((size_kb > max_mb * 1024)); then
   echo "paper_figures.sh: $new/ is $((size_kb / 1024)) MB, above the ${max_mb} MB limit: lower --max-table-values of the export; paper_figures/ left as it was" >&2
