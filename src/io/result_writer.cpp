@@ -273,7 +273,12 @@ std::string points_records_text(const SweepPoints& points) {
 
 nlohmann::json compact_outcome(const nlohmann::json& outcome, std::size_t max_values, bool* changed) {
     if (outcome.is_array()) {
-        const bool numbers = std::all_of(outcome.begin(), outcome.end(), [](const auto& x) { return x.is_number() || x.is_null(); });
+        // Arrays of numbers, and arrays of small tuples of numbers (positions as [x, y]), count
+        // their numbers.
+        const auto number = [](const nlohmann::json& x) { return x.is_number() || x.is_null(); };
+        const bool numbers = std::all_of(outcome.begin(), outcome.end(), [&](const auto& x) {
+            return number(x) || (x.is_array() && x.size() <= 4 && std::all_of(x.begin(), x.end(), number));
+        });
         if (numbers && outcome.size() > max_values) {
             if (changed) *changed = true;
             return {{"omitted_values", outcome.size()}, {"fnv1a64", points_hash(outcome.dump())}};

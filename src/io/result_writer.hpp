@@ -88,8 +88,9 @@ std::string summary_content_hash(const nlohmann::json& summary);
 std::string summary_text(const nlohmann::json& summary);
 
 // In a compact copy, a stored point's arrays of more numbers than this (cluster-growth's
-// per-particle counts: 79524 at paper scale) are replaced by a digest (compact_outcome).
-inline constexpr std::size_t kMaxPointArrayValues = 10000;
+// per-particle counts and positions: 79524 at paper scale; traces of a few thousand samples) are replaced by
+// a digest (compact_outcome): paper_figures/ holds 14 MB, 23 MB with 10000 and positions kept.
+inline constexpr std::size_t kMaxPointArrayValues = 1000;
 // The outcome with every array of more than max_values numbers replaced by its digest
 // {"omitted_values": n, "fnv1a64": "fnv1a64:<hex of the array's compact JSON>"}; *changed tells
 // whether one was. `verify` compacts a recomputed outcome the same way to compare it.

@@ -49,6 +49,10 @@ TEST(SweepPoints, CompactOutcomeDigestsOnlyLargeNumberArrays) {
     nlohmann::json other = o;
     other["big"][11] = 99.0;
     EXPECT_NE(compact_outcome(other, 10)["big"]["fnv1a64"], c["big"]["fnv1a64"]) << "a changed value changes the digest";
+    // Positions, an array of [x, y] pairs, count as numbers too.
+    nlohmann::json pairs = nlohmann::json::array();
+    for (int i = 0; i < 12; ++i) pairs.push_back({i * 0.5, 1.0});
+    EXPECT_EQ(compact_outcome(nlohmann::json{{"position", pairs}}, 10)["position"]["omitted_values"], 12);
     bool unchanged = false;
     EXPECT_EQ(compact_outcome(o, 100, &unchanged), o);
     EXPECT_FALSE(unchanged);
