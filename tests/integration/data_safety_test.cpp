@@ -47,7 +47,7 @@ std::vector<std::string> leftovers(const fs::path& out, const std::string& exp) 
     return found;
 }
 
-const std::string kSmallRun = "emergency-brake --quiet --set n_vy=15 --set n_positions=3 ";
+const std::string kSmallRun = "emergency-brake --quiet --set n_vy=25 --set n_positions=3 ";
 const std::string kExp = "emergency-brake";
 
 std::string shim_env(const std::string& vars) {
@@ -336,7 +336,7 @@ TEST(DataSafety, KillInTheCommitWindowLosesNoResults) {
                                     slurp(out / leftovers(out, kExp).at(1) / "summary.json");
     EXPECT_NE(old_results.find("\"seed\": 1"), std::string::npos);
     // The next run restores the old copy first (it says so), then replaces it as usual.
-    o = run("emergency-brake --set n_vy=15 --set n_positions=3 --seed 4 --out " + out.string());
+    o = run("emergency-brake --set n_vy=25 --set n_positions=3 --seed 4 --out " + out.string());
     EXPECT_EQ(o.code, 0) << o.err;
     EXPECT_NE(o.err.find("restored " + dir.string()), std::string::npos) << o.err;
     EXPECT_EQ(summary(dir).at("seed"), 4);
@@ -549,7 +549,7 @@ TEST(DataSafety, CheckTableNamesTheOverrides) {
     const TempPath out("check-overrides");
     const Outcome ran = run(kSmallRun + "--out " + out.string());
     ASSERT_LE(ran.code, 1) << ran.err;
-    const std::string line = "parameters changed from the defaults (--set): n_positions=3 n_vy=15\n";
+    const std::string line = "parameters changed from the defaults (--set): n_positions=3 n_vy=25\n";
     EXPECT_NE(ran.out.find(line), std::string::npos) << ran.out;
     const Outcome checked = run("check " + kExp + " --out " + out.string());
     EXPECT_NE(checked.out.find("check " + kExp + " (quick scale)\n  " + line), std::string::npos) << checked.out;

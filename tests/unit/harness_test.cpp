@@ -497,7 +497,7 @@ TEST(ResultExport, CompactCopyKeepsScalarsAndCurvesAndNamesWhatItLeavesOut) {
     EXPECT_EQ(f.read_string_attr("experiment"), "demo");
     EXPECT_EQ(f.read_u64_attr("seed"), 7u);
     EXPECT_EQ(f.read_string_attr("scale"), "paper");
-    EXPECT_EQ(f.read_long_attr("schema_version"), 2);
+    EXPECT_EQ(f.read_long_attr("schema_version"), 3);
     EXPECT_EQ(f.read_string_attr("summary_json_hash"), "fnv1a64:0123456789abcdef");
     EXPECT_DOUBLE_EQ(f.read_double_attr("wall_time_s"), 12.5);
     EXPECT_EQ(f.read_dataset("scalars/slope"), std::vector<double>{-0.9731});
