@@ -307,14 +307,14 @@ RunResult run_pipe(const PipeSpec& s, double t_budget, double eq9_window, double
 
 // Mean Δv_y and wall grains touched of impacts on the pipe's wall row at (v_x^i, v_y^i), over 10
 // start positions (Figs. 4, 5). The step is the pipe's, t_col / steps_per_contact, but never more
-// than carries the grain half a wall grain (emergency-brake's rule): the construction's grid
+// than max_impact_step (half a wall grain per step, emergency-brake's rule): the construction's grid
 // reaches 3 times the fastest steady speed (730 m/s at k_N = 2000, e_N = 0.95), where t_col/50
 // would move it 1 mm, past a 0.66 mm wall grain, in one step.
 struct ImpactMean { double dvy = 0, contacts = 0; };
 ImpactMean impact_mean(const PipeSpec& base, double k, double e, double vx, double vy) {
     const LinearSpringDashpot law = pipe_law(k, e, base.m_mean);
     const double d_wall = 2 * base.geo.wall_radius;
-    const double dt = std::min(law.collision_time(base.m_mean) / base.steps_per_contact, 0.5 * d_wall / std::hypot(vx, vy));
+    const double dt = std::min(law.collision_time(base.m_mean) / base.steps_per_contact, max_impact_step(d_wall, std::hypot(vx, vy)));
     ImpactSetup is{.d_free = base.d_mean, .m_free = base.m_mean, .d_wall = d_wall, .wall_spacing = base.geo.wall_spacing,
                    .x0 = 0.5 * (base.d_mean + d_wall), .vx_toward = vx, .vy = vy, .dt = dt};
     ImpactMean mean;

@@ -63,7 +63,7 @@ void validate(const ParameterSet& p) {
     // The fastest shot must take several steps over a wall grain: at most d_wall/2 per step at
     // the softest law of the k_N scan (the largest dt).
     const double dt_max = dt * std::sqrt(s.k_N / k_min);
-    if (!(std::max(s.vy_max, *vx_max) * dt_max <= 0.5 * s.d_wall))
+    if (!(dt_max <= max_impact_step(s.d_wall, std::max(s.vy_max, *vx_max))))
         p.reject(std::vector<std::string>{"vy_max", "vx_list", "kN_scan", "k_N", "m_free", "steps_per_contact"},
                  "vy_max and every v_x^i must be at most d_wall / (2 dt) = " + number_text(0.5 * s.d_wall / dt_max) +
                      " m/s (dt = " + number_text(dt_max) + " s at the softest k_N): faster grains skip through the wall");

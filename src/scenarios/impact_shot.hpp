@@ -58,6 +58,12 @@ struct ImpactShotSpec {
     }
 };
 
+// The longest step a shot at `speed` [m/s] may take [s]: one that carries the free grain at most
+// half a wall grain (diameter d_wall [m]), so that no wall grain is passed between two steps of the
+// few-body engine. emergency-brake refuses a grid that needs less; the pipe's construction, whose
+// grid follows the measured speeds, steps finer instead.
+inline double max_impact_step(double d_wall, double speed) { return 0.5 * d_wall / speed; }
+
 // The readings of Eq. (2) that the impact experiments compare side by side.
 inline constexpr std::array kFrictionNormals{FrictionNormal::Magnitude, FrictionNormal::Clipped, FrictionNormal::Elastic,
                                              FrictionNormal::Signed};
