@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "analysis/curve_analysis.hpp"
+#include "analysis/seed_stats.hpp"
 #include "core/rng_stream.hpp"
 #include "data/spec.hpp"
 #include "engines/dsmc/dsmc_engine.hpp"
@@ -37,6 +38,7 @@
 #include "observables/log_time_sampler.hpp"
 #include "observables/pair_correlation.hpp"
 #include "observables/structure_factor.hpp"
+#include "observables/velocity_correlation.hpp"
 #include "scenarios/ed_gas.hpp"
 #include "theory/kinetic_theory.hpp"
 
@@ -74,6 +76,7 @@ struct CoolingSpec {
     DsmcFreeVolume dsmc_free_volume = DsmcFreeVolume::off; DsmcPartner dsmc_partner = DsmcPartner::uniform;
     long dsmc_free_volume_block = 0;
     bool dsmc_no_repeat = false, dsmc_displacement = false;
+    bool velocity_correlation = false; // pair velocity correlations at the snapshots (a study's observable)
     template <class V>
     void fields(V&& v) {
         v("n_side", n_side), v("rho", rho), v("r", r), v("d", d), v("mass", mass), v("vbar", vbar);
@@ -86,6 +89,7 @@ struct CoolingSpec {
         v("dsmc_step_factor", dsmc_step_factor), v("dsmc_free_volume", dsmc_free_volume);
         v("dsmc_partner", dsmc_partner), v("dsmc_free_volume_block", dsmc_free_volume_block);
         v("dsmc_no_repeat", dsmc_no_repeat), v("dsmc_displacement", dsmc_displacement);
+        v("velocity_correlation", velocity_correlation);
     }
 
     // Enskog collision rate per particle at t = 0 with Henderson's g(d) [1/s], and Haff's t0 [s].
@@ -163,10 +167,16 @@ void validate(const ParameterSet& p) {
         if (!(snaps[i] > snaps[i - 1])) p.reject("snapshot_times", "must increase");
 }
 
-// g(r/d) with its counting error, and S(k), at one snapshot time.
+// g(r/d) with its counting error, and S(k), at one snapshot time; with velocity_correlation the
+// pair velocity correlations C_n, C_t (observables/velocity_correlation.hpp) and their errors.
 struct Snapshot {
     std::vector<double> g, g_err, S;
-    template <class V> void fields(V&& v) { v("g", g), v("g_err", g_err), v("S", S); }
+    std::vector<double> vc_n, vc_n_err, vc_t, vc_t_err, vc_a, vc_a_err;
+    template <class V> void fields(V&& v) {
+        v("g", g), v("g_err", g_err), v("S", S);
+        v("vc_n", vc_n), v("vc_n_err", vc_n_err), v("vc_t", vc_t), v("vc_t_err", vc_t_err);
+        v("vc_a", vc_a), v("vc_a_err", vc_a_err);
+    }
 };
 
 // The counts per b/d bin of one P(b/d) time window.
@@ -265,14 +275,26 @@ void record_sample(Trace& tr, const Engine& eng, double t) {
     tr.a2_err.push_back(a2[1]);
 }
 
-// g(r/d) out to 5 d and S(k) of the positions at a snapshot time.
-void record_snapshot(Trace& tr, const std::vector<Vec2>& pos, double L, double d) {
+// Pair velocity correlations from contact (r = d) to 3 d in bins of 0.1 d.
+VelocityCorrelation velocity_correlation(double L, double d) { return VelocityCorrelation(L, L, d, 3 * d, 20); }
+
+// g(r/d) out to 5 d and S(k) of the positions at a snapshot time, and the velocity correlations
+// if the spec asks for them.
+void record_snapshot(Trace& tr, const CoolingSpec& c, const std::vector<Vec2>& pos, const std::vector<Vec2>& vel, double L) {
+    const double d = c.d;
     PairCorrelation gr(L, L, 5 * d, 250);
     gr.accumulate(pos);
     StructureFactor sk(L, d);
     sk.accumulate(pos);
     const auto shell = sk.radial_average();
-    tr.snaps.push_back({gr.g(), gr.g_error(), shell.S});
+    Snapshot& sn = tr.snaps.emplace_back();
+    sn.g = gr.g(), sn.g_err = gr.g_error(), sn.S = shell.S;
+    if (c.velocity_correlation) {
+        VelocityCorrelation vc = velocity_correlation(L, d);
+        vc.accumulate(pos, vel);
+        sn.vc_n = vc.normal(), sn.vc_n_err = vc.normal_error(), sn.vc_t = vc.tangential(), sn.vc_t_err = vc.tangential_error();
+        sn.vc_a = vc.approach(), sn.vc_a_err = vc.approach_error();
+    }
     if (tr.g_r.empty()) {
         for (double c : gr.centres()) tr.g_r.push_back(c / d);
         tr.S_k = shell.k;
@@ -281,9 +303,10 @@ void record_snapshot(Trace& tr, const std::vector<Vec2>& pos, double L, double d
 
 // Mid-run checkpoints of one method hold the engine state and the trace up to a sample time (with
 // the P(b/d) counts). prepare() is deterministic, so a resumed run redoes the equilibration
-// instead of storing the t = 0 state. Version 4: the trace carries its wall time.
+// instead of storing the t = 0 state. Version 4: the trace carries its wall time; 5: its snapshots
+// the velocity correlations.
 constexpr const char* kCoolingRunSchema = "granrepro-cooling-run";
-constexpr long kCoolingRunSchemaVersion = 4;
+constexpr long kCoolingRunSchemaVersion = 5;
 
 // The P(b/d) histogram holding the trace's counts (none yet: empty).
 ImpactParameterHistogram pbd_histogram(const CoolingSpec& c, const Trace& tr) {
@@ -312,7 +335,7 @@ Trace observe(const CoolingSpec& c, const Setup& s, Engine& eng, SampledRun<Trac
                 record_sample(tr, eng, t);
                 const auto now = [t](double snap) { return std::abs(snap - t) < 1e-12; };
                 if (std::any_of(c.snapshot_times.begin(), c.snapshot_times.end(), now))
-                    record_snapshot(tr, eng.positions(), s.L, c.d);
+                    record_snapshot(tr, c, eng.positions(), eng.velocities(), s.L);
                 tr.pbd_counts.clear();
                 for (const auto& w : hist.counts()) tr.pbd_counts.push_back({w});
                 return false;
@@ -750,6 +773,44 @@ void add_structure_tables(Result& res, const Trace& tr, const std::vector<double
     sk.add("S_equilibrium", "1").values = std::vector<double>(tr.S_k.size(), theory::hard_disk_structure_factor_zero(rho));
 }
 
+// The pair velocity correlations of one method at the snapshot times, seed means (issue 27 §3:
+// does the gas keep molecular chaos at t = 0, and how fast do correlations build up?): a table over
+// r/d, and at contact (d <= r < 1.1 d) per snapshot the mean over seeds and its standard error
+// over seeds (NaN with one seed: the pairs of one snapshot share particles, so their own spread
+// would understate it).
+void add_velocity_correlation(Result& res, const CoolingSpec& c, const std::vector<Trace>& trs, const char* name) {
+    const std::vector<double> snaps = c.snapshots();
+    const VelocityCorrelation grid = velocity_correlation(c.box(), c.d);
+    Table& t = res.table(std::string("vcorr_") + name,
+                         std::string("pair velocity correlations C_n, C_t (mean over seeds) at the snapshot times, ") + name);
+    std::vector<double> r;
+    for (double x : grid.centres()) r.push_back(x / c.d);
+    t.add("r_over_d", "1").values = r;
+    for (std::size_t i = 0; i < snaps.size(); ++i)
+        for (const auto& [col, member] :
+             {std::pair{"Cn_t", &Snapshot::vc_n}, std::pair{"Ct_t", &Snapshot::vc_t}, std::pair{"A_t", &Snapshot::vc_a}}) {
+            std::vector<double> mean(r.size(), 0.0);
+            for (const Trace& tr : trs)
+                for (std::size_t b = 0; b < r.size(); ++b) mean[b] += (tr.snaps[i].*member)[b] / double(trs.size());
+            t.add(col + number_text(snaps[i]), "1").values = mean;
+        }
+    for (std::size_t i = 0; i < snaps.size(); ++i) {
+        std::vector<double> cn, ct, ca;
+        for (const Trace& tr : trs)
+            cn.push_back(tr.snaps[i].vc_n.front()), ct.push_back(tr.snaps[i].vc_t.front()), ca.push_back(tr.snaps[i].vc_a.front());
+        const MeanSd mn = granrepro::mean_sd(cn), mt = granrepro::mean_sd(ct), ma = granrepro::mean_sd(ca);
+        const std::string at = "_t" + number_text(snaps[i]);
+        res.scalar(std::string(name) + "_vcorr_n_contact" + at, mn.mean, "1",
+                   "C_n of pairs at d <= r < 1.1 d, mean over seeds (molecular chaos: 0)");
+        res.scalar(std::string(name) + "_vcorr_n_contact_err" + at, mn.sem, "1", "its standard error over seeds");
+        res.scalar(std::string(name) + "_vcorr_t_contact" + at, mt.mean, "1", "C_t of pairs at d <= r < 1.1 d, mean over seeds");
+        res.scalar(std::string(name) + "_vcorr_t_contact_err" + at, mt.sem, "1", "its standard error over seeds");
+        res.scalar(std::string(name) + "_vcorr_approach_contact" + at, ma.mean, "1",
+                   "<g_n^2 | approaching> / (2 T1) of pairs at d <= r < 1.1 d, mean over seeds (molecular chaos: 1)");
+        res.scalar(std::string(name) + "_vcorr_approach_contact_err" + at, ma.sem, "1", "its standard error over seeds");
+    }
+}
+
 // chi^2 per bin of g(r/d) at the first snapshot after t = 0 against t = 0 over r/d >= r_lo, with
 // the counting errors of both, and the number of bins.
 std::array<double, 2> early_g_chi2(const Trace& ed, double r_lo) {
@@ -973,6 +1034,7 @@ void add_dsmc(Result& res, const CoolingSpec& c, const Setup& s, const std::vect
                "mean S(k <= sk_k_max) at the last snapshot over the hard-disk equilibrium S(0), DSMC, first seed");
     res.scalar("dsmc_C_over_N_end", ds.cn.back(), "1", "collisions per particle at t_end, DSMC");
     add_seed_tables(res, dss, snaps, "dsmc");
+    if (c.velocity_correlation) add_velocity_correlation(res, c, dss, "dsmc");
     res.scalar("dsmc_pbd_grazing_ratio_last", grazing_ratio(ds.pbd.back(), ds.pbd_centres), "1", "P(b/d>0.8)/P(b/d<0.2), last window, DSMC (molecular chaos: 1)");
 }
 
@@ -991,6 +1053,7 @@ Result report(const CoolingSpec& c, std::uint64_t seed, const std::vector<Setup>
     add_seed_tables(res, eds, snaps, "ed");
     add_ed_g(res, ed, snaps, c.t0());
     add_ed_sk(res, eds, snaps, c.sk_k_max, theory::hard_disk_structure_factor_zero(c.rho));
+    if (c.velocity_correlation) add_velocity_correlation(res, c, eds, "ed");
     if (c.run_dsmc) add_dsmc(res, c, setups.front(), eds, dss);
     return res;
 }

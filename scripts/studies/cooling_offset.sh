@@ -14,6 +14,11 @@
 #   loss/coll  -ln K(t0) / ((1-r^2)/2 C/N(t0)): energy lost per collision over (1-r^2) T, the
 #              Enskog-Boltzmann loss of a Maxwellian gas without velocity correlations
 #   t0 of each variant is the kinetic-theory t0 of its rho and r (scalar t0_inv_kinetic_theory).
+#   C_n(0)     pair velocity correlation of pairs at contact (d <= r < 1.1 d) at t = 0, seed mean +-
+#              standard error over seeds (observables/velocity_correlation.hpp; molecular chaos: 0)
+#   A(t)       <g_n^2> of the approaching pairs at contact over 2 T1 (molecular chaos: 1) at t = 0,
+#              0.01, 0.03 and 0.06 s (ED): below 1, colliding pairs approach more slowly than under
+#              molecular chaos, and each collision loses less than (1 - r^2) T
 #   scripts/studies/cooling_offset.sh                paper scale, 4 seeds (about 10 CPU-s per seed and variant)
 #   SCALE=quick SEEDS=4 scripts/studies/cooling_offset.sh
 #   scripts/studies/cooling_offset.sh default eq50   only these variants
@@ -48,7 +53,8 @@ for v in "${order[@]}"; do
   [ -n "${variants[$v]+x}" ] || { echo "unknown variant $v" >&2; exit 2; }
   dir="$out/$v"
   if [ ! -f "$dir/cooling/summary.json" ]; then
-    args=(--set run_dsmc=false --set snapshot_times=0 --set bd_windows=0,0.01)
+    args=(--set run_dsmc=false --set snapshot_times=0,0.01,0.03,0.06 --set velocity_correlation=true
+          --set bd_windows=0,0.01)
     case " ${variants[$v]} " in *" seeds="*) ;; *) args+=(--set seeds="$seeds") ;; esac
     for s in ${variants[$v]}; do args+=(--set "$s"); done
     echo "== $v: granrepro cooling --scale $scale ${args[*]}" >&2
@@ -68,8 +74,9 @@ def mean_se(x):
     x = np.asarray(x, float)
     return x.mean(), (x.std(ddof=1) / math.sqrt(len(x)) if len(x) > 1 else float("nan"))
 
-print("| variant | N | seeds | a2(0) | rate/Enskog | K/K18(t0) | fit 1/t0 / theory | C/N(t0) / Haff | loss per collision / (1-r^2)T |")
-print("|---|---|---|---|---|---|---|---|---|")
+print("| variant | N | seeds | a2(0) | rate/Enskog | K/K18(t0) | fit 1/t0 / theory | C/N(t0) / Haff | loss per collision / (1-r^2)T "
+      "| C_n(0) | A(0) | A(0.01 s) | A(0.03 s) | A(0.06 s) |")
+print("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
 for n in names:
     try:
         run = granrepro.load(f"{out}/{n}/cooling")
@@ -99,5 +106,8 @@ for n in names:
     for xs in (ks, fits, cns, losses):
         m, s = mean_se(xs)
         cells.append(f"{m:.4f} ± {s:.4f}")
+    cells.append(f"{sc('ed_vcorr_n_contact_t0'):+.4f} ± {sc('ed_vcorr_n_contact_err_t0'):.4f}")
+    for t in ("0", "0.01", "0.03", "0.06"):
+        cells.append(f"{sc('ed_vcorr_approach_contact_t' + t):.3f} ± {sc('ed_vcorr_approach_contact_err_t' + t):.3f}")
     print(f"| {n} | {int(sc('N'))} | {k} | " + " | ".join(cells) + " |")
 PY

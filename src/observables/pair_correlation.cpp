@@ -1,5 +1,7 @@
 #include "observables/pair_correlation.hpp"
 
+#include "observables/periodic_pairs.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -42,49 +44,8 @@ void PairCorrelation::accumulate_brute_force(std::span<const Vec2> pos) {
 }
 
 void PairCorrelation::accumulate(std::span<const Vec2> pos) {
-    // Cells of side >= r_max: every partner within r_max sits in the same or an adjacent cell.
-    const int ncx = std::max(1, static_cast<int>(std::floor(Lx_ / r_max_)));
-    const int ncy = std::max(1, static_cast<int>(std::floor(Ly_ / r_max_)));
-    const std::size_t n = pos.size();
-    // Linked-list cells: head per cell, next per particle. Inserting in reverse index order makes
-    // each cell's list ascend in index, which is not needed for correctness but keeps access local.
-    std::vector<int> head(static_cast<std::size_t>(ncx) * static_cast<std::size_t>(ncy), -1);
-    std::vector<int> next(n, -1);
-    std::vector<int> cell_of(n);
-    auto wrap_cell = [](double x, double L, int nc) {
-        double u = x / L;
-        u -= std::floor(u); // positions may lie outside [0, L): wrap periodically
-        return std::min(nc - 1, static_cast<int>(u * nc));
-    };
-    for (std::size_t ii = n; ii-- > 0;) {
-        const int c = wrap_cell(pos[ii].x, Lx_, ncx) + ncx * wrap_cell(pos[ii].y, Ly_, ncy);
-        cell_of[ii] = c;
-        next[ii] = head[static_cast<std::size_t>(c)];
-        head[static_cast<std::size_t>(c)] = static_cast<int>(ii);
-    }
-    // With only 1 or 2 cells along an axis the offsets -1, 0, +1 alias onto the same cell; visiting
-    // each distinct neighbour cell once keeps every pair counted exactly once.
-    auto distinct_offsets = [](int nc) {
-        std::vector<int> o;
-        for (int d : {-1, 0, 1}) {
-            const int m = ((d % nc) + nc) % nc;
-            if (std::find(o.begin(), o.end(), m) == o.end()) o.push_back(m);
-        }
-        return o;
-    };
-    const auto ox = distinct_offsets(ncx);
-    const auto oy = distinct_offsets(ncy);
-    for (std::size_t i = 0; i < n; ++i) {
-        const int cx = cell_of[i] % ncx;
-        const int cy = cell_of[i] / ncx;
-        for (int dy : oy)
-            for (int dx : ox) {
-                const int c = (cx + dx) % ncx + ncx * ((cy + dy) % ncy);
-                for (int j = head[static_cast<std::size_t>(c)]; j >= 0; j = next[static_cast<std::size_t>(j)])
-                    if (static_cast<std::size_t>(j) > i) bin_pair(pos[i], pos[static_cast<std::size_t>(j)]);
-            }
-    }
-    finish_snapshot(n);
+    for_each_near_pair(Lx_, Ly_, r_max_, pos, [&](std::size_t i, std::size_t j) { bin_pair(pos[i], pos[j]); });
+    finish_snapshot(pos.size());
 }
 
 std::vector<double> PairCorrelation::centres() const {
