@@ -27,9 +27,7 @@
 #include "scenarios/impact_shot.hpp"
 #include "scenarios/pipe_setup.hpp"
 #include "experiments/work_limits.hpp"
-#include "harness/experiment.hpp"
-#include "harness/distributed_sweep.hpp"
-#include "io/json_fields.hpp"
+#include "harness/protocol.hpp"
 #include "models/coulomb_shear.hpp"
 #include "models/linear_spring_dashpot.hpp"
 
@@ -388,34 +386,6 @@ std::vector<Task> make_tasks(const BistablePipeSpec& b) {
     return tasks;
 }
 
-// Every run's result, and how many were resumed from a checkpoint.
-std::pair<std::vector<RunResult>, long> run_sweep(const RunContext& ctx, const BistablePipeSpec& b, const std::vector<Task>& tasks) {
-    // Every budget is the same number of time steps, but runs that settle stop early: start the
-    // likely long ones first (fast starts, then nearly elastic grains, then longer pipes), so that
-    // the last point to start is a short one. Each point's random stream is its grid index.
-    std::vector<long> order(tasks.size());
-    std::iota(order.begin(), order.end(), 0L);
-    auto key = [&](long i) {
-        const Task& t = tasks[std::size_t(i)];
-        return std::make_tuple(t.fast, t.length, t.e, t.k);
-    };
-    std::stable_sort(order.begin(), order.end(), [&](long x, long y) { return key(x) > key(y); });
-    const SweepResult swept = distributed_sweep(ctx, "bistable-pipe", order, [&](long i) {
-        const Task& t = tasks[std::size_t(i)];
-        PipeSpec s = pipe_spec(b, ctx.seed);
-        s.k_N = t.k;
-        s.e_N = t.e;
-        s.geo.length = std::round(t.length / s.geo.wall_spacing) * s.geo.wall_spacing;
-        s.v0 = t.fast ? b.fast_v0 : b.slow_v0;
-        s.agitation = std::min(b.agitation, b.agitation_vcrit * v_crit(b, t.k));
-        s.stream = std::uint64_t(i);
-        return to_json_fields(run_pipe(s, time_budget(b, t.k, t.e), b.eq9_window, b.hold_distance));
-    });
-    std::vector<RunResult> results;
-    for (const auto& j : swept.points) results.push_back(from_json_fields<RunResult>(j));
-    return {results, swept.resumed};
-}
-
 // The columns of one k_N's table of Fig. 6, per start (0 slow, 1 fast) over e_N, and the
 // construction's link for the slow start at the largest e_N.
 enum SteadyColumn { kV, kVLast, kOutcome, kTEnd, kBalance, kSigmaVx, kNdot, kDvy, kVConstruction, kImpactSlope,
@@ -676,24 +646,56 @@ void report_series(Result& r, const BistablePipeSpec& b, const std::vector<Task>
     }
 }
 
-Result run(const RunContext& ctx) {
-    const auto b = read_spec<BistablePipeSpec>(ctx.params);
-    const std::vector<Task> tasks = make_tasks(b);
-    const auto [results, resumed] = run_sweep(ctx, b, tasks);
-    Result r;
-    r.scalar("resumed_points", double(resumed), "1", "sweep points loaded from a checkpoint");
-    // The paper's t_col at k_N = 200000 N/m refers to e_N = 0.70 (gamma scaled with sqrt(k_N)).
-    r.scalar("t_col_k200000_e0.70", pipe_law(200000.0, 0.70, b.m_mean).collision_time(b.m_mean), "s",
-             "free-wall contact duration at k_N = 2e5 N/m, e_N = 0.70 (Eq. 4)");
-    report_fig6(r, b, pipe_spec(b, ctx.seed), results);
-    report_eq9_windows(r, tasks, results);
-    report_series(r, b, tasks, results);
-    r.scalar("grains", double(results.front().grains), "1", "free grains in the pipe (first run)");
-    return r;
-}
+// Fig. 6 as a protocol (harness/protocol.hpp): one sweep point per pipe run (Task).
+struct BistablePipe {
+    static constexpr const char* name = "bistable-pipe";
+    using Spec = BistablePipeSpec;
+    using Outcome = RunResult;
+    using Shared = std::vector<Task>;
+    static void validate(const ParameterSet& p) { granrepro::experiments::validate(p); }
+    static std::vector<Task> prepare(const Spec& b, const RunContext&) { return make_tasks(b); }
+    // Every budget is the same number of time steps, but runs that settle stop early: start the
+    // likely long ones first (fast starts, then nearly elastic grains, then longer pipes), so that
+    // the last point to start is a short one.
+    static std::vector<long> points(const Spec&, const std::vector<Task>& tasks) {
+        std::vector<long> order(tasks.size());
+        std::iota(order.begin(), order.end(), 0L);
+        auto key = [&](long i) {
+            const Task& t = tasks[std::size_t(i)];
+            return std::make_tuple(t.fast, t.length, t.e, t.k);
+        };
+        std::stable_sort(order.begin(), order.end(), [&](long x, long y) { return key(x) > key(y); });
+        return order;
+    }
+    // Each point's random stream is its grid index.
+    static RunResult compute(const Spec& b, const std::vector<Task>& tasks, long i, const PointContext& ctx) {
+        const Task& t = tasks[std::size_t(i)];
+        PipeSpec s = pipe_spec(b, ctx.seed);
+        s.k_N = t.k;
+        s.e_N = t.e;
+        s.geo.length = std::round(t.length / s.geo.wall_spacing) * s.geo.wall_spacing;
+        s.v0 = t.fast ? b.fast_v0 : b.slow_v0;
+        s.agitation = std::min(b.agitation, b.agitation_vcrit * v_crit(b, t.k));
+        s.stream = std::uint64_t(i);
+        return run_pipe(s, time_budget(b, t.k, t.e), b.eq9_window, b.hold_distance);
+    }
+    static Result report(const Spec& b, const std::vector<Task>& tasks, const Swept<RunResult>& swept, const RunContext& ctx) {
+        const std::vector<RunResult>& results = swept.outcomes;
+        Result r;
+        r.scalar("resumed_points", double(swept.resumed), "1", "sweep points loaded from a checkpoint");
+        // The paper's t_col at k_N = 200000 N/m refers to e_N = 0.70 (gamma scaled with sqrt(k_N)).
+        r.scalar("t_col_k200000_e0.70", pipe_law(200000.0, 0.70, b.m_mean).collision_time(b.m_mean), "s",
+                 "free-wall contact duration at k_N = 2e5 N/m, e_N = 0.70 (Eq. 4)");
+        report_fig6(r, b, pipe_spec(b, ctx.seed), results);
+        report_eq9_windows(r, tasks, results);
+        report_series(r, b, tasks, results);
+        r.scalar("grains", double(results.front().grains), "1", "free grains in the pipe (first run)");
+        return r;
+    }
+};
 
 } // namespace
 
-Experiment bistable_pipe() { return {"bistable-pipe", &validate, &run}; }
+Experiment bistable_pipe() { return protocol_experiment<BistablePipe>(); }
 
 } // namespace granrepro::experiments

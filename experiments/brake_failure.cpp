@@ -12,9 +12,7 @@
 
 #include "analysis/curve_analysis.hpp"
 #include "scenarios/impact_shot.hpp"
-#include "harness/experiment.hpp"
-#include "harness/distributed_sweep.hpp"
-#include "io/json_fields.hpp"
+#include "harness/protocol.hpp"
 #include "data/spec.hpp"
 #include "models/hertz_kuwabara_kono.hpp"
 #include "models/linear_spring_dashpot.hpp"
@@ -114,26 +112,6 @@ ImpactOutcome shoot_point(const BrakeFailureSpec& s, const Sweep& w, std::size_t
     const double beta = s.betas[c - kFirstBeta], sb = std::sqrt(beta);
     const LinearSpringDashpot scaled{law.k_N * beta, law.gamma_N * sb};
     return shoot(scaled, shear, geometry(s, w.vy[i] * sb, w.dt / sb));
-}
-
-std::vector<Curve> shoot_curves(const BrakeFailureSpec& s, const Sweep& w, const RunContext& ctx) {
-    // One sweep point per curve (milliseconds each, so none is saved), in curve order.
-    std::vector<long> order(kFirstBeta + s.betas.size());
-    std::iota(order.begin(), order.end(), 0L);
-    const SweepResult swept = distributed_sweep(ctx, "brake-failure", order, [&](long c) {
-        Curve curve;
-        for (std::size_t i = 0; i < w.vy.size(); ++i) {
-            const ImpactOutcome o = shoot_point(s, w, std::size_t(c), i);
-            curve.dvy.push_back(o.dvy);
-            curve.dvx.push_back(o.dvx);
-            curve.dvy_shear.push_back(o.dvy_shear);
-            curve.complete.push_back(o.completed);
-        }
-        return to_json_fields(curve);
-    }, PointFiles::None);
-    std::vector<Curve> curves;
-    for (const auto& j : swept.points) curves.push_back(from_json_fields<Curve>(j));
-    return curves;
 }
 
 // Head-on collision at the run's time step, of the free grain with the wall grain or with a
@@ -377,28 +355,54 @@ void report_readings(Result& r, const BrakeFailureSpec& s, const Sweep& w, const
              "the steepest Δv_y tail over the figure's last decade among the readings of Eq. (2)");
 }
 
-Result run(const RunContext& ctx) {
-    const auto s = read_spec<BrakeFailureSpec>(ctx.params);
-    const LinearSpringDashpot law = s.law();
-    const Sweep w{law, law.collision_time(s.m_free) / s.steps_per_contact, log_space(s.vy_min, s.vy_max, s.n_vy),
-                  log_space(s.vy_min, 10 * s.vy_max, s.n_vy), HertzKuwabaraKono::matched_at(law.k_N, law.gamma_N, s.hkk_xi_ref)};
-    const std::vector<Curve> curves = shoot_curves(s, w, ctx);
-
-    Result r;
-    int incomplete = 0;
-    for (const auto& c : curves)
-        for (int ok : c.complete) incomplete += !ok;
-    r.scalar("incomplete_impacts", incomplete, "1", "impacts that had not ended within max_steps");
-    const Peak pk = report_fig3(r, w, curves);
-    report_high_velocity(r, s, w, curves);
-    report_head_on(r, s, w);
-    report_collapse(r, s, w, curves, pk);
-    report_readings(r, s, w, curves);
-    return r;
-}
+// Fig. 3 and its studies as a protocol (harness/protocol.hpp): one sweep point per curve
+// (milliseconds each, so none is saved), in curve order.
+struct BrakeFailure {
+    static constexpr const char* name = "brake-failure";
+    static constexpr PointFiles files = PointFiles::None;
+    using Spec = BrakeFailureSpec;
+    using Outcome = Curve;
+    using Shared = Sweep;
+    static void validate(const ParameterSet& p) { granrepro::experiments::validate(p); }
+    static Sweep prepare(const Spec& s, const RunContext&) {
+        const LinearSpringDashpot law = s.law();
+        return {law, law.collision_time(s.m_free) / s.steps_per_contact, log_space(s.vy_min, s.vy_max, s.n_vy),
+                log_space(s.vy_min, 10 * s.vy_max, s.n_vy), HertzKuwabaraKono::matched_at(law.k_N, law.gamma_N, s.hkk_xi_ref)};
+    }
+    static std::vector<long> points(const Spec& s, const Sweep&) {
+        std::vector<long> order(kFirstBeta + s.betas.size());
+        std::iota(order.begin(), order.end(), 0L);
+        return order;
+    }
+    static Curve compute(const Spec& s, const Sweep& w, long c, const PointContext&) {
+        Curve curve;
+        for (std::size_t i = 0; i < w.vy.size(); ++i) {
+            const ImpactOutcome o = shoot_point(s, w, std::size_t(c), i);
+            curve.dvy.push_back(o.dvy);
+            curve.dvx.push_back(o.dvx);
+            curve.dvy_shear.push_back(o.dvy_shear);
+            curve.complete.push_back(o.completed);
+        }
+        return curve;
+    }
+    static Result report(const Spec& s, const Sweep& w, const Swept<Curve>& swept, const RunContext&) {
+        const std::vector<Curve>& curves = swept.outcomes;
+        Result r;
+        int incomplete = 0;
+        for (const auto& c : curves)
+            for (int ok : c.complete) incomplete += !ok;
+        r.scalar("incomplete_impacts", incomplete, "1", "impacts that had not ended within max_steps");
+        const Peak pk = report_fig3(r, w, curves);
+        report_high_velocity(r, s, w, curves);
+        report_head_on(r, s, w);
+        report_collapse(r, s, w, curves, pk);
+        report_readings(r, s, w, curves);
+        return r;
+    }
+};
 
 } // namespace
 
-Experiment brake_failure() { return {"brake-failure", &validate, &run}; }
+Experiment brake_failure() { return protocol_experiment<BrakeFailure>(); }
 
 } // namespace granrepro::experiments

@@ -15,6 +15,8 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <memory>
+#include <mutex>
 #include <numbers>
 #include <numeric>
 #include <optional>
@@ -30,10 +32,8 @@
 #include "engines/ed/ed_engine.hpp"
 #include "engines/ed/ed_initial_states.hpp"
 #include "experiments/work_limits.hpp"
-#include "harness/experiment.hpp"
-#include "harness/distributed_sweep.hpp"
+#include "harness/protocol.hpp"
 #include "harness/sampled_run.hpp"
-#include "io/json_fields.hpp"
 #include "observables/impact_parameter_histogram.hpp"
 #include "observables/log_time_sampler.hpp"
 #include "observables/pair_correlation.hpp"
@@ -370,6 +370,30 @@ Setup prepare(const CoolingSpec& c, std::uint64_t seed, long seed_index) {
     return s;
 }
 
+// The seeds' initial states, each equilibrated when first needed (by a sweep point or by the
+// report) and then kept: a process equilibrates only the seeds it uses, so an MPI rank serving
+// points does not redo every seed's equilibration (issue 28). prepare() is deterministic.
+class Setups {
+public:
+    Setups(const CoolingSpec& c, std::uint64_t seed) : c_(&c), seed_(seed), n_(c.seeds), slots_(new Slot[std::size_t(c.seeds)]) {}
+    long size() const { return n_; }
+    const Setup& operator[](long k) const {
+        Slot& slot = slots_[std::size_t(k)];
+        std::call_once(slot.once, [&] { slot.value = prepare(*c_, seed_, k); });
+        return slot.value;
+    }
+
+private:
+    struct Slot {
+        std::once_flag once;
+        Setup value;
+    };
+    const CoolingSpec* c_;
+    std::uint64_t seed_;
+    long n_;
+    std::unique_ptr<Slot[]> slots_;
+};
+
 // One method's run from seed index k's initial state. Checkpoint names: "ed" and "dsmc" for the
 // first seed (as single-seed runs), "ed_<k>" after.
 Trace run_method(const RunContext& ctx, const CoolingSpec& c, const Setup& s, long k, bool is_ed) {
@@ -387,38 +411,12 @@ Trace run_method(const RunContext& ctx, const CoolingSpec& c, const Setup& s, lo
     return observe(c, s, eng, run);
 }
 
-// A sweep point's trace as read back from its JSON, with P(b/d) made from its counts.
-Trace trace_from_json(const nlohmann::json& j, const CoolingSpec& c) {
-    Trace tr = from_json_fields<Trace>(j);
+// A sweep point's trace as read back, with P(b/d) made from its counts.
+Trace with_pbd(Trace tr, const CoolingSpec& c) {
     const ImpactParameterHistogram hist = pbd_histogram(c, tr);
     tr.pbd_centres = hist.centres();
     for (std::size_t w = 0; w < hist.windows(); ++w) tr.pbd.push_back(hist.window(w));
     return tr;
-}
-
-// Every seed's ED and DSMC traces, and how many sweep points came from a checkpoint.
-struct Runs {
-    std::vector<Trace> eds, dss;
-    long resumed = 0;
-};
-
-// ED and DSMC (run_ed = false: DSMC alone, for variant studies) from every seed's initial state,
-// one sweep point per seed and method: points 0 .. n_ed-1 are ED of seed i, the rest DSMC of seed
-// i - n_ed. Index order is cost order, ED first (quick scale: ED 0.46, DSMC 0.12 CPU s a seed).
-// A point's random streams are its seed index's, whichever thread, rank or shard computes it.
-Runs run_all(const RunContext& ctx, const CoolingSpec& c, const std::vector<Setup>& setups) {
-    const long n_ed = c.run_ed ? c.seeds : 0, n_dsmc = c.run_dsmc ? c.seeds : 0;
-    std::vector<long> order(std::size_t(n_ed + n_dsmc));
-    std::iota(order.begin(), order.end(), 0L);
-    const SweepResult swept = distributed_sweep(ctx, "cooling", order, [&](long i) {
-        const long k = i < n_ed ? i : i - n_ed;
-        return to_json_fields(run_method(ctx, c, setups[std::size_t(k)], k, i < n_ed));
-    });
-    Runs out;
-    out.resumed = swept.resumed;
-    for (long i = 0; i < n_ed + n_dsmc; ++i)
-        (i < n_ed ? out.eds : out.dss).push_back(trace_from_json(swept.points[std::size_t(i)], c));
-    return out;
 }
 
 // K/K0 of a trace and Eq. (18) at its times.
@@ -649,12 +647,12 @@ void add_setup(Result& res, const CoolingSpec& c, const Setup& s, const std::vec
 
 // The equilibrated state is Maxwellian (Sec. 3: "so that a Maxwellian velocity distribution ...
 // exists"): a2 pooled over the seeds, against 0 with its standard error.
-void add_equilibrated_a2(Result& res, const CoolingSpec& c, std::uint64_t seed, const std::vector<Setup>& setups) {
+void add_equilibrated_a2(Result& res, const CoolingSpec& c, std::uint64_t seed, const Setups& setups) {
     std::vector<Vec2> all;
-    for (const Setup& st : setups) all.insert(all.end(), st.vel.begin(), st.vel.end());
+    for (long k = 0; k < setups.size(); ++k) all.insert(all.end(), setups[k].vel.begin(), setups[k].vel.end());
     const auto a2 = sonine_a2(all);
     RngStream rng(seed, setup_stream(0));
-    const auto v0 = initial_velocities(c, setups.front().mass, rng);
+    const auto v0 = initial_velocities(c, setups[0].mass, rng);
     res.scalar("a2_initial_velocities", sonine_a2(v0)[0], "1", "a2 of the velocities drawn before the equilibration (uniform components: -0.3)");
     res.scalar("a2_equilibrated", a2[0], "1", "Sonine a2 of the velocities at t = 0 (after the elastic equilibration), all seeds");
     res.scalar("a2_equilibrated_err", a2[1], "1", "its standard error (sample variance of v^4)");
@@ -1039,12 +1037,12 @@ void add_dsmc(Result& res, const CoolingSpec& c, const Setup& s, const std::vect
 }
 
 // Figs. 2, 3, 6 and 7 of ED, and DSMC against ED if it ran.
-Result report(const CoolingSpec& c, std::uint64_t seed, const std::vector<Setup>& setups, const std::vector<Trace>& eds,
+Result report_all(const CoolingSpec& c, std::uint64_t seed, const Setups& setups, const std::vector<Trace>& eds,
               const std::vector<Trace>& dss) {
     const Trace& ed = eds.front();
     const std::vector<double> snaps = c.snapshots();
     Result res;
-    add_setup(res, c, setups.front(), eds, dss);
+    add_setup(res, c, setups[0], eds, dss);
     add_equilibrated_a2(res, c, seed, setups);
     add_energy_table(res, ed, c.t0(), "ed");
     add_ed_cooling(res, c, eds);
@@ -1054,22 +1052,44 @@ Result report(const CoolingSpec& c, std::uint64_t seed, const std::vector<Setup>
     add_ed_g(res, ed, snaps, c.t0());
     add_ed_sk(res, eds, snaps, c.sk_k_max, theory::hard_disk_structure_factor_zero(c.rho));
     if (c.velocity_correlation) add_velocity_correlation(res, c, eds, "ed");
-    if (c.run_dsmc) add_dsmc(res, c, setups.front(), eds, dss);
+    if (c.run_dsmc) add_dsmc(res, c, setups[0], eds, dss);
     return res;
 }
 
-Result run(const RunContext& ctx) {
-    const auto c = read_spec<CoolingSpec>(ctx.params);
-    std::vector<Setup> setups;
-    for (long k = 0; k < c.seeds; ++k) setups.push_back(prepare(c, ctx.seed, k));
-    const Runs runs = run_all(ctx, c, setups);
-    Result res = c.run_ed ? report(c, ctx.seed, setups, runs.eds, runs.dss) : report_dsmc_only(c, runs.dss);
-    res.scalar("resumed_points", double(runs.resumed), "1", "sweep points loaded from a checkpoint");
-    return res;
-}
+// Figs. 2, 3, 6 and 7 as a protocol (harness/protocol.hpp): ED and DSMC (run_ed = false: DSMC
+// alone, for variant studies) from every seed's initial state, one sweep point per seed and
+// method: points 0 .. n_ed-1 are ED of seed i, the rest DSMC of seed i - n_ed. Index order is cost
+// order, ED first (quick scale: ED 0.46, DSMC 0.12 CPU s a seed). A point's random streams are its
+// seed index's, whichever thread, rank or shard computes it.
+struct Cooling {
+    static constexpr const char* name = "cooling";
+    using Spec = CoolingSpec;
+    using Outcome = Trace;
+    using Shared = Setups;
+    static void validate(const ParameterSet& p) { granrepro::experiments::validate(p); }
+    static Setups prepare(const Spec& c, const RunContext& ctx) { return Setups(c, ctx.seed); }
+    static long n_ed(const Spec& c) { return c.run_ed ? c.seeds : 0; }
+    static std::vector<long> points(const Spec& c, const Setups&) {
+        std::vector<long> order(std::size_t(n_ed(c) + (c.run_dsmc ? c.seeds : 0)));
+        std::iota(order.begin(), order.end(), 0L);
+        return order;
+    }
+    static Trace compute(const Spec& c, const Setups& setups, long i, const PointContext& ctx) {
+        const long k = i < n_ed(c) ? i : i - n_ed(c);
+        return run_method(ctx, c, setups[k], k, i < n_ed(c));
+    }
+    static Result report(const Spec& c, const Setups& setups, const Swept<Trace>& swept, const RunContext& ctx) {
+        std::vector<Trace> eds, dss;
+        for (std::size_t i = 0; i < swept.outcomes.size(); ++i)
+            (long(i) < n_ed(c) ? eds : dss).push_back(with_pbd(swept.outcomes[i], c));
+        Result res = c.run_ed ? report_all(c, ctx.seed, setups, eds, dss) : report_dsmc_only(c, dss);
+        res.scalar("resumed_points", double(swept.resumed), "1", "sweep points loaded from a checkpoint");
+        return res;
+    }
+};
 
 } // namespace
 
-Experiment cooling() { return {"cooling", &validate, &run}; }
+Experiment cooling() { return protocol_experiment<Cooling>(); }
 
 } // namespace granrepro::experiments

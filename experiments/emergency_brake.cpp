@@ -12,9 +12,7 @@
 
 #include "analysis/curve_analysis.hpp"
 #include "scenarios/impact_shot.hpp"
-#include "harness/experiment.hpp"
-#include "harness/distributed_sweep.hpp"
-#include "io/json_fields.hpp"
+#include "harness/protocol.hpp"
 #include "data/spec.hpp"
 #include "models/hertz_kuwabara_kono.hpp"
 #include "models/linear_spring_dashpot.hpp"
@@ -209,38 +207,50 @@ double grows_with_kN(const Result& r, const EmergencyBrakeSpec& s) {
     return monotone;
 }
 
-Result run(const RunContext& ctx) {
-    const auto s = read_spec<EmergencyBrakeSpec>(ctx.params);
-    const LinearSpringDashpot law = s.law();
-    const auto vy = log_space(s.vy_min, s.vy_max, s.n_vy);
-    const std::size_t n = vy.size();
-    const std::vector<Series> series = all_series(s, law);
-    // One sweep point per series (milliseconds each, so none is saved), in series order.
-    std::vector<long> order(series.size());
-    std::iota(order.begin(), order.end(), 0L);
-    const SweepResult swept = distributed_sweep(ctx, "emergency-brake", order, [&](long si) {
+// Figs. 4 and 5 as a protocol (harness/protocol.hpp): one sweep point per series (milliseconds
+// each, so none is saved), in series order.
+struct EmergencyBrake {
+    static constexpr const char* name = "emergency-brake";
+    static constexpr PointFiles files = PointFiles::None;
+    using Spec = EmergencyBrakeSpec;
+    using Outcome = SeriesPoints;
+    struct Shared {
+        LinearSpringDashpot law;
+        std::vector<double> vy; // the v_y^i grid [m/s]
+        std::vector<Series> series;
+    };
+    static void validate(const ParameterSet& p) { granrepro::experiments::validate(p); }
+    static Shared prepare(const Spec& s, const RunContext&) {
+        const LinearSpringDashpot law = s.law();
+        return {law, log_space(s.vy_min, s.vy_max, s.n_vy), all_series(s, law)};
+    }
+    static std::vector<long> points(const Spec&, const Shared& sh) {
+        std::vector<long> order(sh.series.size());
+        std::iota(order.begin(), order.end(), 0L);
+        return order;
+    }
+    static Outcome compute(const Spec& s, const Shared& sh, long si, const PointContext&) {
         SeriesPoints out;
-        for (std::size_t i = 0; i < n; ++i) out.points.push_back(mean_impact(s, series[std::size_t(si)], vy[i]));
-        return to_json_fields(out);
-    }, PointFiles::None);
-    std::vector<std::vector<Point>> pts;
-    for (const auto& j : swept.points) pts.push_back(from_json_fields<SeriesPoints>(j).points);
-
-    Result r;
-    int incomplete = 0;
-    for (const auto& se : pts)
-        for (const auto& q : se) incomplete += q.incomplete;
-    r.scalar("incomplete_impacts", incomplete, "1", "impacts that had not ended within max_steps");
-    r.scalar("e_N", law.restitution(s.m_free), "1", "free-wall restitution of the linear law, Eq. (4)");
-    r.scalar("t_col", law.collision_time(s.m_free), "s", "free-wall contact duration, Eq. (4)");
-    for (std::size_t si = 0; si < series.size(); ++si) report_series(r, vy, series[si], pts[si]);
-    if (!s.kN_scan.empty())
-        r.scalar("v_crit_and_peak_grow_with_kN", grows_with_kN(r, s), "1", "1 if v_crit and the peak height increase with k_N");
-    return r;
-}
+        for (double vy : sh.vy) out.points.push_back(mean_impact(s, sh.series[std::size_t(si)], vy));
+        return out;
+    }
+    static Result report(const Spec& s, const Shared& sh, const Swept<Outcome>& swept, const RunContext&) {
+        Result r;
+        int incomplete = 0;
+        for (const auto& se : swept.outcomes)
+            for (const auto& q : se.points) incomplete += q.incomplete;
+        r.scalar("incomplete_impacts", incomplete, "1", "impacts that had not ended within max_steps");
+        r.scalar("e_N", sh.law.restitution(s.m_free), "1", "free-wall restitution of the linear law, Eq. (4)");
+        r.scalar("t_col", sh.law.collision_time(s.m_free), "s", "free-wall contact duration, Eq. (4)");
+        for (std::size_t si = 0; si < sh.series.size(); ++si) report_series(r, sh.vy, sh.series[si], swept.outcomes[si].points);
+        if (!s.kN_scan.empty())
+            r.scalar("v_crit_and_peak_grow_with_kN", grows_with_kN(r, s), "1", "1 if v_crit and the peak height increase with k_N");
+        return r;
+    }
+};
 
 } // namespace
 
-Experiment emergency_brake() { return {"emergency-brake", &validate, &run}; }
+Experiment emergency_brake() { return protocol_experiment<EmergencyBrake>(); }
 
 } // namespace granrepro::experiments

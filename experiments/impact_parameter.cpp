@@ -11,7 +11,6 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
-#include <nlohmann/json.hpp>
 #include <numeric>
 #include <string>
 #include <vector>
@@ -25,9 +24,7 @@
 #include "engines/ed/ed_engine.hpp"
 #include "engines/ed/ed_initial_states.hpp"
 #include "experiments/work_limits.hpp"
-#include "harness/distributed_sweep.hpp"
-#include "harness/experiment.hpp"
-#include "io/json_fields.hpp"
+#include "harness/protocol.hpp"
 #include "observables/collisional_stress.hpp"
 #include "observables/impact_parameter_histogram.hpp"
 #include "scenarios/ed_gas.hpp"
@@ -368,8 +365,8 @@ PointResult run_3d(const ImpactSpec& s, std::uint64_t seed, std::size_t k) {
 }
 
 // Sweep point i: the 2D run of random stream i (see ImpactSpec::per_seed) or a 3D point.
-nlohmann::json run_point(const ImpactSpec& s, std::uint64_t seed, std::size_t i) {
-    if (i >= s.n_2d()) return to_json_fields(run_3d(s, seed, i - s.n_2d()));
+PointResult run_point(const ImpactSpec& s, std::uint64_t seed, std::size_t i) {
+    if (i >= s.n_2d()) return run_3d(s, seed, i - s.n_2d());
     const auto n = static_cast<std::size_t>(s.N);
     const std::size_t k = i % s.per_seed();
     const bool inelastic = k < s.n_r();
@@ -386,17 +383,16 @@ nlohmann::json run_point(const ImpactSpec& s, std::uint64_t seed, std::size_t i)
     // Sec. 3: "first allowed to evolve with r = 1 for about 10 collisions per particle"; the
     // elastic run conserves K, so vbar is still the initial mean velocity at t = 0.
     equilibrate(e, s.equilibration_collisions);
-    if (inelastic) return to_json_fields(cooling_run(s, e, l, i < s.per_seed(), mix_seed(seed, i)));
+    if (inelastic) return cooling_run(s, e, l, i < s.per_seed(), mix_seed(seed, i));
     ImpactParameterHistogram hist(s.n_bins, {e.time(), std::numeric_limits<double>::max()}); // Fig. 4's elastic check
     e.run_collisions(static_cast<std::uint64_t>(s.elastic_collisions_per_particle * static_cast<double>(n) / 2.0 + 0.5),
                      [&](const CollisionRecord& c) { hist.add(c); });
-    return to_json_fields(counts_only(hist.window(0).counts));
+    return counts_only(hist.window(0).counts);
 }
 
-// Every point goes through distributed_sweep(), so threads, MPI ranks and --points shards give the
-// same bits. Costliest first, as measured at quick scale: the 3D points (every event moves all
-// spheres), the cooling runs (mostly eddy shuffles), the elastic 2D runs; each group dilute first.
-std::vector<PointResult> sweep(const RunContext& ctx, const ImpactSpec& s, long& resumed) {
+// Costliest first, as measured at quick scale: the 3D points (every event moves all spheres), the
+// cooling runs (mostly eddy shuffles), the elastic 2D runs; each group dilute first.
+std::vector<long> cost_order(const ImpactSpec& s) {
     std::vector<long> order(s.n_2d() + s.elastic3d_packing.size());
     std::iota(order.begin(), order.end(), 0L);
     auto cost_rank = [&](long i) {
@@ -405,13 +401,7 @@ std::vector<PointResult> sweep(const RunContext& ctx, const ImpactSpec& s, long&
         return k < s.n_r() ? std::pair{1, 0.0} : std::pair{2, s.elastic_densities[k - s.n_r()]};
     };
     std::stable_sort(order.begin(), order.end(), [&](long a, long b) { return cost_rank(a) < cost_rank(b); });
-    const SweepResult swept = distributed_sweep(ctx, "impact-parameter", order, [&](long i) {
-        return run_point(s, ctx.seed, static_cast<std::size_t>(i));
-    });
-    std::vector<PointResult> pts;
-    for (const auto& j : swept.points) pts.push_back(from_json_fields<PointResult>(j));
-    resumed = swept.resumed;
-    return pts;
+    return order;
 }
 
 const PointResult& at(const ImpactSpec& s, const std::vector<PointResult>& pts, std::size_t seed, std::size_t k) {
@@ -738,30 +728,40 @@ void cooling_curves(Result& res, const ImpactSpec& s, const std::vector<PointRes
     }
 }
 
-Result run(const RunContext& ctx) {
-    const auto s = read_spec<ImpactSpec>(ctx.params);
-    long resumed = 0;
-    const std::vector<PointResult> pts = sweep(ctx, s, resumed);
-    Result res;
-    res.scalar("resumed_points", double(resumed), "1", "sweep points loaded from a checkpoint");
-    const double l = box_side(static_cast<std::size_t>(s.N), s.d, s.rho);
-    res.scalar("box_side", l, "m", "side of the periodic square box at rho (N pi d^2 / (4 L^2) = rho)");
-    res.scalar("box_side_over_d", l / s.d, "1", "box side in diameters");
-    std::vector<double> centres(static_cast<std::size_t>(s.n_bins));
-    for (int b = 0; b < s.n_bins; ++b) centres[static_cast<std::size_t>(b)] = (b + 0.5) / s.n_bins;
-    fig4_inelastic(res, s, pts, centres);
-    fig4_windows(res, s, pts, centres);
-    fig4_elastic(res, s, pts, centres);
-    fig4_elastic_3d(res, s, pts, centres);
-    fig5_panels(res, s, pts, l);
-    fig5_orderings(res, s, pts);
-    fig5_eddies(res, s, pts);
-    cooling_curves(res, s, pts);
-    return res;
-}
+// Figs. 4 and 5 as a protocol (harness/protocol.hpp): one sweep point per 2D run (random stream
+// i, see ImpactSpec::per_seed) or 3D packing.
+struct ImpactParameter {
+    static constexpr const char* name = "impact-parameter";
+    using Spec = ImpactSpec;
+    using Outcome = PointResult;
+    static void validate(const ParameterSet& p) { granrepro::experiments::validate(p); }
+    static std::vector<long> points(const Spec& s) { return cost_order(s); }
+    static PointResult compute(const Spec& s, long i, const PointContext& ctx) {
+        return run_point(s, ctx.seed, static_cast<std::size_t>(i));
+    }
+    static Result report(const Spec& s, const Swept<PointResult>& swept, const RunContext&) {
+        const std::vector<PointResult>& pts = swept.outcomes;
+        Result res;
+        res.scalar("resumed_points", double(swept.resumed), "1", "sweep points loaded from a checkpoint");
+        const double l = box_side(static_cast<std::size_t>(s.N), s.d, s.rho);
+        res.scalar("box_side", l, "m", "side of the periodic square box at rho (N pi d^2 / (4 L^2) = rho)");
+        res.scalar("box_side_over_d", l / s.d, "1", "box side in diameters");
+        std::vector<double> centres(static_cast<std::size_t>(s.n_bins));
+        for (int b = 0; b < s.n_bins; ++b) centres[static_cast<std::size_t>(b)] = (b + 0.5) / s.n_bins;
+        fig4_inelastic(res, s, pts, centres);
+        fig4_windows(res, s, pts, centres);
+        fig4_elastic(res, s, pts, centres);
+        fig4_elastic_3d(res, s, pts, centres);
+        fig5_panels(res, s, pts, l);
+        fig5_orderings(res, s, pts);
+        fig5_eddies(res, s, pts);
+        cooling_curves(res, s, pts);
+        return res;
+    }
+};
 
 } // namespace
 
-Experiment impact_parameter() { return {"impact-parameter", &validate, &run}; }
+Experiment impact_parameter() { return protocol_experiment<ImpactParameter>(); }
 
 } // namespace granrepro::experiments

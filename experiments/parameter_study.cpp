@@ -17,7 +17,6 @@
 #include <chrono>
 #include <cmath>
 #include <gsl/gsl_fit.h>
-#include <nlohmann/json.hpp>
 #include <numeric>
 #include <string>
 
@@ -28,8 +27,7 @@
 #include "engines/ed/ed_engine.hpp"
 #include "engines/ed/ed_initial_states.hpp"
 #include "experiments/work_limits.hpp"
-#include "harness/experiment.hpp"
-#include "harness/distributed_sweep.hpp"
+#include "harness/protocol.hpp"
 #include "harness/run_log.hpp"
 #include "scenarios/ed_gas.hpp"
 
@@ -84,7 +82,10 @@ struct Trace {
     double wall_seconds = 0, events = 0, pairs = 0;
     std::string error; // the engine's message if it stopped the run (collapse guard)
     double k(std::size_t i) const { return kx[i] + ky[i] + krot[i]; }
-    NLOHMANN_DEFINE_TYPE_INTRUSIVE(Trace, t, cn, elastic_cn, kx, ky, krot, wall_seconds, events, pairs, error)
+    template <class V> void fields(V&& v) {
+        v("t", t), v("cn", cn), v("elastic_cn", elastic_cn), v("kx", kx), v("ky", ky), v("krot", krot);
+        v("wall_seconds", wall_seconds), v("events", events), v("pairs", pairs), v("error", error);
+    }
 };
 
 Trace run_point(const ParameterStudySpec& s, const Point& pt, std::uint64_t seed, std::uint64_t stream) {
@@ -222,9 +223,11 @@ struct Sweep {
     std::vector<MeanCurve> mean_cn, mean_t;       // seed means per point, against C/N and t
     long resumed = 0;
     double wall = 0; // [s]
+    std::chrono::steady_clock::time_point start; // of the sweep
 };
 
-Sweep run_sweep(const RunContext& ctx, const ParameterStudySpec& s) {
+// The points of the sweep; every point runs with `seeds` initial states.
+Sweep make_sweep(const ParameterStudySpec& s) {
     Sweep sw;
     auto find_or_add = [&](Point q) {
         for (std::size_t k = 0; k < sw.points.size(); ++k)
@@ -234,19 +237,7 @@ Sweep run_sweep(const RunContext& ctx, const ParameterStudySpec& s) {
     };
     for (double r : s.fig8_r) sw.fig8_idx.push_back(find_or_add({r, s.fig8_t_c}));
     for (double tc : s.fig9_t_c) sw.fig9_idx.push_back(find_or_add({s.fig9_r, tc}));
-    const long n_tasks = long(sw.points.size()) * s.seeds;
-    sw.traces.assign(sw.points.size(), std::vector<Trace>(std::size_t(s.seeds)));
-    // Point i is (point i / seeds, seed i % seeds) with random stream i.
-    std::vector<long> order(static_cast<std::size_t>(n_tasks));
-    std::iota(order.begin(), order.end(), 0L);
-    const auto wall0 = std::chrono::steady_clock::now();
-    const SweepResult swept = distributed_sweep(ctx, "parameter-study", order, [&](long i) {
-        return nlohmann::json(run_point(s, sw.points[std::size_t(i / s.seeds)], ctx.seed, std::uint64_t(i)));
-    });
-    for (long i = 0; i < n_tasks; ++i)
-        sw.traces[std::size_t(i / s.seeds)][std::size_t(i % s.seeds)] = swept.points[std::size_t(i)].get<Trace>();
-    sw.wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
-    sw.resumed = swept.resumed;
+    sw.start = std::chrono::steady_clock::now();
     return sw;
 }
 
@@ -623,24 +614,46 @@ void report_cn_jumps(Result& res, const ParameterStudySpec& s, const Sweep& sw) 
     t.add({{"r", "1", pr}, {"t_c", "s", ptc}, {"jump_factor", "1", mean}, {"jump_factor_sem", "1", sem}});
 }
 
-Result run(const RunContext& ctx) {
-    const auto s = read_spec<ParameterStudySpec>(ctx.params);
-    Sweep sw = run_sweep(ctx, s);
-    Result res;
-    report_totals(res, s, sw);
-    const std::vector<double> cn_grid = log_space(0.1, s.cn_end, int(std::round(40 * std::log10(s.cn_end / 0.1))) + 1);
-    report_points(res, sw, cn_grid);
-    report_fig8_summary(res, report_fig8_rows(res, s, sw));
-    const Fig9 f9 = report_fig9_rows(res, s, sw, cn_grid);
-    report_fig9_summary(res, f9);
-    report_tc_late(res, f9);
-    report_tc_spread(res, s, f9);
-    report_cn_jumps(res, s, sw);
-    return res;
-}
+// Figs. 8 and 9 as a protocol (harness/protocol.hpp): sweep point i is (point i / seeds, seed
+// i % seeds) with random stream i.
+struct ParameterStudy {
+    static constexpr const char* name = "parameter-study";
+    using Spec = ParameterStudySpec;
+    using Outcome = Trace;
+    using Shared = Sweep;
+    static void validate(const ParameterSet& p) { granrepro::experiments::validate(p); }
+    static Sweep prepare(const Spec& s, const RunContext&) { return make_sweep(s); }
+    static std::vector<long> points(const Spec& s, const Sweep& sw) {
+        std::vector<long> order(sw.points.size() * std::size_t(s.seeds));
+        std::iota(order.begin(), order.end(), 0L);
+        return order;
+    }
+    static Trace compute(const Spec& s, const Sweep& sw, long i, const PointContext& ctx) {
+        return run_point(s, sw.points[std::size_t(i / s.seeds)], ctx.seed, std::uint64_t(i));
+    }
+    static Result report(const Spec& s, const Sweep& shared, const Swept<Trace>& swept, const RunContext&) {
+        Sweep sw = shared;
+        sw.traces.assign(sw.points.size(), std::vector<Trace>(std::size_t(s.seeds)));
+        for (std::size_t i = 0; i < swept.outcomes.size(); ++i)
+            sw.traces[i / std::size_t(s.seeds)][i % std::size_t(s.seeds)] = swept.outcomes[i];
+        sw.wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - sw.start).count();
+        sw.resumed = swept.resumed;
+        Result res;
+        report_totals(res, s, sw);
+        const std::vector<double> cn_grid = log_space(0.1, s.cn_end, int(std::round(40 * std::log10(s.cn_end / 0.1))) + 1);
+        report_points(res, sw, cn_grid);
+        report_fig8_summary(res, report_fig8_rows(res, s, sw));
+        const Fig9 f9 = report_fig9_rows(res, s, sw, cn_grid);
+        report_fig9_summary(res, f9);
+        report_tc_late(res, f9);
+        report_tc_spread(res, s, f9);
+        report_cn_jumps(res, s, sw);
+        return res;
+    }
+};
 
 } // namespace
 
-Experiment parameter_study() { return {"parameter-study", &validate, &run}; }
+Experiment parameter_study() { return protocol_experiment<ParameterStudy>(); }
 
 } // namespace granrepro::experiments

@@ -28,11 +28,11 @@ const std::vector<Experiment>& experiment_registry() {
     static const std::vector<Experiment> table = {
         experiments::brake_failure(),
         experiments::emergency_brake(),
-        distributed(experiments::bistable_pipe()),
-        distributed(experiments::impact_parameter()),
-        distributed(experiments::cooling()),
+        experiments::bistable_pipe(),
+        experiments::impact_parameter(),
+        experiments::cooling(),
         distributed(experiments::pipe_arching()),
-        distributed(experiments::parameter_study()),
+        experiments::parameter_study(),
         distributed(experiments::cluster_growth()),
     };
     return table;

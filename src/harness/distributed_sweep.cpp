@@ -133,7 +133,8 @@ void serve_points(const RunContext& ctx, const std::function<nlohmann::json(long
 } // namespace
 
 SweepResult distributed_sweep(const RunContext& ctx, const std::string& label, const std::vector<long>& order,
-                              const std::function<nlohmann::json(long)>& compute, PointFiles files) {
+                              const std::function<nlohmann::json(long)>& compute, PointFiles files,
+                              const std::string& outcome_schema) {
     const bool spread = ctx.sweep.ranks > 1;
 #ifdef GRANREPRO_HAVE_MPI
     if (spread && mpi::rank() != 0) {
@@ -167,7 +168,7 @@ SweepResult distributed_sweep(const RunContext& ctx, const std::string& label, c
         return out;
     }
     std::optional<SweepCheckpoint> checkpoint;
-    if (files == PointFiles::Saved) checkpoint.emplace(ctx, label);
+    if (files == PointFiles::Saved) checkpoint.emplace(ctx, label, outcome_schema);
     SweepResult out;
     out.points.resize(std::size_t(n));
     out.cpu_seconds.assign(std::size_t(n), -1.0);

@@ -49,7 +49,10 @@ struct ShardFinished : std::runtime_error {
 // more than recomputing; only for experiments not marked distributed (no shards to gather).
 enum class PointFiles { Saved, None };
 
+// outcome_schema: the hash of the points' JSON layout, recorded in each point file; a saved point
+// of another layout is recomputed (empty: not checked). harness/protocol.hpp passes it.
 SweepResult distributed_sweep(const RunContext& ctx, const std::string& label, const std::vector<long>& order,
-                              const std::function<nlohmann::json(long)>& compute, PointFiles files = PointFiles::Saved);
+                              const std::function<nlohmann::json(long)>& compute, PointFiles files = PointFiles::Saved,
+                              const std::string& outcome_schema = "");
 
 } // namespace granrepro

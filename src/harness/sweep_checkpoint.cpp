@@ -2,6 +2,7 @@
 
 #include <cstdio>
 #include <fstream>
+#include <utility>
 
 #include "core/stable_hash.hpp"
 #include "harness/run_checkpoint.hpp"
@@ -13,7 +14,8 @@ namespace {
 constexpr const char* kPointSchema = "granrepro-sweep-point";
 }
 
-SweepCheckpoint::SweepCheckpoint(const RunContext& ctx, const std::string& label) : quiet_(ctx.quiet) {
+SweepCheckpoint::SweepCheckpoint(const RunContext& ctx, const std::string& label, std::string outcome_schema)
+    : outcome_schema_(std::move(outcome_schema)), quiet_(ctx.quiet) {
     // The label keeps two sweeps of one experiment apart; empty for the one sweep most have.
     dir_ = ctx.work_dir / ("sweep-" + checkpoint_fingerprint(ctx) + (label.empty() ? "" : "-" + label));
     std::filesystem::create_directories(dir_);
@@ -27,12 +29,14 @@ std::optional<SweepCheckpoint::Loaded> SweepCheckpoint::load(long point) const {
     try {
         const nlohmann::json j = nlohmann::json::parse(in);
         if (!j.is_object() || j.value("schema", "") != kPointSchema ||
-            (j.value("schema_version", 0) != 1 && j.value("schema_version", 0) != 2))
-            problem = "not a granrepro-sweep-point v1 or v2 file";
+            j.value("schema_version", 0) < 1 || j.value("schema_version", 0) > 3)
+            problem = "not a granrepro-sweep-point v1, v2 or v3 file";
         else if (!j.contains("point") || j["point"] != point)
             problem = "holds another point";
         else if (!j.contains("value") || !j.contains("fnv1a64") || j["fnv1a64"] != hex64(fnv1a64(j["value"].dump())))
             problem = "value does not match its hash";
+        else if (!outcome_schema_.empty() && j.value("outcome_schema", "") != outcome_schema_)
+            problem = "saved for another layout of the point's outcome (a build with other fields)";
         else {
             std::lock_guard<std::mutex> lock(mutex_);
             ++resumed_;
@@ -58,8 +62,9 @@ std::optional<SweepCheckpoint::Loaded> SweepCheckpoint::load(long point) const {
 void SweepCheckpoint::save(long point, const nlohmann::json& value, const PointCost& cost) {
     const nlohmann::json c = {{"cpu_s", cost.cpu_s}, {"wall_s", cost.wall_s}, {"started_unix", cost.started_unix},
                               {"part", cost.part}, {"rank", cost.rank}};
-    const nlohmann::json j = {{"schema", kPointSchema}, {"schema_version", 2}, {"point", point},
-                              {"fnv1a64", hex64(fnv1a64(value.dump()))}, {"value", value}, {"cost", c}};
+    nlohmann::json j = {{"schema", kPointSchema}, {"schema_version", 3}, {"point", point},
+                        {"fnv1a64", hex64(fnv1a64(value.dump()))}, {"value", value}, {"cost", c}};
+    if (!outcome_schema_.empty()) j["outcome_schema"] = outcome_schema_;
     std::filesystem::create_directories(dir_); // a shard's commit may have removed an empty folder
     write_file_atomically(dir_ / (std::to_string(point) + ".json"), j.dump());
 }

@@ -3,11 +3,14 @@
 // seed. Re-running the same command after an interruption loads the finished points instead of
 // recomputing them; any change of inputs changes the fingerprint and starts afresh. The runner
 // deletes the directory once the results are written.
-// A point file is {"schema": "granrepro-sweep-point", "schema_version": 2, "point": i,
-// "fnv1a64": <FNV-1a 64 of value.dump()>, "value": ..., "cost": {cpu_s, wall_s, started_unix, part,
-// rank}}; version 1 files (without "cost") are read too, their cost unknown. Written durably (fsync, rename). A file
-// that is torn, not JSON, another point's, or whose value does not match its hash (`{}`, garbage)
-// is recomputed with a note on stderr, never trusted and never a permanent failure.
+// A point file is {"schema": "granrepro-sweep-point", "schema_version": 3, "point": i,
+// "fnv1a64": <FNV-1a 64 of value.dump()>, "outcome_schema": <hash of the outcome's layout>,
+// "value": ..., "cost": {cpu_s, wall_s, started_unix, part, rank}}; version 1 files (without
+// "cost") and 2 (without "outcome_schema") are read too, their cost unknown in version 1.
+// Written durably (fsync, rename). A file that is torn, not JSON, another point's, whose value
+// does not match its hash (`{}`, garbage) or that was saved for another outcome layout (a build
+// whose outcome struct had other fields; a file without the layout when the sweep states one) is
+// recomputed with a note on stderr, never trusted and never a permanent failure.
 // Each point is its own file, written through a rename, so concurrent --points shards and MPI
 // ranks never need a lock to share one --out.
 #pragma once
@@ -24,8 +27,9 @@ namespace granrepro {
 
 class SweepCheckpoint {
 public:
-    // `label` tells apart the sweeps of one run (an experiment may sweep twice).
-    explicit SweepCheckpoint(const RunContext& ctx, const std::string& label = "");
+    // `label` tells apart the sweeps of one run (an experiment may sweep twice). outcome_schema:
+    // the hash of the points' layout (json_fields_schema), or empty when the sweep states none.
+    explicit SweepCheckpoint(const RunContext& ctx, const std::string& label = "", std::string outcome_schema = "");
     struct Loaded {
         nlohmann::json value;
         PointCost cost; // as recorded when the point was computed (unknown: -1)
@@ -36,6 +40,7 @@ public:
 
 private:
     std::filesystem::path dir_;
+    std::string outcome_schema_;
     bool quiet_ = false;
     mutable long resumed_ = 0;
     mutable std::mutex mutex_;

@@ -8,6 +8,7 @@
 #pragma once
 #include <cmath>
 #include <nlohmann/json.hpp>
+#include <string>
 #include <type_traits>
 #include <vector>
 
@@ -52,7 +53,34 @@ void get(const nlohmann::json& j, T& x) {
     }
 }
 
+// The layout put() writes for a T: field names and nesting, a number's kind (a double, another
+// arithmetic type), text, a Vec2, an array of what. Two types whose JSON forms could not be read
+// as each other differ here (a renamed, added or removed field, a double become a list).
+template <class T>
+std::string schema() {
+    if constexpr (std::is_same_v<T, double>) return "f";
+    else if constexpr (std::is_same_v<T, bool>) return "b";
+    else if constexpr (std::is_arithmetic_v<T>) return "i";
+    else if constexpr (std::is_same_v<T, std::string>) return "s";
+    else if constexpr (std::is_same_v<T, nlohmann::json>) return "j";
+    else if constexpr (std::is_same_v<T, Vec2>) return "v";
+    else if constexpr (HasFields<T>) {
+        std::string out = "{";
+        T x{};
+        x.fields([&](const char* name, auto& f) { out += std::string(name) + ":" + schema<std::remove_cvref_t<decltype(f)>>() + ","; });
+        return out + "}";
+    } else if constexpr (requires(const T& x) { to_json_value(x); }) return "c";
+    else return "[" + schema<typename T::value_type>() + "]";
+}
+
 } // namespace json_fields_detail
+
+// The layout of T's JSON form as text (json_fields_detail::schema): sweep point files record its
+// hash, so that a point saved by a build whose outcome struct differed is recomputed, not misread.
+template <HasFields T>
+std::string json_fields_schema() {
+    return json_fields_detail::schema<T>();
+}
 
 template <HasFields T>
 nlohmann::json to_json_fields(const T& s) {
