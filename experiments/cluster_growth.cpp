@@ -25,6 +25,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <memory>
 #include <gsl/gsl_statistics_double.h>
 #include <mutex>
 #include <optional>
@@ -37,13 +38,11 @@
 #include "engines/ed/ed_engine.hpp"
 #include "engines/ed/ed_initial_states.hpp"
 #include "experiments/work_limits.hpp"
-#include "harness/experiment.hpp"
-#include "harness/distributed_sweep.hpp"
+#include "harness/protocol.hpp"
 #include "harness/progress.hpp"
 #include "harness/run_checkpoint.hpp"
 #include "harness/run_log.hpp"
 #include "harness/sampled_run.hpp"
-#include "io/json_fields.hpp"
 #include "observables/collision_rate_fit.hpp"
 #include "observables/rate_histogram.hpp"
 #include "scenarios/ed_gas.hpp"
@@ -299,7 +298,7 @@ void record_instant(LoopState& st, const EdEngine& eng, double t) {
     st.prev_fast = st.fast;
 }
 
-// A run's sweep point: what the analysis reads of it, through its JSON (io/json_fields.hpp), so
+// A run's sweep point: what the analysis reads of it, through its JSON (harness/protocol.hpp), so
 // that threads, ranks, shards and gather give the same bits. No ±inf in it (JSON would return NaN;
 // omega_eq is NaN without equilibration, and stays NaN): the carry's per-particle bookkeeping,
 // -inf / +inf before a particle's first collision, stays in the mid-run checkpoint.
@@ -886,62 +885,77 @@ void fig11(Result& res, const std::vector<Instant>& instants, const ClusterSpec&
     report_structure_growth(res, mt, xi);
 }
 
-// A run's point JSON holds only what the analysis reads: of the other rule's run the samples
+// A run's sweep point holds only what the analysis reads: of the other rule's run the samples
 // (Fig. 10), of the main run's instants the positions only at the Fig. 11 snapshot times.
-nlohmann::json point_json(RunOutcome r, const ClusterSpec& s, bool main_run) {
+RunOutcome trimmed(RunOutcome r, const ClusterSpec& s, bool main_run) {
     if (!main_run) r.st.instants.clear();
     for (InstantRecord& in : r.st.instants)
         if (std::none_of(s.snapshot_times.begin(), s.snapshot_times.end(), [&](double tq) { return snapshot_at(in.t, tq); }))
             in.pos.clear();
-    return to_json_fields(r);
+    return r;
 }
 
-// The main run (pair rule tc_both) to cn_end and, with tc_compare_until > 0, the other pair rule
-// beside it up to that time, both from one equilibrated state: the sweep's points 0 and 1, the
-// main run first (the longer one: 1.8 against 0.44 CPU s at quick scale). The state is made
-// once, by the first point that needs it (not at all where every point is resumed or gathered).
-std::vector<RunOutcome> tced_runs(const RunContext& ctx, const ClusterSpec& s, long& resumed) {
-    std::once_flag made;
-    EquilibratedGas gas;
-    Progress progress("cluster-growth", long(std::ceil(std::log2(s.t_max / s.t_base))) + 4, ctx.quiet);
-    const std::vector<long> order = s.tc_compare_until > 0 ? std::vector<long>{0, 1} : std::vector<long>{0};
-    const SweepResult swept = distributed_sweep(ctx, "cluster-growth", order, [&](long k) {
-        std::call_once(made, [&] { gas = initial_gas(s, ctx.seed); });
-        if (k == 0) return point_json(run_tced(ctx, s, gas, s.tc_both, s.cn_end, s.t_max, "ed", &progress), s, true);
-        return point_json(run_tced(ctx, s, gas, !s.tc_both, INFINITY, s.tc_compare_until, "ed_other_rule", nullptr), s, false);
-    });
-    resumed = swept.resumed;
-    std::vector<RunOutcome> runs;
-    for (const auto& j : swept.points) runs.push_back(from_json_fields<RunOutcome>(j));
-    return runs;
-}
+// Figs. 10-12 as a protocol (harness/protocol.hpp). The main run (pair rule tc_both) to cn_end
+// and, with tc_compare_until > 0, the other pair rule beside it up to that time, both from one
+// equilibrated state: the sweep's points 0 and 1, the main run first (the longer one: 1.8 against
+// 0.44 CPU s at quick scale).
+struct ClusterGrowth {
+    static constexpr const char* name = "cluster-growth";
+    using Spec = ClusterSpec;
+    using Outcome = RunOutcome;
+    // The state both runs start from, made once, by the first point that needs it (not at all
+    // where every point is resumed or gathered), and the main run's progress line.
+    struct Shared {
+        struct State {
+            std::once_flag made;
+            EquilibratedGas gas;
+            std::optional<Progress> progress;
+        };
+        std::unique_ptr<State> state = std::make_unique<State>();
+        const EquilibratedGas& gas(const ClusterSpec& s, std::uint64_t seed) const {
+            std::call_once(state->made, [&] { state->gas = initial_gas(s, seed); });
+            return state->gas;
+        }
+    };
+    static void validate(const ParameterSet& p) { granrepro::experiments::validate(p); }
+    static Shared prepare(const Spec& s, const RunContext& ctx) {
+        Shared sh;
+        sh.state->progress.emplace("cluster-growth", long(std::ceil(std::log2(s.t_max / s.t_base))) + 4, ctx.quiet);
+        return sh;
+    }
+    static std::vector<long> points(const Spec& s, const Shared&) {
+        return s.tc_compare_until > 0 ? std::vector<long>{0, 1} : std::vector<long>{0};
+    }
+    static RunOutcome compute(const Spec& s, const Shared& sh, long k, const PointContext& ctx) {
+        const EquilibratedGas& gas = sh.gas(s, ctx.seed);
+        if (k == 0) return trimmed(run_tced(ctx, s, gas, s.tc_both, s.cn_end, s.t_max, "ed", &*sh.state->progress), s, true);
+        return trimmed(run_tced(ctx, s, gas, !s.tc_both, INFINITY, s.tc_compare_until, "ed_other_rule", nullptr), s, false);
+    }
+    static Result report(const Spec& s, const Shared&, const Swept<RunOutcome>& swept, const RunContext&) {
+        std::vector<RunOutcome> runs = swept.outcomes;
+        const RunOutcome& main_run = runs.front();
+        const RunOutcome* other_run = runs.size() > 1 ? &runs[1] : nullptr;
+        std::vector<Instant> instants;
+        for (InstantRecord& rec : runs.front().st.instants) instants.push_back(make_instant(std::move(rec), s));
 
-Result run(const RunContext& ctx) {
-    const auto s = read_spec<ClusterSpec>(ctx.params);
-    long resumed = 0;
-    std::vector<RunOutcome> runs = tced_runs(ctx, s, resumed);
-    const RunOutcome& main_run = runs.front();
-    const RunOutcome* other_run = runs.size() > 1 ? &runs[1] : nullptr;
-    std::vector<Instant> instants;
-    for (InstantRecord& rec : runs.front().st.instants) instants.push_back(make_instant(std::move(rec), s));
-
-    Result res;
-    res.scalar("resumed_points", double(resumed), "1", "sweep points loaded from a checkpoint");
-    const KineticTheory kin = kinetic_theory(s);
-    report_run(res, s, kin, main_run, other_run);
-    fig10(res, s, kin.t0, main_run.st, other_run ? &other_run->st : nullptr);
-    fig12_instants_table(res, instants);
-    report_poisson_falling(res, instants, s.poisson_until_cn);
-    fig12_panels(res, instants, s.paper_cn);
-    report_at_paper_cn(res, instants, s.paper_cn);
-    report_clustered_B(res, instants);
-    report_powerlaw_onset(res, instants);
-    fig11(res, instants, s);
-    return res;
-}
+        Result res;
+        res.scalar("resumed_points", double(swept.resumed), "1", "sweep points loaded from a checkpoint");
+        const KineticTheory kin = kinetic_theory(s);
+        report_run(res, s, kin, main_run, other_run);
+        fig10(res, s, kin.t0, main_run.st, other_run ? &other_run->st : nullptr);
+        fig12_instants_table(res, instants);
+        report_poisson_falling(res, instants, s.poisson_until_cn);
+        fig12_panels(res, instants, s.paper_cn);
+        report_at_paper_cn(res, instants, s.paper_cn);
+        report_clustered_B(res, instants);
+        report_powerlaw_onset(res, instants);
+        fig11(res, instants, s);
+        return res;
+    }
+};
 
 } // namespace
 
-Experiment cluster_growth() { return {"cluster-growth", &validate, &run}; }
+Experiment cluster_growth() { return protocol_experiment<ClusterGrowth>(); }
 
 } // namespace granrepro::experiments

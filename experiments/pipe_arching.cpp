@@ -40,10 +40,8 @@
 #include "data/spec.hpp"
 #include "engines/ed/ed_engine.hpp"
 #include "engines/ed/ed_initial_states.hpp"
-#include "harness/experiment.hpp"
 #include "harness/progress.hpp"
-#include "harness/distributed_sweep.hpp"
-#include "io/json_fields.hpp"
+#include "harness/protocol.hpp"
 #include "observables/collision_counter.hpp"
 #include "observables/collision_rate_fit.hpp"
 #include "observables/column_bands.hpp"
@@ -1004,39 +1002,46 @@ void report_costs(Result& res, const std::vector<SeedRun>& runs) {
     res.scalar("tc_elastic_share_median", median(per_seed(runs, &SeedRun::elastic_share)), "1", "share of the fall's pair collisions made elastic by TC");
 }
 
-Result run(const RunContext& ctx) {
-    const Pipe s(read_spec<PipeArchingSpec>(ctx.params));
+// Sec. 5 and Figs. 13-14 as a protocol (harness/protocol.hpp): one sweep point per seed run.
+struct PipeArching {
+    static constexpr const char* name = "pipe-arching";
+    using Spec = PipeArchingSpec;
+    using Outcome = SeedRun;
+    using Shared = Pipe;
+    static void validate(const ParameterSet& p) { granrepro::experiments::validate(p); }
+    static Pipe prepare(const Spec& spec, const RunContext&) { return Pipe(spec); }
+    static std::vector<long> points(const Spec&, const Pipe& s) {
+        std::vector<long> order(static_cast<std::size_t>(s.n_seeds));
+        std::iota(order.begin(), order.end(), 0L);
+        return order;
+    }
     // Seed run k draws RngStream(seed, k) whatever n_seeds, rank or shard: any split of the seeds
     // (ranks, --points shards) reproduces the single run.
-    std::vector<long> order(static_cast<std::size_t>(s.n_seeds));
-    std::iota(order.begin(), order.end(), 0L);
-    const SweepResult swept = distributed_sweep(ctx, "pipe-arching", order, [&](long k) {
-        return to_json_fields(run_seed(s, ctx.seed, k, k == 0));
-    });
-    std::vector<SeedRun> runs;
-    for (long k = 0; k < s.n_seeds; ++k) runs.push_back(from_json_fields<SeedRun>(swept.points[std::size_t(k)]));
-
-    Result res;
-    res.scalar("resumed_points", double(swept.resumed), "1", "seeds loaded from a checkpoint");
-    res.scalar("n_seeds", double(s.n_seeds), "1", "independent runs");
-    res.scalar("layers", std::ceil(double(s.n_particles) / (std::floor((s.L - s.d) / s.a + 1e-9) + 0.5)), "1",
-               "rows of the initial lattice");
-    for (const FigureTable& f : runs.front().figure) {
-        Table& t = res.table(f.name, f.description);
-        for (std::size_t c = 0; c < f.columns.size(); ++c) t.add(f.columns[c], f.units[c]).values = f.values[c];
+    static SeedRun compute(const Spec&, const Pipe& s, long k, const PointContext& ctx) { return run_seed(s, ctx.seed, k, k == 0); }
+    static Result report(const Spec&, const Pipe& s, const Swept<SeedRun>& swept, const RunContext&) {
+        const std::vector<SeedRun>& runs = swept.outcomes;
+        Result res;
+        res.scalar("resumed_points", double(swept.resumed), "1", "seeds loaded from a checkpoint");
+        res.scalar("n_seeds", double(s.n_seeds), "1", "independent runs");
+        res.scalar("layers", std::ceil(double(s.n_particles) / (std::floor((s.L - s.d) / s.a + 1e-9) + 0.5)), "1",
+                   "rows of the initial lattice");
+        for (const FigureTable& f : runs.front().figure) {
+            Table& t = res.table(f.name, f.description);
+            for (std::size_t c = 0; c < f.columns.size(); ++c) t.add(f.columns[c], f.units[c]).values = f.values[c];
+        }
+        report_relaxation(res, runs);
+        report_fig14_times(res, s, runs);
+        report_fig14_fits(res, s, runs);
+        report_seed_table(res, runs);
+        report_arch_times(res, runs);
+        report_section(res, runs);
+        report_costs(res, runs);
+        return res;
     }
-    report_relaxation(res, runs);
-    report_fig14_times(res, s, runs);
-    report_fig14_fits(res, s, runs);
-    report_seed_table(res, runs);
-    report_arch_times(res, runs);
-    report_section(res, runs);
-    report_costs(res, runs);
-    return res;
-}
+};
 
 } // namespace
 
-Experiment pipe_arching() { return {"pipe-arching", &validate, &run}; }
+Experiment pipe_arching() { return protocol_experiment<PipeArching>(); }
 
 } // namespace granrepro::experiments
