@@ -130,6 +130,180 @@ void serve_points(const RunContext& ctx, const std::function<nlohmann::json(long
 }
 #endif
 
+// `verify`: compute the one point asked for (harness/verify.hpp); with aggregate, return every
+// point, the others as the results stored them, else end the sweep with PointRerunDone.
+SweepResult rerun_point(const RunContext& ctx, const std::string& label, long n,
+                        const std::function<nlohmann::json(long)>& compute) {
+    PointRerun& v = *ctx.sweep.rerun;
+    if (label != v.sweep)
+        throw InputError("verify: the results store sweep '" + v.sweep + "' but the experiment now sweeps '" + label + "'");
+    if (v.point < 0 || v.point >= n)
+        throw InputError("--point " + std::to_string(v.point) + ": the sweep " + label + " now has " + std::to_string(n) +
+                         " points (0 to " + std::to_string(n - 1) + ")");
+    v.count = n;
+    v.inputs = sweep_point_inputs_hash(ctx, label, v.point, n);
+    auto [value, cost] = timed(compute, v.point);
+    v.outcome = nlohmann::json::parse(value.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace));
+    v.cost = cost;
+    v.computed = true;
+    if (!v.aggregate) throw PointRerunDone{};
+    SweepResult out;
+    out.cpu_seconds.assign(std::size_t(n), -1.0);
+    for (long i = 0; i < n; ++i) {
+        if (i == v.point) out.points.push_back(v.outcome);
+        else if (const auto it = v.stored.find(i); it != v.stored.end()) out.points.push_back(it->second);
+        else throw InputError("verify: the results do not store point " + std::to_string(i) + " of sweep " + label);
+    }
+    return out;
+}
+
+// The points of one sweep as this process holds them: read from the checkpoint or computed here
+// or by another rank. store() is the one place a finished point goes (thread-safe).
+class SweepState {
+public:
+    SweepState(const RunContext& ctx, const std::string& label, long n, PointFiles files, const std::string& outcome_schema)
+        : label_(label), have_(std::size_t(n), 0), costs_(std::size_t(n)) {
+        if (files == PointFiles::Saved) checkpoint_.emplace(ctx, label, outcome_schema);
+        out.points.resize(std::size_t(n));
+        out.cpu_seconds.assign(std::size_t(n), -1.0);
+        for (long i = 0; i < n; ++i)
+            if (auto saved = checkpoint_ ? checkpoint_->load(i) : std::nullopt) {
+                out.points[std::size_t(i)] = std::move(saved->value);
+                costs_[std::size_t(i)] = saved->cost;
+                have_[std::size_t(i)] = 1;
+                ++out.resumed; // not computed again
+            }
+        if (out.resumed > 0)
+            run_log().line("sweep " + label + ": " + std::to_string(out.resumed) + " of " + std::to_string(n) +
+                           " points read from the checkpoint");
+        // Test hook, like GRANREPRO_INTERRUPT_AFTER_CHECKPOINTS: end the job (every rank) once
+        // this many points have been computed and saved, as a killed job would.
+        const char* stop_env = std::getenv("GRANREPRO_INTERRUPT_AFTER_POINTS");
+        stop_after_ = stop_env ? std::atol(stop_env) : 0;
+    }
+    bool resumed(long i) const { return have_[std::size_t(i)] != 0; }
+
+    // The points to compute here, in cost order (a shard: every shards-th of the missing ones);
+    // `gather` computes none and refuses to go on with points missing.
+    std::vector<long> todo(const SweepPlan& plan, const std::vector<long>& order) const {
+        const long n = long(order.size());
+        std::vector<long> todo, missing;
+        for (long s = 0; s < n; ++s) {
+            const long i = order[std::size_t(s)];
+            if (have_[std::size_t(i)]) continue;
+            missing.push_back(i);
+            if (plan.mode == SweepPlan::Mode::Shard && s % plan.shards != plan.shard - 1) continue;
+            todo.push_back(i);
+        }
+        if (plan.mode != SweepPlan::Mode::Gather || missing.empty()) return todo;
+        std::sort(missing.begin(), missing.end());
+        std::string list;
+        for (std::size_t k = 0; k < missing.size() && k < 20; ++k) list += (k ? ", " : "") + std::to_string(missing[k]);
+        if (missing.size() > 20) list += ", ...";
+        throw InputError(label_ + ": " + std::to_string(missing.size()) + " point" + (missing.size() == 1 ? "" : "s") +
+                         " missing: " + list + " (of " + std::to_string(n) +
+                         "; run the missing --points shards with the same flags, then gather again)");
+    }
+
+    void store(long i, nlohmann::json value, const PointCost& cost, Progress& progress) {
+        std::lock_guard<std::mutex> lock(mutex_); // also makes the interruption hook exact
+        if (checkpoint_) checkpoint_->save(i, value, cost);
+        out.points[std::size_t(i)] = std::move(value);
+        out.cpu_seconds[std::size_t(i)] = cost.cpu_s;
+        costs_[std::size_t(i)] = cost;
+        char text[160];
+        std::snprintf(text, sizeof text, "sweep %s: point %ld cost %.6g CPU s (rank %d)", label_.c_str(), i, cost.cpu_s,
+                      cost.rank);
+        run_log().line(text);
+        progress.done(i);
+        if (++computed == stop_after_) {
+            std::fprintf(stderr, "granrepro: %s: interrupted after point %ld (GRANREPRO_INTERRUPT_AFTER_POINTS)\n",
+                         label_.c_str(), computed);
+            mpi::abort(3);
+        }
+    }
+
+    // Every point, computed or resumed, as the results store it (data.h5 /points).
+    void record(const RunContext& ctx, PointFiles files) const {
+        if (!ctx.points) return;
+        const long n = long(out.points.size());
+        for (long i = 0; i < n; ++i) {
+            SweepPoint p;
+            p.sweep = label_;
+            p.index = i;
+            p.inputs = sweep_point_inputs_hash(ctx, label_, i, n);
+            p.outcome = out.points[std::size_t(i)];
+            p.cost = costs_[std::size_t(i)];
+            p.resumed = resumed(i);
+            p.persisted = files == PointFiles::Saved;
+            ctx.points->points.push_back(std::move(p));
+        }
+    }
+
+    SweepResult out;
+    long computed = 0;
+
+private:
+    std::string label_;
+    std::optional<SweepCheckpoint> checkpoint_;
+    std::vector<char> have_;
+    std::vector<PointCost> costs_;
+    long stop_after_ = 0;
+    std::mutex mutex_;
+};
+
+#ifdef GRANREPRO_HAVE_MPI
+// Rank 0's main thread hands out points: each request carries the sender's previous result
+// ("<index> <cpu> <wall> <start> <part> <json>", or "-1" for none); the answer is the next index
+// or -1. Idle, it polls with a growing pause (0.2 ms to 20 ms): points take seconds, and a fixed
+// 0.2 ms poll kept this thread at 70 % of the core its own compute thread shares (mpirun binds a
+// rank to one core).
+void hand_out_points(const RunContext& ctx, const std::function<long()>& dispense,
+                     const std::function<void(long, nlohmann::json, const PointCost&)>& store) {
+    const long serving = long(ctx.sweep.ranks - 1) * serving_threads(ctx);
+    auto pause = std::chrono::microseconds(200);
+    for (long stopped = 0; stopped < serving;) {
+        int flag = 0;
+        MPI_Status status;
+        MPI_Iprobe(MPI_ANY_SOURCE, MPI_ANY_TAG, MPI_COMM_WORLD, &flag, &status);
+        if (!flag) {
+            std::this_thread::sleep_for(pause);
+            pause = std::min(2 * pause, std::chrono::microseconds(20000));
+            continue;
+        }
+        pause = std::chrono::microseconds(200);
+        int bytes = 0;
+        MPI_Get_count(&status, MPI_CHAR, &bytes);
+        std::string message(std::size_t(bytes), '\0');
+        MPI_Recv(message.data(), bytes, MPI_CHAR, status.MPI_SOURCE, status.MPI_TAG, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+        const std::size_t space = message.find(' ');
+        const long done = std::stol(message.substr(0, space));
+        if (done >= 0) {
+            std::size_t at = space + 1;
+            auto field = [&] {
+                const std::size_t end = message.find(' ', at);
+                std::string f = message.substr(at, end - at);
+                at = end + 1;
+                return f;
+            };
+            PointCost cost;
+            cost.cpu_s = std::stod(field());
+            cost.wall_s = std::stod(field());
+            cost.started_unix = std::stod(field());
+            cost.part = field();
+            cost.rank = status.MPI_SOURCE;
+            store(done, nlohmann::json::parse(message.substr(at)), cost);
+        }
+        long long give = dispense();
+        MPI_Request request;
+        MPI_Isend(&give, 1, MPI_LONG_LONG, status.MPI_SOURCE, status.MPI_TAG, MPI_COMM_WORLD, &request);
+        wait_for(request);
+        if (give < 0) ++stopped;
+    }
+    end_of_sweep();
+}
+#endif
+
 } // namespace
 
 SweepResult distributed_sweep(const RunContext& ctx, const std::string& label, const std::vector<long>& order,
@@ -144,76 +318,14 @@ SweepResult distributed_sweep(const RunContext& ctx, const std::string& label, c
     }
 #endif
     const long n = long(order.size());
-    if (ctx.sweep.mode == SweepPlan::Mode::Verify) {
-        PointRerun& v = *ctx.sweep.rerun;
-        if (label != v.sweep)
-            throw InputError("verify: the results store sweep '" + v.sweep + "' but the experiment now sweeps '" + label + "'");
-        if (v.point < 0 || v.point >= n)
-            throw InputError("--point " + std::to_string(v.point) + ": the sweep " + label + " now has " + std::to_string(n) +
-                             " points (0 to " + std::to_string(n - 1) + ")");
-        v.count = n;
-        v.inputs = sweep_point_inputs_hash(ctx, label, v.point, n);
-        auto [value, cost] = timed(compute, v.point);
-        v.outcome = nlohmann::json::parse(value.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace));
-        v.cost = cost;
-        v.computed = true;
-        if (!v.aggregate) throw PointRerunDone{};
-        SweepResult out;
-        out.cpu_seconds.assign(std::size_t(n), -1.0);
-        for (long i = 0; i < n; ++i) {
-            if (i == v.point) out.points.push_back(v.outcome);
-            else if (const auto it = v.stored.find(i); it != v.stored.end()) out.points.push_back(it->second);
-            else throw InputError("verify: the results do not store point " + std::to_string(i) + " of sweep " + label);
-        }
-        return out;
-    }
-    std::optional<SweepCheckpoint> checkpoint;
-    if (files == PointFiles::Saved) checkpoint.emplace(ctx, label, outcome_schema);
-    SweepResult out;
-    out.points.resize(std::size_t(n));
-    out.cpu_seconds.assign(std::size_t(n), -1.0);
-    std::vector<char> have(std::size_t(n), 0);
-    std::vector<PointCost> costs(static_cast<std::size_t>(n));
-    for (long i = 0; i < n; ++i)
-        if (auto saved = checkpoint ? checkpoint->load(i) : std::nullopt) {
-            out.points[std::size_t(i)] = std::move(saved->value);
-            costs[std::size_t(i)] = saved->cost;
-            have[std::size_t(i)] = 1;
-            ++out.resumed; // not computed again
-        }
-    if (out.resumed > 0)
-        run_log().line("sweep " + label + ": " + std::to_string(out.resumed) + " of " + std::to_string(n) +
-                       " points read from the checkpoint");
-
+    if (ctx.sweep.mode == SweepPlan::Mode::Verify) return rerun_point(ctx, label, n, compute);
+    SweepState state(ctx, label, n, files, outcome_schema);
     const SweepPlan& plan = ctx.sweep;
-    std::vector<long> todo; // in cost order
-    std::vector<long> missing;
-    for (long s = 0; s < n; ++s) {
-        const long i = order[std::size_t(s)];
-        if (have[std::size_t(i)]) continue;
-        missing.push_back(i);
-        if (plan.mode == SweepPlan::Mode::Shard && s % plan.shards != plan.shard - 1) continue;
-        todo.push_back(i);
-    }
-    if (plan.mode == SweepPlan::Mode::Gather && !missing.empty()) {
-        std::sort(missing.begin(), missing.end());
-        std::string list;
-        for (std::size_t k = 0; k < missing.size() && k < 20; ++k) list += (k ? ", " : "") + std::to_string(missing[k]);
-        if (missing.size() > 20) list += ", ...";
-        throw InputError(label + ": " + std::to_string(missing.size()) + " point" + (missing.size() == 1 ? "" : "s") +
-                         " missing: " + list + " (of " + std::to_string(n) +
-                         "; run the missing --points shards with the same flags, then gather again)");
-    }
-
-    // Test hook, like GRANREPRO_INTERRUPT_AFTER_CHECKPOINTS: end the job (every rank) once this
-    // many points have been computed and saved, as a killed job would.
-    const char* stop_env = std::getenv("GRANREPRO_INTERRUPT_AFTER_POINTS");
-    const long stop_after = stop_env ? std::atol(stop_env) : 0;
+    const std::vector<long> todo = state.todo(plan, order);
 
     Progress progress(label, long(todo.size()), ctx.quiet);
     std::mutex mutex;
     std::size_t next = 0;
-    long computed = 0;
     std::exception_ptr error;
     // After SIGINT/SIGTERM no further point is handed out; the points under way finish and are
     // saved, so the rerun computes only the rest.
@@ -221,23 +333,7 @@ SweepResult distributed_sweep(const RunContext& ctx, const std::string& label, c
         std::lock_guard<std::mutex> lock(mutex);
         return next < todo.size() && !interrupt_requested() ? todo[next++] : -1;
     };
-    auto store = [&](long i, nlohmann::json value, const PointCost& cost) {
-        std::lock_guard<std::mutex> lock(mutex); // also makes the interruption hook exact
-        if (checkpoint) checkpoint->save(i, value, cost);
-        out.points[std::size_t(i)] = std::move(value);
-        out.cpu_seconds[std::size_t(i)] = cost.cpu_s;
-        costs[std::size_t(i)] = cost;
-        char text[160];
-        std::snprintf(text, sizeof text, "sweep %s: point %ld cost %.6g CPU s (rank %d)", label.c_str(), i, cost.cpu_s,
-                      cost.rank);
-        run_log().line(text);
-        progress.done(i);
-        if (++computed == stop_after) {
-            std::fprintf(stderr, "granrepro: %s: interrupted after point %ld (GRANREPRO_INTERRUPT_AFTER_POINTS)\n",
-                         label.c_str(), computed);
-            mpi::abort(3);
-        }
-    };
+    auto store = [&](long i, nlohmann::json value, const PointCost& cost) { state.store(i, std::move(value), cost, progress); };
     auto local = [&] {
         long i = -1;
         try {
@@ -257,87 +353,25 @@ SweepResult distributed_sweep(const RunContext& ctx, const std::string& label, c
     std::vector<std::thread> pool;
     for (int t = spread ? 0 : 1; t < threads; ++t) pool.emplace_back(local);
 #ifdef GRANREPRO_HAVE_MPI
-    if (spread) {
-        // Rank 0's main thread hands out points: each request carries the sender's previous
-        // result ("<index> <json>", or "-1" for none); the answer is the next index or -1.
-        // Idle, it polls with a growing pause (0.2 ms to 20 ms): points take seconds, and a
-        // fixed 0.2 ms poll kept this thread at 70 % of the core its own compute thread shares
-        // (mpirun binds a rank to one core).
-        const long serving = long(ctx.sweep.ranks - 1) * serving_threads(ctx);
-        auto pause = std::chrono::microseconds(200);
-        for (long stopped = 0; stopped < serving;) {
-            int flag = 0;
-            MPI_Status status;
-            MPI_Iprobe(MPI_ANY_SOURCE, MPI_ANY_TAG, MPI_COMM_WORLD, &flag, &status);
-            if (!flag) {
-                std::this_thread::sleep_for(pause);
-                pause = std::min(2 * pause, std::chrono::microseconds(20000));
-                continue;
-            }
-            pause = std::chrono::microseconds(200);
-            int bytes = 0;
-            MPI_Get_count(&status, MPI_CHAR, &bytes);
-            std::string message(std::size_t(bytes), '\0');
-            MPI_Recv(message.data(), bytes, MPI_CHAR, status.MPI_SOURCE, status.MPI_TAG, MPI_COMM_WORLD,
-                     MPI_STATUS_IGNORE);
-            const std::size_t space = message.find(' ');
-            const long done = std::stol(message.substr(0, space));
-            if (done >= 0) {
-                // "<index> <cpu> <wall> <start> <part> <json>"
-                std::size_t at = space + 1;
-                auto field = [&] {
-                    const std::size_t end = message.find(' ', at);
-                    std::string f = message.substr(at, end - at);
-                    at = end + 1;
-                    return f;
-                };
-                PointCost cost;
-                cost.cpu_s = std::stod(field());
-                cost.wall_s = std::stod(field());
-                cost.started_unix = std::stod(field());
-                cost.part = field();
-                cost.rank = status.MPI_SOURCE;
-                store(done, nlohmann::json::parse(message.substr(at)), cost);
-            }
-            long long give = dispense();
-            MPI_Request request;
-            MPI_Isend(&give, 1, MPI_LONG_LONG, status.MPI_SOURCE, status.MPI_TAG, MPI_COMM_WORLD, &request);
-            wait_for(request);
-            if (give < 0) ++stopped;
-        }
-        end_of_sweep();
-    } else
+    if (spread) hand_out_points(ctx, dispense, store);
+    else
 #endif
-    {
         local();
-    }
     for (auto& th : pool) th.join();
     if (error) std::rethrow_exception(error);
-    if (computed < long(todo.size()))
-        throw_if_interrupted("; " + std::to_string(long(todo.size()) - computed) + " of " + std::to_string(n) +
+    if (state.computed < long(todo.size()))
+        throw_if_interrupted("; " + std::to_string(long(todo.size()) - state.computed) + " of " + std::to_string(n) +
                              " sweep points left for the rerun");
-
     if (plan.mode == SweepPlan::Mode::Shard) {
         long present = 0;
-        for (const auto& j : out.points) present += !j.is_null();
+        for (const auto& j : state.out.points) present += !j.is_null();
         throw ShardFinished(label + ": shard " + std::to_string(plan.shard) + "/" + std::to_string(plan.shards) + ": " +
                             std::to_string(todo.size()) + " point" + (todo.size() == 1 ? "" : "s") + " computed, " +
                             std::to_string(present) + " of " + std::to_string(n) +
                             " in the checkpoint; `granrepro gather " + label + "` with the same flags writes the results");
     }
-    if (ctx.points) // every point, as the results store it (data.h5 /points)
-        for (long i = 0; i < n; ++i) {
-            SweepPoint p;
-            p.sweep = label;
-            p.index = i;
-            p.inputs = sweep_point_inputs_hash(ctx, label, i, n);
-            p.outcome = out.points[std::size_t(i)];
-            p.cost = costs[std::size_t(i)];
-            p.resumed = have[std::size_t(i)] != 0;
-            p.persisted = files == PointFiles::Saved;
-            ctx.points->points.push_back(std::move(p));
-        }
-    return out;
+    state.record(ctx, files);
+    return std::move(state.out);
 }
 
 } // namespace granrepro
