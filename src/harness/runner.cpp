@@ -230,6 +230,159 @@ std::vector<std::string> check_notes(const nlohmann::json& overrides, bool verif
 }
 } // namespace
 
+namespace {
+
+// The figures a run renders: the requested ones (all for a plain run) and every other figure the
+// directory it replaces had, re-rendered from the new data.
+std::vector<std::string> figures_to_render(const ExperimentInfo& info, const RunOptions& opt, const fs::path& final_dir) {
+    std::vector<std::string> ids;
+    for (const auto& f : info.figures)
+        if (opt.figures.empty() || std::find(opt.figures.begin(), opt.figures.end(), f.id) != opt.figures.end() ||
+            fs::exists(final_dir / (f.id + ".png")))
+            ids.push_back(f.id);
+    return ids;
+}
+
+// run.log's head: the command, the code, the experiment and every parameter.
+void log_run_head(const std::string& name, const RunOptions& opt, const ParameterSet& params) {
+    run_log().line("command: " + opt.command_line);
+    run_log().line(std::string("granrepro ") + code_version() + " (physics " + physics_hash() + "); data files from " + project_root().string());
+    run_log().line(std::string("experiment ") + name + ", scale " + to_string(opt.scale) + ", seed " +
+                   std::to_string(opt.seed) + ", threads " + std::to_string(opt.threads));
+    for (const auto& p : params.all())
+        run_log().line("parameter " + p.name + " = " + p.value_text() + " [" + p.unit + "]" + (p.overridden ? " (--set)" : ""));
+}
+
+// The experiment's run; nothing where this process's part ends without results (a rank > 0 that
+// served its points, a --points shard: its message is printed).
+std::optional<Result> run_part(const Experiment& exp, const RunContext& ctx, const fs::path& work_dir) {
+    try {
+        return exp.run(ctx);
+    } catch (const SweepServed&) {
+        return std::nullopt;
+    } catch (const ShardFinished& e) {
+        std::printf("%s\n", e.what());
+        return std::nullopt;
+    } catch (const InputError&) {
+        // A late refusal of the input fails the same way on every rerun: its checkpoints can
+        // never be resumed, so no hidden .X.checkpoint/ outlives it (issue 20). Not so for shards
+        // and `gather`: "points missing" is cured by the other shards, whose points are kept.
+        if (ctx.sweep.mode == SweepPlan::Mode::All) {
+            std::error_code ec;
+            fs::remove_all(work_dir, ec);
+        }
+        throw;
+    } catch (const Interrupted& e) {
+        bool kept = false;
+        std::error_code ec;
+        for (auto it = fs::recursive_directory_iterator(work_dir, ec); !ec && it != fs::recursive_directory_iterator();
+             it.increment(ec))
+            kept = kept || it->is_regular_file();
+        throw Interrupted(e.signal(), std::string(e.what()) +
+                                          (kept ? "; progress kept in " + work_dir.string() + ", rerun the same command to resume"
+                                                : "; no checkpoint had been written yet, the rerun starts afresh"));
+    }
+}
+
+// experiments/<name>.toml [outputs] must cover what the run wrote, since claims and plot scripts
+// are checked against it when they load: a code change that writes a name it does not declare
+// fails here (in CI's quick runs), before anything is written; the checkpoint stays, so the rerun
+// after declaring it resumes.
+void refuse_undeclared(const ExperimentInfo& info, const Result& result, const std::string& name) {
+    if (!info.outputs.declared()) return;
+    std::string undeclared;
+    for (const auto& sc : result.scalars)
+        if (!info.outputs.declares_scalar(sc.name)) undeclared += " scalar " + sc.name;
+    for (const auto& t : result.tables)
+        if (!info.outputs.declares_table(t.name)) undeclared += " table " + t.name;
+    if (!undeclared.empty())
+        throw std::runtime_error(name + " wrote outputs that " + info.file.string() +
+                                 " [outputs] does not declare (declare them, <n> for a number):" + undeclared);
+}
+
+// What one run has made, for writing its results.
+struct Made {
+    const std::string& name;
+    const ExperimentInfo& info;
+    const ParameterSet& params;
+    const Result& result;
+    const std::vector<ClaimResult>& verdicts;
+    SweepPoints& points;
+    double wall = 0, cpu = 0; // [s] the run's, without writing
+};
+
+// Writes data.h5, the tables, summary.json and the figures into the staging folder and commits
+// it: the old results stay as they were unless every write succeeded. Returns the figures the
+// command asked for that were not drawn.
+std::vector<std::string> write_results(const Made& m, const RunOptions& opt, const std::vector<std::string>& to_render,
+                                       StagedDirectory& stage, const fs::path& final_dir,
+                                       std::chrono::steady_clock::time_point t0) {
+    auto requested = [&](const std::string& id) {
+        return opt.figures.empty() || std::find(opt.figures.begin(), opt.figures.end(), id) != opt.figures.end();
+    };
+    std::vector<std::string> not_drawn;
+    try {
+        std::vector<std::pair<std::string, std::string>> plot_texts;
+        for (const auto& id : to_render) plot_texts.emplace_back(id, read_file(project_root() / "plots" / (id + ".gp")));
+        Provenance prov{m.name,  m.info.paper, read_file(m.info.file),     opt.scale, opt.seed,
+                        m.wall,  opt.threads,  opt.command_line, read_file(expected_file(m.name)), plot_texts};
+        prov.points = &m.points;
+        run_totals(prov, m.points, m.wall, m.cpu);
+        if (prov.resumed_points > 0)
+            run_log().line("whole run, resumed points included: wall time " + std::to_string(prov.total_wall_time_s) +
+                           " s, CPU " + std::to_string(prov.total_cpu_time_s) + " s (" +
+                           std::to_string(prov.resumed_points) + " points resumed" +
+                           (prov.points_without_cost ? ", " + std::to_string(prov.points_without_cost) +
+                                                           " of them without a recorded cost: lower bounds"
+                                                     : std::string()) +
+                           ")");
+        nlohmann::json summary = summary_json(prov, m.params, m.result);
+        summary["claims"] = claims_to_json(m.verdicts);
+        write_result_h5(stage.path() / "data.h5", prov, m.params, m.result, summary_content_hash(summary));
+        write_tables_tsv(stage.path() / "tables", m.result);
+        write_file_durably(stage.path() / "summary.json", summary_text(summary));
+        for (const auto& id : to_render) {
+            const RenderOutcome o = render_figure(id, stage.path(), final_dir);
+            if ((o == RenderOutcome::Failed || o == RenderOutcome::Skipped) && requested(id)) not_drawn.push_back(id);
+            const fs::path png = stage.path() / (id + ".png");
+            if (fs::exists(png) && !png_complete(png)) throw WriteError(png.string(), "figure cut short (disk full?)");
+        }
+        const double wall_total = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        VerdictCounts counts;
+        counts.add(m.verdicts);
+        run_log().line("claims: " + counts.text());
+        run_log().line("done: wall time " + std::to_string(wall_total) + " s with writing and " +
+                       std::to_string(to_render.size()) + " figures");
+        run_log().close();
+        stage.commit();
+    } catch (const WriteError& e) {
+        // The failure names the file where it would have ended up.
+        throw WriteError(stage.shown(e.path()).string(), e.reason());
+    }
+    return not_drawn;
+}
+
+// The claim table on stdout and the exit code: 1 if a claim failed, kFigureNotDrawn if a figure
+// the command asked for was not drawn.
+int report_run(const std::string& name, const RunOptions& opt, const ParameterSet& params,
+               const std::vector<ClaimResult>& verdicts, const std::vector<std::string>& not_drawn, VerdictCounts* totals) {
+    nlohmann::json sets = nlohmann::json::object();
+    for (const auto& p : params.all())
+        if (p.overridden) sets[p.name] = p.value_text();
+    std::fputs(format_claim_table(name + " (" + to_string(opt.scale) + " scale)", verdicts, check_notes(sets, true)).c_str(),
+               stdout);
+    std::fflush(stdout);
+    if (totals) totals->add(verdicts);
+    throw_if_interrupted(" after the results were written to " + (opt.out / name).string());
+    if (!all_pass(verdicts)) return 1;
+    if (!not_drawn.empty())
+        std::fprintf(stderr, "granrepro: %s: figure%s not drawn: %s (exit %d)\n", name.c_str(),
+                     not_drawn.size() == 1 ? "" : "s", joined(not_drawn).c_str(), kFigureNotDrawn);
+    return not_drawn.empty() ? 0 : kFigureNotDrawn;
+}
+
+} // namespace
+
 int run_experiment(const std::string& name, const RunOptions& opt, VerdictCounts* totals) {
     const Experiment& exp = find_experiment(name);
     const ExperimentInfo info = experiment_info(name);
@@ -257,14 +410,7 @@ int run_experiment(const std::string& name, const RunOptions& opt, VerdictCounts
         clean_staging_leftovers(final_dir, opt.quiet);
         clean_temporary_leftovers(work_dir);
     }
-
-    // The new directory replaces the old one: a figure run renders the requested figures and
-    // re-renders, from the new data, every other figure the old directory had.
-    std::vector<std::string> to_render;
-    for (const auto& f : info.figures)
-        if (opt.figures.empty() || std::find(opt.figures.begin(), opt.figures.end(), f.id) != opt.figures.end() ||
-            fs::exists(final_dir / (f.id + ".png")))
-            to_render.push_back(f.id);
+    const std::vector<std::string> to_render = figures_to_render(info, opt, final_dir);
 
     if (plan.mode != SweepPlan::Mode::All) {
         const char* what = plan.mode == SweepPlan::Mode::Gather ? "gather" : "--points";
@@ -285,13 +431,7 @@ int run_experiment(const std::string& name, const RunOptions& opt, VerdictCounts
     } close_log;
     if (stage) {
         run_log().open(stage->path() / "run.log");
-        run_log().line("command: " + opt.command_line);
-        run_log().line(std::string("granrepro ") + code_version() + " (physics " + physics_hash() + "); data files from " + project_root().string());
-        run_log().line(std::string("experiment ") + name + ", scale " + to_string(opt.scale) + ", seed " +
-                       std::to_string(opt.seed) + ", threads " + std::to_string(opt.threads));
-        for (const auto& p : params.all())
-            run_log().line("parameter " + p.name + " = " + p.value_text() + " [" + p.unit + "]" +
-                           (p.overridden ? " (--set)" : ""));
+        log_run_head(name, opt, params);
     }
     fs::create_directories(work_dir);
     RunContext ctx{params, opt.scale, opt.seed, opt.threads, opt.quiet || !rank0, work_dir, opt.checkpoint_interval};
@@ -301,116 +441,21 @@ int run_experiment(const std::string& name, const RunOptions& opt, VerdictCounts
 
     const auto t0 = std::chrono::steady_clock::now();
     const std::clock_t cpu0 = std::clock(); // this process's CPU time, all threads
-    std::optional<Result> ran;
-    try {
-        ran.emplace(exp.run(ctx));
-    } catch (const SweepServed&) {
-        return 0;
-    } catch (const ShardFinished& e) {
-        std::printf("%s\n", e.what());
-        return 0;
-    } catch (const InputError&) {
-        // A late refusal of the input fails the same way on every rerun: its checkpoints can
-        // never be resumed, so no hidden .X.checkpoint/ outlives it (issue 20). Not so for shards
-        // and `gather`: "points missing" is cured by the other shards, whose points are kept.
-        if (plan.mode == SweepPlan::Mode::All) {
-            std::error_code ec;
-            fs::remove_all(work_dir, ec);
-        }
-        throw;
-    } catch (const Interrupted& e) {
-        bool kept = false;
-        std::error_code ec;
-        for (auto it = fs::recursive_directory_iterator(work_dir, ec); !ec && it != fs::recursive_directory_iterator();
-             it.increment(ec))
-            kept = kept || it->is_regular_file();
-        throw Interrupted(e.signal(), std::string(e.what()) +
-                                          (kept ? "; progress kept in " + work_dir.string() +
-                                                      ", rerun the same command to resume"
-                                                : "; no checkpoint had been written yet, the rerun starts afresh"));
-    }
-    Result& result = *ran;
-    // experiments/<name>.toml [outputs] must cover what the run wrote, since claims and plot
-    // scripts are checked against it when they load: a code change that writes a name it does
-    // not declare fails here (in CI's quick runs), before anything is written; the checkpoint
-    // stays, so the rerun after declaring it resumes.
-    if (info.outputs.declared()) {
-        std::string undeclared;
-        for (const auto& sc : result.scalars)
-            if (!info.outputs.declares_scalar(sc.name)) undeclared += " scalar " + sc.name;
-        for (const auto& t : result.tables)
-            if (!info.outputs.declares_table(t.name)) undeclared += " table " + t.name;
-        if (!undeclared.empty())
-            throw std::runtime_error(name + " wrote outputs that " + info.file.string() +
-                                     " [outputs] does not declare (declare them, <n> for a number):" + undeclared);
-    }
+    const std::optional<Result> ran = run_part(exp, ctx, work_dir);
+    if (!ran) return 0;
+    refuse_undeclared(info, *ran, name);
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     const double cpu = double(std::clock() - cpu0) / CLOCKS_PER_SEC;
     // The CPU time lets `bench sweep` tell a run's serial part from time lost to other processes.
     run_log().line("run finished: wall time " + std::to_string(wall) + " s, CPU " + std::to_string(cpu) + " s");
 
-    // Every write is checked; a failure names the file where it would have ended up, and the
-    // old results stay as they were (nothing is renamed into place).
-    const auto verdicts = evaluate_claims(claims, scalars_json(result), opt.scale);
-    // A figure the command asked for (every figure of a plain run; the one of `figure`) that is
-    // not drawn makes the exit code say so; the other figures a `figure` run re-renders only warn.
-    auto requested = [&](const std::string& id) {
-        return opt.figures.empty() || std::find(opt.figures.begin(), opt.figures.end(), id) != opt.figures.end();
-    };
-    std::vector<std::string> not_drawn;
-    try {
-        std::vector<std::pair<std::string, std::string>> plot_texts;
-        for (const auto& id : to_render) plot_texts.emplace_back(id, read_file(project_root() / "plots" / (id + ".gp")));
-        Provenance prov{name,     info.paper, read_file(info.file),           opt.scale, opt.seed,
-                        wall,     opt.threads, opt.command_line, read_file(expected_file(name)), plot_texts};
-        prov.points = &points;
-        run_totals(prov, points, wall, cpu);
-        if (prov.resumed_points > 0)
-            run_log().line("whole run, resumed points included: wall time " + std::to_string(prov.total_wall_time_s) +
-                           " s, CPU " + std::to_string(prov.total_cpu_time_s) + " s (" +
-                           std::to_string(prov.resumed_points) + " points resumed" +
-                           (prov.points_without_cost ? ", " + std::to_string(prov.points_without_cost) +
-                                                           " of them without a recorded cost: lower bounds"
-                                                     : std::string()) +
-                           ")");
-        nlohmann::json summary = summary_json(prov, params, result);
-        summary["claims"] = claims_to_json(verdicts);
-        write_result_h5(stage->path() / "data.h5", prov, params, result, summary_content_hash(summary));
-        write_tables_tsv(stage->path() / "tables", result);
-        write_file_durably(stage->path() / "summary.json", summary_text(summary));
-        for (const auto& id : to_render) {
-            const RenderOutcome o = render_figure(id, stage->path(), final_dir);
-            if ((o == RenderOutcome::Failed || o == RenderOutcome::Skipped) && requested(id)) not_drawn.push_back(id);
-            const fs::path png = stage->path() / (id + ".png");
-            if (fs::exists(png) && !png_complete(png)) throw WriteError(png.string(), "figure cut short (disk full?)");
-        }
-        const double wall_total = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-        VerdictCounts counts;
-        counts.add(verdicts);
-        run_log().line("claims: " + counts.text());
-        run_log().line("done: wall time " + std::to_string(wall_total) + " s with writing and " +
-                       std::to_string(to_render.size()) + " figures");
-        run_log().close();
-        stage->commit();
-    } catch (const WriteError& e) {
-        throw WriteError(stage->shown(e.path()).string(), e.reason());
-    }
+    const auto verdicts = evaluate_claims(claims, scalars_json(*ran), opt.scale);
+    const Made made{name, info, params, *ran, verdicts, points, wall, cpu};
+    const std::vector<std::string> not_drawn = write_results(made, opt, to_render, *stage, final_dir, t0);
     std::error_code ec;
     fs::remove_all(work_dir, ec);
     if (!opt.quiet) std::fprintf(stderr, "%s: %.1f s, results in %s\n", name.c_str(), wall, final_dir.c_str());
-    nlohmann::json sets = nlohmann::json::object();
-    for (const auto& p : params.all())
-        if (p.overridden) sets[p.name] = p.value_text();
-    std::fputs(format_claim_table(name + " (" + to_string(opt.scale) + " scale)", verdicts, check_notes(sets, true)).c_str(),
-               stdout);
-    std::fflush(stdout);
-    if (totals) totals->add(verdicts);
-    throw_if_interrupted(" after the results were written to " + final_dir.string());
-    if (!all_pass(verdicts)) return 1;
-    if (!not_drawn.empty())
-        std::fprintf(stderr, "granrepro: %s: figure%s not drawn: %s (exit %d)\n", name.c_str(),
-                     not_drawn.size() == 1 ? "" : "s", joined(not_drawn).c_str(), kFigureNotDrawn);
-    return not_drawn.empty() ? 0 : kFigureNotDrawn;
+    return report_run(name, opt, params, verdicts, not_drawn, totals);
 }
 
 SweepPlan parse_points(const std::string& text) {
