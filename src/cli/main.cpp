@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <memory>
 #include <sstream>
 
 #include "cli/bench.hpp"
@@ -220,22 +221,9 @@ std::string version_text() {
     return s;
 }
 
-} // namespace
-
-// Everything but MPI's set-up: the command line and the subcommands.
-static int run_main(int argc, char** argv) {
-    command_line = argv_text(std::vector<std::string>(argv, argv + argc));
-    CLI::App app{"granrepro: reproduce Luding (1998) and Schäfer & Wolf (1995), figure by figure"};
-    app.footer(std::string(kDataFiles) + kExitCodes);
-    app.require_subcommand(1);
-    app.set_version_flag("--version", version_text());
-    app.failure_message(CLI::FailureMessage::simple);
-
-    int rc = 0;
-    CommonFlags common;
-
-    app.add_subcommand("list", "list experiments and figures")->callback([&] { rc = list_experiments(); });
-
+// Each subcommand's options live in a state object its callback holds, so that the adders below
+// can return before CLI11 parses into them.
+void add_experiment_commands(CLI::App& app, CommonFlags& common, int& rc) {
     for (const auto& e : experiment_registry()) {
         std::string description = e.name;
         try {
@@ -252,104 +240,120 @@ static int run_main(int argc, char** argv) {
         });
     }
 
-    std::string figure_id;
+}
+
+void add_figure_command(CLI::App& app, CommonFlags& common, int& rc) {
+    auto figure_id = std::make_shared<std::string>();
     CLI::App* fig = app.add_subcommand("figure", "run what one figure needs and render only it");
-    fig->add_option("id", figure_id, "figure id, e.g. schaefer95-fig3 (see `granrepro list`)")->required();
+    fig->add_option("id", *figure_id, "figure id, e.g. schaefer95-fig3 (see `granrepro list`)")->required();
     common.add_to(fig);
     fig->footer(kExitCodes);
-    fig->callback([&] {
+    fig->callback([&, figure_id] {
         RunOptions o = common.options();
-        o.figures = {figure_id};
-        const std::string name = experiment_of_figure(figure_id);
+        o.figures = {*figure_id};
+        const std::string name = experiment_of_figure(*figure_id);
         rc = common.dry_run ? dry_run(name, o) : run_experiment(name, o);
     });
+}
 
-    std::string gather_name;
+void add_gather_command(CLI::App& app, CommonFlags& common, int& rc) {
+    auto gather_name = std::make_shared<std::string>();
     CLI::App* gather = app.add_subcommand(
         "gather", "write the results of an experiment whose sweep points were computed by --points shards");
-    gather->add_option("experiment", gather_name, "experiment, run with the same flags as its shards")->required();
+    gather->add_option("experiment", *gather_name, "experiment, run with the same flags as its shards")->required();
     common.add_to(gather);
     gather->footer("\nExit codes: 0 every claim PASS; 1 a claim FAILed; 2 bad input, or points missing from the\n"
                    "checkpoint (one line: 'N points missing: i, j, ...'; run their shards again).");
-    gather->callback([&] {
+    gather->callback([&, gather_name] {
         RunOptions o = common.options();
         o.shard_from_slurm = false;
         o.sweep.mode = SweepPlan::Mode::Gather;
-        rc = run_experiment(gather_name, o);
+        rc = run_experiment(*gather_name, o);
     });
+}
 
-    std::string check_name;
-    bool check_every = false;
-    CheckOptions check_opt;
+void add_check_command(CLI::App& app, CommonFlags& common, int& rc) {
+    struct State {
+        std::string name;
+        bool every = false;
+        CheckOptions opt;
+    };
+    auto st = std::make_shared<State>();
     CLI::App* check = app.add_subcommand("check", "compare results with the papers' claims (expected/)");
     check->footer(kExitCodes);
-    check->add_option("experiment", check_name, "experiment to check");
-    check->add_flag("--all", check_every,
-                    "check every experiment that has results in --out; list those that have none (exit 1)");
-    check->add_flag("--missing-ok", check_opt.missing_ok,
+    check->add_option("experiment", st->name, "experiment to check");
+    check->add_flag("--all", st->every, "check every experiment that has results in --out; list those that have none (exit 1)");
+    check->add_flag("--missing-ok", st->opt.missing_ok,
                     "with --all: experiments without results are listed but do not fail the check");
-    check->add_flag("--explain", check_opt.explain,
-                    "print each known deviation's explanation and where its band comes from");
+    check->add_flag("--explain", st->opt.explain, "print each known deviation's explanation and where its band comes from");
     check->add_option("--out", common.out, "output directory (e.g. paper_figures for the committed paper-scale results)")
         ->capture_default_str();
-    check->callback([&] {
-        if (check_every == !check_name.empty()) throw InputError("check: give one experiment or --all");
-        if (check_opt.missing_ok && !check_every) throw InputError("check: --missing-ok needs --all");
-        rc = check_every ? check_all(common.out, check_opt) : check_experiment(check_name, common.out, check_opt);
+    check->callback([&, st] {
+        if (st->every == !st->name.empty()) throw InputError("check: give one experiment or --all");
+        if (st->opt.missing_ok && !st->every) throw InputError("check: --missing-ok needs --all");
+        rc = st->every ? check_all(common.out, st->opt) : check_experiment(st->name, common.out, st->opt);
     });
+}
 
-    std::string plot_name;
-    std::vector<std::string> plot_figures;
-    bool plot_all = false;
+void add_plot_command(CLI::App& app, CommonFlags& common, int& rc) {
+    struct State {
+        std::string name;
+        std::vector<std::string> figures;
+        bool all = false, strict = false, edited = false;
+    };
+    auto st = std::make_shared<State>();
     CLI::App* plot = app.add_subcommand("plot", "re-render figures from existing results");
     plot->footer(kExitCodes);
-    plot->add_option("experiment", plot_name, "experiment whose figures to render");
-    plot->add_flag("--all", plot_all, "every experiment");
-    plot->add_option("--figure", plot_figures, "only this figure (repeatable)");
-    bool plot_strict = false, plot_edited = false;
-    plot->add_flag("--strict", plot_strict, "exit 4 if gnuplot prints any warning for a figure");
-    plot->add_flag("--edited", plot_edited,
+    plot->add_option("experiment", st->name, "experiment whose figures to render");
+    plot->add_flag("--all", st->all, "every experiment");
+    plot->add_option("--figure", st->figures, "only this figure (repeatable)");
+    plot->add_flag("--strict", st->strict, "exit 4 if gnuplot prints any warning for a figure");
+    plot->add_flag("--edited", st->edited,
                    "render the scripts you edited (<figure>.edited.gp, or an edited <figure>.gp) instead of "
                    "the ones from plots/; without it an edited script is kept but never run, as a results "
                    "folder from elsewhere may hold gnuplot lines that run programs");
     plot->add_option("--out", common.out, "output directory")->capture_default_str();
-    plot->callback([&] {
-        if (plot_all == !plot_name.empty()) throw InputError("plot: give one experiment or --all");
-        rc = plot_all ? plot_all_experiments(common.out, plot_figures, plot_strict, plot_edited)
-                      : plot_experiment(plot_name, common.out, plot_figures, plot_strict, plot_edited);
+    plot->callback([&, st] {
+        if (st->all == !st->name.empty()) throw InputError("plot: give one experiment or --all");
+        rc = st->all ? plot_all_experiments(common.out, st->figures, st->strict, st->edited)
+                     : plot_experiment(st->name, common.out, st->figures, st->strict, st->edited);
     });
+}
 
-    std::string export_name;
-    bool export_every = false;
-    std::string export_to;
-    std::size_t export_max = 50000;
+void add_export_command(CLI::App& app, CommonFlags& common, int& rc) {
+    struct State {
+        std::string name, to;
+        bool every = false;
+        std::size_t max = 50000;
+    };
+    auto st = std::make_shared<State>();
     CLI::App* exp_cmd = app.add_subcommand(
         "export", "copy results (summary.json and a compact data.h5 without snapshots) to another directory");
     exp_cmd->footer(kExitCodes);
-    exp_cmd->add_option("experiment", export_name, "experiment to export");
-    exp_cmd->add_flag("--all", export_every, "every experiment that has results in --out");
+    exp_cmd->add_option("experiment", st->name, "experiment to export");
+    exp_cmd->add_flag("--all", st->every, "every experiment that has results in --out");
     exp_cmd->add_option("--out", common.out, "output directory of the runs")->capture_default_str();
-    exp_cmd->add_option("--to", export_to, "destination, e.g. paper_figures (files go to TO/<experiment>/)")->required();
-    exp_cmd->add_option("--max-table-values", export_max, "tables with more values in all are left out (snapshots)")
+    exp_cmd->add_option("--to", st->to, "destination, e.g. paper_figures (files go to TO/<experiment>/)")->required();
+    exp_cmd->add_option("--max-table-values", st->max, "tables with more values in all are left out (snapshots)")
         ->capture_default_str()
         ->check(CLI::Range(std::size_t(1), std::size_t(1) << 40));
-    exp_cmd->callback([&] {
-        if (export_every == !export_name.empty()) throw InputError("export: give one experiment or --all");
-        if (!export_every) {
-            rc = export_experiment(export_name, common.out, export_to, export_max);
+    exp_cmd->callback([&, st] {
+        if (st->every == !st->name.empty()) throw InputError("export: give one experiment or --all");
+        if (!st->every) {
+            rc = export_experiment(st->name, common.out, st->to, st->max);
             return;
         }
         std::string missing;
         for (const auto& e : experiment_registry()) {
-            if (has_results(e.name, common.out)) rc |= export_experiment(e.name, common.out, export_to, export_max);
+            if (has_results(e.name, common.out)) rc |= export_experiment(e.name, common.out, st->to, st->max);
             else missing += (missing.empty() ? "" : ", ") + e.name;
         }
         if (!missing.empty())
             std::fprintf(stderr, "granrepro: export --all: no results in %s for: %s\n", common.out.c_str(), missing.c_str());
     });
+}
 
-    add_verify_command(app, rc);
-
+void add_all_command(CLI::App& app, CommonFlags& common, int& rc) {
     CLI::App* all = app.add_subcommand("all", "run every experiment, render every figure, check every claim");
     common.add_to(all, false);
     all->footer(kExitCodes);
@@ -363,38 +367,47 @@ static int run_main(int argc, char** argv) {
         for (const auto& e : experiment_registry()) rc |= dry_run(e.name, o);
     });
 
-    std::string bench_target;
-    BenchOptions bench_opt;
+}
+
+void add_bench_command(CLI::App& app, int& rc) {
+    struct State {
+        std::string target;
+        BenchOptions opt;
+        std::string threads, ranks;
+    };
+    auto st = std::make_shared<State>();
+    st->threads = std::to_string(st->opt.threads);
+    st->ranks = std::to_string(st->opt.ranks);
+    BenchOptions& opt = st->opt;
     CLI::App* bench = app.add_subcommand("bench", "measure engine speed (medians of repeated runs)");
-    bench->add_option("engine", bench_target, "what to measure: " + bench_targets())->required();
-    bench->add_option("--repeats", bench_opt.repeats, "runs per figure (the median is reported)")
+    bench->add_option("engine", st->target, "what to measure: " + bench_targets())->required();
+    bench->add_option("--repeats", opt.repeats, "runs per figure (the median is reported)")
         ->capture_default_str()
         ->check(CLI::Range(1, 100));
-    bench->add_option("--seconds", bench_opt.seconds, "time budget of one run [s]")
+    bench->add_option("--seconds", opt.seconds, "time budget of one run [s]")
         ->capture_default_str()
         ->check(CLI::Range(0.01, 3600.0));
-    bench->add_option("--steps", bench_opt.steps, "soft: time steps of one timed run (default 400000)")
+    bench->add_option("--steps", opt.steps, "soft: time steps of one timed run (default 400000)")
         ->check(CLI::Range(1L, 1000000000L));
-    std::string bench_threads = std::to_string(bench_opt.threads);
-    bench->add_option("--threads", bench_threads, "soft: threads of the multi-core comparison (1 to 256)")
+    bench->add_option("--threads", st->threads, "soft: threads of the multi-core comparison (1 to 256)")
         ->capture_default_str()
         ->type_name("INT");
-    bench->add_flag("--sizes", bench_opt.sizes, "soft: steps/s and memory against the number of grains");
-    bench->add_flag("--speeds", bench_opt.speeds, "soft: steps/s and list builds at plug speeds of 1, 20 and 200 m/s");
-    bench->add_option("--experiment", bench_opt.experiment, "sweep: the sweeping experiment to time (default bistable-pipe)");
-    bench->add_option("--scale", bench_opt.scale, "sweep: quick (default) or paper");
-    std::string bench_ranks = std::to_string(bench_opt.ranks);
-    bench->add_option("--ranks", bench_ranks, "sweep: MPI ranks compared with one (2 to 256, default 2)");
-    bench->add_option("--from-log", bench_opt.from_log, "sweep: project rank counts from these run.log files (one experiment, or every one of `all`) instead of running");
-    bench->callback([&] {
-        bench_opt.threads = parse_positive_int("--threads", bench_threads, 256);
-        bench_opt.ranks = parse_positive_int("--ranks", bench_ranks, 256);
-        parse_scale(bench_opt.scale); // one line naming --scale and what is allowed
-        rc = run_bench(bench_target, bench_opt);
+    bench->add_flag("--sizes", opt.sizes, "soft: steps/s and memory against the number of grains");
+    bench->add_flag("--speeds", opt.speeds, "soft: steps/s and list builds at plug speeds of 1, 20 and 200 m/s");
+    bench->add_option("--experiment", opt.experiment, "sweep: the sweeping experiment to time (default bistable-pipe)");
+    bench->add_option("--scale", opt.scale, "sweep: quick (default) or paper");
+    bench->add_option("--ranks", st->ranks, "sweep: MPI ranks compared with one (2 to 256, default 2)");
+    bench->add_option("--from-log", opt.from_log, "sweep: project rank counts from these run.log files (one experiment, or every one of `all`) instead of running");
+    bench->callback([&rc, st] {
+        st->opt.threads = parse_positive_int("--threads", st->threads, 256);
+        st->opt.ranks = parse_positive_int("--ranks", st->ranks, 256);
+        parse_scale(st->opt.scale); // one line naming --scale and what is allowed
+        rc = run_bench(st->target, st->opt);
     });
+}
 
-    add_report_subcommand(app, rc);
-
+// Parses the command line and runs the chosen subcommand's callback; the exit code.
+int parse_and_run(CLI::App& app, int argc, char** argv, const int& rc) {
     // An unknown subcommand gets the list of known ones, in one line.
     const auto subcommands = app.get_subcommands([](CLI::App*) { return true; });
     auto named = [](const CLI::App* s) { return s->get_name(); };
@@ -432,6 +445,33 @@ static int run_main(int argc, char** argv) {
         return 1;
     }
     return rc;
+}
+
+} // namespace
+
+// Everything but MPI's set-up: the command line and the subcommands.
+static int run_main(int argc, char** argv) {
+    command_line = argv_text(std::vector<std::string>(argv, argv + argc));
+    CLI::App app{"granrepro: reproduce Luding (1998) and Schäfer & Wolf (1995), figure by figure"};
+    app.footer(std::string(kDataFiles) + kExitCodes);
+    app.require_subcommand(1);
+    app.set_version_flag("--version", version_text());
+    app.failure_message(CLI::FailureMessage::simple);
+
+    int rc = 0;
+    CommonFlags common;
+    app.add_subcommand("list", "list experiments and figures")->callback([&] { rc = list_experiments(); });
+    add_experiment_commands(app, common, rc);
+    add_figure_command(app, common, rc);
+    add_gather_command(app, common, rc);
+    add_check_command(app, common, rc);
+    add_plot_command(app, common, rc);
+    add_export_command(app, common, rc);
+    add_verify_command(app, rc);
+    add_all_command(app, common, rc);
+    add_bench_command(app, rc);
+    add_report_subcommand(app, rc);
+    return parse_and_run(app, argc, argv, rc);
 }
 
 int main(int argc, char** argv) {
