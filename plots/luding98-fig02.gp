@@ -1,6 +1,6 @@
 # Luding (1998) Fig. 2: K/K0 against t/t0 from ED (solid) and DSMC (dash-dotted) with identical
 # initial conditions, and Eq. (18) dashed as in the caption. t0 from kinetic theory (sqrt(2 pi) in
-# Eq. 19; see experiments/cooling.cpp). The x axis starts at the first sample after t = 0.
+# Eq. 19; see experiments/cooling/cooling.cpp). The x axis starts at the first sample after t = 0.
 # Variables set by granrepro: datadir, outbase, tables, has().
 # Parameters set by granrepro: n_side, rho, r
 set datafile separator "\t"

@@ -1,0 +1,170 @@
+// cooling: the report of a run (set-up, t0, the equilibrated a2, the figures of ED and DSMC), and
+// the helpers its figure files share.
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <string>
+#include <vector>
+
+#include "core/rng_stream.hpp"
+#include "experiments/cooling/spec.hpp"
+
+namespace granrepro::experiments::cooling_detail {
+
+// The values of a curve v(x) over lo <= x <= hi, and their mean, maximum and minimum.
+std::vector<double> over(const std::vector<double>& v, const std::vector<double>& x, double lo, double hi) {
+    std::vector<double> in;
+    for (std::size_t i = 0; i < v.size(); ++i)
+        if (x[i] >= lo && x[i] <= hi) in.push_back(v[i]);
+    return in;
+}
+double mean_over(const std::vector<double>& v, const std::vector<double>& x, double lo, double hi) {
+    const auto in = over(v, x, lo, hi);
+    return in.empty() ? NAN : std::accumulate(in.begin(), in.end(), 0.0) / double(in.size());
+}
+double max_over(const std::vector<double>& v, const std::vector<double>& x, double lo, double hi) {
+    const auto in = over(v, x, lo, hi);
+    return std::accumulate(in.begin(), in.end(), -HUGE_VAL, [](double a, double b) { return std::max(a, b); });
+}
+double min_over(const std::vector<double>& v, const std::vector<double>& x, double lo, double hi) {
+    const auto in = over(v, x, lo, hi);
+    return std::accumulate(in.begin(), in.end(), HUGE_VAL, [](double a, double b) { return std::min(a, b); });
+}
+
+// Mean and sample standard deviation.
+std::array<double, 2> mean_sd(const std::vector<double>& v) {
+    double m = 0;
+    for (double x : v) m += x;
+    m /= double(v.size());
+    double s = 0;
+    for (double x : v) s += (x - m) * (x - m);
+    return {m, v.size() > 1 ? std::sqrt(s / double(v.size() - 1)) : NAN};
+}
+
+// The mean over seeds of v as `name`, and its seed standard deviation as name_sd.
+void add_mean_sd(Result& res, const std::string& name, const std::vector<double>& v, const std::string& what) {
+    const auto ms = mean_sd(v);
+    res.scalar(name, ms[0], "1", what);
+    res.scalar(name + "_sd", ms[1], "1", "its seed standard deviation");
+}
+
+namespace {
+
+// Wall time of a method's runs, summed over seeds [s].
+double wall_seconds(const std::vector<Trace>& trs) {
+    double wall = 0;
+    for (const Trace& tr : trs) wall += tr.wall_seconds;
+    return wall;
+}
+
+// Per-seed S(k) at every snapshot and K/K0 of one method, for studies that compare runs made
+// separately (scripts/studies/dsmc_variants.sh).
+void add_seed_tables(Result& res, const std::vector<Trace>& trs, const std::vector<double>& snaps, const char* name) {
+    for (std::size_t k = 0; k < trs.size(); ++k) {
+        const Trace& tr = trs[k];
+        {
+            Table& t = res.table(std::string("sk_") + name + "_seed" + std::to_string(k), std::string("S(k) at the snapshot times, seed index ") + std::to_string(k) + ", " + name);
+            t.add("k", "1").values = tr.S_k;
+            for (std::size_t i = 0; i < tr.snaps.size(); ++i) t.add("S_t" + number_text(snaps[i]), "1").values = tr.snaps[i].S;
+        }
+        Table& e = res.table(std::string("energy_") + name + "_seed" + std::to_string(k), std::string("K/K0 against t, seed index ") + std::to_string(k) + ", " + name);
+        e.add({{"t", "s", tr.t}, {"K_over_K0", "1", k_ratio(tr)}, {"C_over_N", "1", tr.cn}});
+    }
+}
+
+// The run's size and cost, and t0 in its three readings: Eq. (19) as printed, kinetic theory, and
+// the measured elastic collision rate.
+void add_setup(Result& res, const CoolingSpec& c, const Setup& s, const std::vector<Trace>& eds, const std::vector<Trace>& dss) {
+    const double r = c.r;
+    // Eq. (19) as printed; theory::luding_eq19_t0_printed forms s_* otherwise and differs in the
+    // last bit.
+    const double s_star = 1 / theory::henderson_contact_value(c.rho);
+    const double t0_printed = std::sqrt(M_PI) * c.d * s_star / (2 * (1 - r * r) * c.rho * c.vbar);
+    const double t0_measured_rate = 4 / ((1 - r * r) * s.collision_rate);
+    res.scalar("N", double(s.pos.size()), "1", "number of disks");
+    res.scalar("seeds", double(c.seeds), "1", "independent initial states (equilibration, ED and DSMC each)");
+    res.scalar("wall_time_ed", wall_seconds(eds), "s", "wall time of the ED runs from t = 0 with their observables, summed over seeds and resumed parts");
+    if (c.run_dsmc)
+        res.scalar("wall_time_dsmc", wall_seconds(dss), "s", "wall time of the DSMC runs from t = 0 with their observables, summed over seeds and resumed parts");
+    res.scalar("box", s.L, "m", "side of the periodic box");
+    res.scalar("t0_inv_eq19_printed", 1 / t0_printed, "1/s", "1/t0 from Eq. (19) as printed (sqrt(pi))");
+    res.scalar("t0_inv_kinetic_theory", 1 / c.t0(), "1/s", "1/t0 = (1-r^2) omega_E / 4 with Henderson's g(d): sqrt(2 pi)");
+    res.scalar("omega_equilibration_over_enskog", s.collision_rate / c.omega_enskog(), "1",
+               "elastic ED collision rate over the second half of the equilibration over the Enskog-Henderson rate");
+    res.scalar("t0_inv_measured_rate", 1 / t0_measured_rate, "1/s", "1/t0 from the measured elastic collision rate");
+}
+
+// The equilibrated state is Maxwellian (Sec. 3: "so that a Maxwellian velocity distribution ...
+// exists"): a2 pooled over the seeds, against 0 with its standard error.
+void add_equilibrated_a2(Result& res, const CoolingSpec& c, std::uint64_t seed, const Setups& setups) {
+    std::vector<Vec2> all;
+    for (long k = 0; k < setups.size(); ++k) all.insert(all.end(), setups[k].vel.begin(), setups[k].vel.end());
+    const auto a2 = sonine_a2(all);
+    RngStream rng(seed, setup_stream(0));
+    const auto v0 = initial_velocities(c, setups[0].mass, rng);
+    res.scalar("a2_initial_velocities", sonine_a2(v0)[0], "1", "a2 of the velocities drawn before the equilibration (uniform components: -0.3)");
+    res.scalar("a2_equilibrated", a2[0], "1", "Sonine a2 of the velocities at t = 0 (after the elastic equilibration), all seeds");
+    res.scalar("a2_equilibrated_err", a2[1], "1", "its standard error (sample variance of v^4)");
+    res.scalar("a2_equilibrated_z", a2[0] / a2[1], "1", "a2 at t = 0 in standard errors (Maxwellian: |z| ~ 1)");
+}
+
+// Figs. 2, 6 and 7 of DSMC, and DSMC against ED.
+void add_dsmc(Result& res, const CoolingSpec& c, const Setup& s, const std::vector<Trace>& eds, const std::vector<Trace>& dss) {
+    const Trace& ds = dss.front();
+    const double t0 = c.t0(), k_small = c.sk_k_max;
+    const std::vector<double> snaps = c.snapshots();
+    add_energy_table(res, ds, t0, "dsmc");
+    add_structure_tables(res, ds, snaps, c.rho, "dsmc");
+    res.scalar("dsmc_eq18_max_dev_2t0", max_dev(ds, t0, 2 * t0), "1", "max |K/K_18 - 1| for t <= 2 t0, DSMC");
+    add_dsmc_kinetics(res, dss, c);
+    add_ed_dsmc_energy(res, eds, dss, t0, c.departure_level);
+    add_loss_per_collision(res, c, eds, dss);
+    const auto& g_last = ds.snaps.back().g;
+    res.scalar("dsmc_g_inside_contact_mean", mean_over(g_last, ds.g_r, 0.0, 0.9), "1", "mean g(r/d < 0.9), last snapshot, DSMC (no exclusion hole: about 1)");
+    res.scalar("dsmc_g_contact_peak", max_over(g_last, ds.g_r, 0.9, 1.1) / mean_over(g_last, ds.g_r, 2.5, 5.0), "1",
+               "g near contact over g at 2.5-5 d, last snapshot, DSMC");
+    add_sk_agreement(res, eds, dss, snaps, k_small);
+    add_cell_imprint(res, c, s, eds, dss);
+    res.scalar("dsmc_Sk_small_k_growth", small_k_S(ds, ds.snaps.back(), k_small) / small_k_S(ds, ds.snaps.front(), k_small), "1",
+               "mean S(k <= sk_k_max) at the last snapshot over that at t = 0, DSMC, first seed");
+    res.scalar("dsmc_Sk_growth_over_equilibrium", small_k_S(ds, ds.snaps.back(), k_small) / theory::hard_disk_structure_factor_zero(c.rho), "1",
+               "mean S(k <= sk_k_max) at the last snapshot over the hard-disk equilibrium S(0), DSMC, first seed");
+    res.scalar("dsmc_C_over_N_end", ds.cn.back(), "1", "collisions per particle at t_end, DSMC");
+    add_seed_tables(res, dss, snaps, "dsmc");
+    if (c.velocity_correlation) add_velocity_correlation(res, c, dss, "dsmc");
+    res.scalar("dsmc_pbd_grazing_ratio_last", grazing_ratio(ds.pbd.back(), ds.pbd_centres), "1", "P(b/d>0.8)/P(b/d<0.2), last window, DSMC (molecular chaos: 1)");
+}
+
+} // namespace
+
+// run_ed = false: DSMC alone (for variant studies; the claims that compare with ED are then missing).
+Result report_dsmc_only(const CoolingSpec& c, const std::vector<Trace>& dss) {
+    Result res;
+    res.scalar("seeds", double(c.seeds), "1", "independent initial states");
+    res.scalar("wall_time_dsmc", wall_seconds(dss), "s", "wall time of the DSMC runs, summed over seeds");
+    add_seed_tables(res, dss, c.snapshots(), "dsmc");
+    add_dsmc_kinetics(res, dss, c);
+    return res;
+}
+
+// Figs. 2, 3, 6 and 7 of ED, and DSMC against ED if it ran.
+Result report_all(const CoolingSpec& c, std::uint64_t seed, const Setups& setups, const std::vector<Trace>& eds,
+              const std::vector<Trace>& dss) {
+    const Trace& ed = eds.front();
+    const std::vector<double> snaps = c.snapshots();
+    Result res;
+    add_setup(res, c, setups[0], eds, dss);
+    add_equilibrated_a2(res, c, seed, setups);
+    add_energy_table(res, ed, c.t0(), "ed");
+    add_ed_cooling(res, c, eds);
+    add_impact_parameter(res, ed);
+    add_structure_tables(res, ed, snaps, c.rho, "ed");
+    add_seed_tables(res, eds, snaps, "ed");
+    add_ed_g(res, ed, snaps, c.t0());
+    add_ed_sk(res, eds, snaps, c.sk_k_max, theory::hard_disk_structure_factor_zero(c.rho));
+    if (c.velocity_correlation) add_velocity_correlation(res, c, eds, "ed");
+    if (c.run_dsmc) add_dsmc(res, c, setups[0], eds, dss);
+    return res;
+}
+
+} // namespace granrepro::experiments::cooling_detail

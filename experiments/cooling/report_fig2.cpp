@@ -1,0 +1,230 @@
+// cooling, Fig. 2: K(t) of ED and DSMC against Eq. (18) and each other, the collision rate, the
+// HCS Sonine coefficient a2, and the energy lost per collision.
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "analysis/curve_analysis.hpp"
+#include "experiments/cooling/spec.hpp"
+
+namespace granrepro::experiments::cooling_detail {
+
+// K/K0 of a trace and Eq. (18) at its times.
+std::vector<double> k_ratio(const Trace& tr) {
+    const double k0 = tr.kx.front() + tr.ky.front() + tr.krot.front();
+    std::vector<double> out;
+    for (std::size_t i = 0; i < tr.t.size(); ++i) out.push_back((tr.kx[i] + tr.ky[i] + tr.krot[i]) / k0);
+    return out;
+}
+
+double eq18(double t, double t0) { return theory::haff_energy_ratio(t, t0); }
+
+// Largest |K/K_18 - 1| over t <= t_max, and K/K_18 interpolated (log-log) at t.
+double max_dev(const Trace& tr, double t0, double t_max) {
+    const auto k = k_ratio(tr);
+    double worst = 0;
+    for (std::size_t i = 0; i < tr.t.size(); ++i)
+        if (tr.t[i] <= t_max) worst = std::max(worst, std::abs(k[i] / eq18(tr.t[i], t0) - 1));
+    return worst;
+}
+double ratio_at(const Trace& tr, double t0, double t) {
+    const auto k = k_ratio(tr);
+    for (std::size_t i = 1; i < tr.t.size(); ++i)
+        if (tr.t[i] >= t && tr.t[i - 1] > 0) {
+            const double f = std::log(t / tr.t[i - 1]) / std::log(tr.t[i] / tr.t[i - 1]);
+            const double a = std::log(k[i - 1] / eq18(tr.t[i - 1], t0)), b = std::log(k[i] / eq18(tr.t[i], t0));
+            return std::exp(a + f * (b - a));
+        }
+    return NAN;
+}
+
+namespace {
+
+// Eq. (18) at the sample times of a trace.
+std::vector<double> eq18_curve(const Trace& tr, double t0) {
+    std::vector<double> out;
+    for (double t : tr.t) out.push_back(eq18(t, t0));
+    return out;
+}
+
+// First t/t0 at which |k/ref - 1| exceeds level, interpolated linearly in ln t between the
+// samples around the crossing; NaN if it never does.
+double first_departure(const std::vector<double>& t, const std::vector<double>& k, const std::vector<double>& ref,
+                       double t0, double level) {
+    std::vector<double> x, y;
+    for (std::size_t i = 0; i < t.size() && i < k.size() && i < ref.size(); ++i) {
+        x.push_back(t[i] / t0);
+        y.push_back(std::abs(k[i] / ref[i] - 1));
+    }
+    for (std::size_t i = 1; i < x.size(); ++i)
+        if (y[i] > level && y[i - 1] <= level && x[i - 1] > 0) {
+            const double f = (level - y[i - 1]) / (y[i] - y[i - 1]);
+            return std::exp(std::log(x[i - 1]) + f * std::log(x[i] / x[i - 1]));
+        }
+    return NAN;
+}
+
+// Early collision rate: C/N at the sample nearest t = 0.25 t0 over what Haff's law with the
+// Enskog-Henderson rate omega promises there (the rate of the collision rule, before clustering).
+double rate_over_enskog(const Trace& tr, double t0, double omega) {
+    std::size_t best = 1;
+    for (std::size_t i = 1; i < tr.t.size(); ++i)
+        if (std::abs(std::log(tr.t[i] / (0.25 * t0))) < std::abs(std::log(tr.t[best] / (0.25 * t0)))) best = i;
+    return tr.cn[best] / theory::haff_collisions_per_particle(tr.t[best], t0, omega);
+}
+
+// HCS Sonine coefficient before clustering (van Noije & Ernst 1998): samples in the a2 window
+// (units of t0), weighted mean over samples and seeds taken as independent measurements (samples
+// ~1 collision per particle apart).
+void hcs_a2(Result& res, const std::vector<Trace>& trs, const CoolingSpec& c, const char* name) {
+    const double t0 = c.t0();
+    const double a2_vne = theory::van_noije_ernst_a2(c.r, 2);
+    const auto& w = c.a2_window;
+    double sw = 0, swa = 0;
+    int cnt = 0;
+    for (const Trace& tr : trs)
+        for (std::size_t i = 0; i < tr.t.size(); ++i)
+            if (tr.t[i] >= w[0] * t0 * (1 - 1e-9) && tr.t[i] <= w[1] * t0 * (1 + 1e-9)) {
+                const double wi = 1 / (tr.a2_err[i] * tr.a2_err[i]);
+                sw += wi;
+                swa += wi * tr.a2[i];
+                ++cnt;
+            }
+    const double a2 = swa / sw, err = 1 / std::sqrt(sw);
+    res.scalar(std::string("a2_hcs_") + name, a2, "1", std::string("Sonine a2 in the a2 window, weighted mean over samples and seeds, ") + name);
+    res.scalar(std::string("a2_hcs_err_") + name, err, "1", "its standard error (samples taken as independent)");
+    res.scalar(std::string("a2_hcs_samples_") + name, double(cnt), "1", "samples in the window");
+    res.scalar(std::string("a2_hcs_z_") + name, (a2 - a2_vne) / err, "1", "(a2 - van Noije-Ernst) in standard errors");
+}
+
+} // namespace
+
+// What a DSMC variant does before clustering, against kinetic theory (first seed, a2 all seeds).
+void add_dsmc_kinetics(Result& res, const std::vector<Trace>& dss, const CoolingSpec& c) {
+    const double t0 = c.t0();
+    const Trace& ds = dss.front();
+    res.scalar("dsmc_rate_over_enskog_early", rate_over_enskog(ds, t0, c.omega_enskog()), "1", "C/N at t = 0.25 t0 over Haff's law with the Enskog rate, DSMC");
+    res.scalar("t0_fit_over_kinetic_dsmc", fit_haff_inv_t0(ds.t, k_ratio(ds), t0) * t0, "1", "1/t0 fitted to the DSMC K(t) over t <= t0 (Eq. 18) over the kinetic-theory 1/t0");
+    res.scalar("dsmc_over_eq18_2t0", ratio_at(ds, t0, 2 * t0), "1", "K/K_18 at t = 2 t0, DSMC");
+    hcs_a2(res, dss, c, "dsmc");
+}
+
+// Fig. 2: K/K0, its parts, Eq. (18), C/N and a2 against t/t0 of one method.
+void add_energy_table(Result& res, const Trace& tr, double t0, const char* name) {
+    Table& t = res.table(std::string("energy_") + name, std::string("K/K0 and a2 against t/t0, ") + name);
+    const double k0 = tr.kx.front() + tr.ky.front() + tr.krot.front();
+    const auto over_by = [](const std::vector<double>& v, double by) {
+        std::vector<double> out;
+        for (double x : v) out.push_back(x / by);
+        return out;
+    };
+    t.add({{"t", "s", tr.t}, {"t_over_t0", "1", over_by(tr.t, t0)}, {"K_over_K0", "1", k_ratio(tr)},
+           {"Kx_over_K0", "1", over_by(tr.kx, k0)}, {"Ky_over_K0", "1", over_by(tr.ky, k0)},
+           {"Krot_over_K0", "1", over_by(tr.krot, k0)}, {"eq18", "1", eq18_curve(tr, t0)}, {"C_over_N", "1", tr.cn},
+           {"elastic_C_over_N", "1", tr.elastic_cn}, {"a2", "1", tr.a2}, {"a2_err", "1", tr.a2_err}});
+}
+
+// Fig. 2, ED against kinetic theory: early cooling (Eq. 18, the Enskog rate), where K(t) departs
+// from Eq. (18), and the HCS a2.
+void add_ed_cooling(Result& res, const CoolingSpec& c, const std::vector<Trace>& eds) {
+    const Trace& ed = eds.front();
+    const double t0 = c.t0();
+    const double inv_t0_fit = fit_haff_inv_t0(ed.t, k_ratio(ed), t0);
+    res.scalar("t0_inv_fit_ed", inv_t0_fit, "1/s", "1/t0 fitted to the ED K(t) over t <= t0 (Eq. 18)");
+    res.scalar("t0_fit_over_kinetic_ed", inv_t0_fit * t0, "1", "fitted over kinetic-theory 1/t0, ED");
+    res.scalar("ed_rate_over_enskog_early", rate_over_enskog(ed, t0, c.omega_enskog()), "1", "C/N at t = 0.25 t0 over Haff's law with the Enskog rate, ED");
+    res.scalar("ed_eq18_max_dev_2t0", max_dev(ed, t0, 2 * t0), "1", "max |K/K_18 - 1| for t <= 2 t0, ED");
+    res.scalar("ed_over_eq18_10t0", ratio_at(ed, t0, 10 * t0), "1", "K/K_18 at t = 10 t0, ED");
+    res.scalar("ed_over_eq18_end", ratio_at(ed, t0, ed.t.back()), "1", "K/K_18 at t_end, ED");
+    res.scalar("ed_C_over_N_end", ed.cn.back(), "1", "collisions per particle at t_end, ED");
+    res.scalar("ed_elastic_fraction_end", ed.elastic_cn.back() / ed.cn.back(), "1", "TC-elastic share of collisions, ED");
+    // Departure from homogeneous cooling (Sec. 3.1: "at t/t0 ≈ 2 substantial deviations"): the
+    // first t/t0 where the ED K(t) leaves Eq. (18) by more than departure_level, per seed.
+    std::vector<double> dep;
+    for (const Trace& tr : eds)
+        dep.push_back(first_departure(tr.t, k_ratio(tr), eq18_curve(tr, t0), t0, c.departure_level));
+    add_mean_sd(res, "ed_departure_t_over_t0", dep, "first t/t0 with |K_ED/K_18 - 1| > departure_level, mean over seeds");
+    res.scalar("a2_van_noije_ernst", theory::van_noije_ernst_a2(c.r, 2), "1", "van Noije-Ernst a2 of the 2D HCS at this r (first Sonine approximation)");
+    hcs_a2(res, eds, c, "ed");
+}
+
+// Fig. 2, DSMC against ED: where their K(t) agree, and where they split (Sec. 3.1: "only at
+// t/t0 ≈ 10 a difference"): the first t/t0 with |K_DSMC/K_ED - 1| > level, per seed.
+void add_ed_dsmc_energy(Result& res, const std::vector<Trace>& eds, const std::vector<Trace>& dss, double t0, double level) {
+    const Trace &ed = eds.front(), &ds = dss.front();
+    const auto ke = k_ratio(ed), kd = k_ratio(ds);
+    double early = 0, late_max = 0;
+    for (std::size_t i = 0; i < ke.size() && i < kd.size(); ++i) {
+        if (ed.t[i] <= 5 * t0) early = std::max(early, std::abs(kd[i] / ke[i] - 1));
+        if (ed.t[i] >= 30 * t0) late_max = std::max(late_max, kd[i] / ke[i]);
+    }
+    res.scalar("dsmc_vs_ed_max_dev_5t0", early, "1", "max |K_DSMC/K_ED - 1| for t <= 5 t0");
+    res.scalar("dsmc_over_ed_max_late", late_max > 0 ? late_max : NAN, "1", "largest K_DSMC/K_ED for t >= 30 t0");
+    res.scalar("dsmc_over_ed_end", kd.back() / ke.back(), "1", "K_DSMC/K_ED at t_end");
+    res.scalar("dsmc_over_ed_t0", ratio_at(ds, t0, t0) / ratio_at(ed, t0, t0), "1", "K_DSMC/K_ED at t = t0");
+    res.scalar("dsmc_over_ed_5t0", ratio_at(ds, t0, 5 * t0) / ratio_at(ed, t0, 5 * t0), "1", "K_DSMC/K_ED at t = 5 t0");
+    std::vector<double> split;
+    for (std::size_t k = 0; k < eds.size(); ++k)
+        split.push_back(first_departure(eds[k].t, k_ratio(dss[k]), k_ratio(eds[k]), t0, level));
+    add_mean_sd(res, "dsmc_ed_split_t_over_t0", split, "first t/t0 with |K_DSMC/K_ED - 1| > departure_level, mean over seeds");
+}
+
+// Sec. 3.1, "DSMC dissipates more energy than ED as soon as the number of central collisions is
+// overestimated": the energy lost per collision, -ln(K(b)/K(a)) / ((1 - r^2)/2 (C/N(b) - C/N(a)))
+// (1: a Maxwellian gas under molecular chaos at the global temperature), DSMC over ED, per seed in
+// windows of t/t0 (K and C/N interpolated linearly in t), then the seed mean of each window
+// (scripts/studies/cooling_loss_per_collision.md). From 2 t0 on, where ED's P(b/d) tilts towards
+// grazing collisions (Fig. 3), the smallest of those window ratios and the share of successive
+// windows in which it rises.
+void add_loss_per_collision(Result& res, const CoolingSpec& c, const std::vector<Trace>& eds, const std::vector<Trace>& dss) {
+    const double t0 = c.t0(), f = (1 - c.r * c.r) / 2;
+    const auto at = [](const std::vector<double>& t, const std::vector<double>& v, double x) {
+        for (std::size_t i = 1; i < t.size(); ++i)
+            if (t[i] >= x) return v[i - 1] + (v[i] - v[i - 1]) * (x - t[i - 1]) / (t[i] - t[i - 1]);
+        return double(NAN);
+    };
+    const auto loss = [&](const Trace& tr, double a, double b) {
+        const auto k = k_ratio(tr);
+        return -std::log(at(tr.t, k, b * t0) / at(tr.t, k, a * t0)) / (f * (at(tr.t, tr.cn, b * t0) - at(tr.t, tr.cn, a * t0)));
+    };
+    const std::vector<double> edges = {0.1, 0.5, 1, 2, 5, 10, 20, 50};
+    std::vector<double> lo, hi, ratio, sd;
+    for (std::size_t w = 0; w + 1 < edges.size(); ++w) {
+        std::vector<double> per_seed;
+        for (std::size_t k = 0; k < eds.size() && k < dss.size(); ++k) {
+            const double q = loss(dss[k], edges[w], edges[w + 1]) / loss(eds[k], edges[w], edges[w + 1]);
+            if (std::isfinite(q)) per_seed.push_back(q);
+        }
+        if (per_seed.empty()) continue;
+        const auto ms = mean_sd(per_seed);
+        lo.push_back(edges[w]);
+        hi.push_back(edges[w + 1]);
+        ratio.push_back(ms[0]);
+        sd.push_back(ms[1]);
+    }
+    Table& t = res.table("loss_per_collision", "energy lost per collision, DSMC over ED, windows of t/t0 (mean over seeds)");
+    t.add({{"t_over_t0_begin", "1", lo}, {"t_over_t0_end", "1", hi}, {"dsmc_over_ed", "1", ratio}, {"dsmc_over_ed_sd", "1", sd}});
+    double min_ratio = NAN, min_sd = NAN;
+    int pairs = 0, rising = 0;
+    for (std::size_t w = 0; w < ratio.size(); ++w) {
+        if (lo[w] < 2) continue;
+        if (std::isnan(min_ratio) || ratio[w] < min_ratio) {
+            min_ratio = ratio[w];
+            min_sd = sd[w];
+        }
+        if (w > 0 && lo[w - 1] >= 2) {
+            ++pairs;
+            if (ratio[w] > ratio[w - 1]) ++rising;
+        }
+    }
+    res.scalar("loss_per_collision_dsmc_over_ed_min_after_2t0", min_ratio, "1",
+               "smallest DSMC/ED energy loss per collision over the windows 2-5, 5-10, 10-20, 20-50 t0 (those inside the run), seed mean");
+    res.scalar("loss_per_collision_dsmc_over_ed_min_after_2t0_sd", min_sd, "1", "its seed standard deviation (NaN for one seed)");
+    res.scalar("loss_per_collision_dsmc_over_ed_2_5t0", ratio.size() > 3 && lo[3] == 2 ? ratio[3] : NAN, "1",
+               "DSMC/ED energy loss per collision over 2-5 t0, seed mean");
+    res.scalar("loss_per_collision_ratio_rising_share", pairs ? double(rising) / pairs : NAN, "1",
+               "share of successive windows from 2 t0 on in which DSMC/ED energy loss per collision rises");
+    res.scalar("loss_per_collision_ratio_rising_pairs", double(pairs), "1", "number of such window pairs");
+}
+} // namespace granrepro::experiments::cooling_detail

@@ -1,0 +1,79 @@
+// cooling, Fig. 3: P(b/d) of the ED run per time window and the trend of grazing collisions.
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "experiments/cooling/spec.hpp"
+
+namespace granrepro::experiments::cooling_detail {
+
+// Grazing over central collisions: mean P(b/d) over b/d > 0.8 against b/d < 0.2.
+double grazing_ratio(const ImpactParameterHistogram::Window& w, const std::vector<double>& centres) {
+    return mean_over(w.p, centres, 0.8, 1.0) / mean_over(w.p, centres, 0.0, 0.2);
+}
+
+namespace {
+
+// Sec. 3.2, "more and more grazing collisions occur with increasing simulation time": the grazing
+// ratio of every window with its counting error (Poisson: the relative error of a ratio of two
+// bin-group counts is sqrt(1/C_hi + 1/C_lo); the window total cancels), and the share of
+// successive window pairs in which it does not fall by more than 3 combined standard errors.
+void add_grazing_trend(Result& res, const Trace& ed) {
+    std::vector<double> ratio, err;
+    for (const auto& w : ed.pbd) {
+        double hi = 0, lo = 0, nhi = 0, nlo = 0;
+        for (std::size_t b = 0; b < w.counts.size() && b < ed.pbd_centres.size(); ++b) {
+            const double x = ed.pbd_centres[b];
+            if (x >= 0.8 && x <= 1.0) { hi += double(w.counts[b]); ++nhi; }
+            if (x >= 0.0 && x <= 0.2) { lo += double(w.counts[b]); ++nlo; }
+        }
+        const double r = (hi > 0 && lo > 0) ? (hi / nhi) / (lo / nlo) : NAN;
+        ratio.push_back(r);
+        err.push_back(r * std::sqrt(1 / hi + 1 / lo));
+    }
+    Table& t = res.table("impact_parameter_grazing", "grazing ratio P(b/d>0.8)/P(b/d<0.2) of the ED run per window, with its counting error");
+    std::vector<double> b;
+    for (const auto& w : ed.pbd) b.push_back(w.t_begin);
+    t.add({{"t_begin", "s", b}, {"grazing_ratio", "1", ratio}, {"grazing_ratio_err", "1", err}});
+    int pairs = 0, rising = 0;
+    double min_z = NAN;
+    for (std::size_t k = 1; k < ratio.size(); ++k) {
+        if (!std::isfinite(ratio[k]) || !std::isfinite(ratio[k - 1])) continue;
+        const double z = (ratio[k] - ratio[k - 1]) / std::hypot(err[k], err[k - 1]);
+        ++pairs;
+        if (z >= -3) ++rising;
+        min_z = std::isnan(min_z) ? z : std::min(min_z, z);
+    }
+    res.scalar("pbd_grazing_rising_share", pairs ? double(rising) / pairs : NAN, "1",
+               "share of successive P(b/d) windows whose grazing ratio does not fall by more than 3 combined standard errors");
+    res.scalar("pbd_grazing_rising_pairs", double(pairs), "1", "number of successive window pairs judged");
+    res.scalar("pbd_grazing_step_min_z", min_z, "1", "smallest change of the grazing ratio between successive windows, in combined standard errors");
+    res.scalar("pbd_grazing_ratio_last_over_first", ratio.empty() ? NAN : ratio.back() / ratio.front(), "1",
+               "grazing ratio of the last window over the first (from the counts)");
+}
+
+} // namespace
+
+// Fig. 3: P(b/d) of the ED run per time window, and grazing over central collisions in the first
+// and last window.
+void add_impact_parameter(Result& res, const Trace& ed) {
+    {
+        Table& t = res.table("impact_parameter_ed", "P(b/d) of the ED run per time window (columns by window start)");
+        t.add("b_over_d", "1").values = ed.pbd_centres;
+        for (const auto& w : ed.pbd)
+            t.add({{"P_t" + number_text(w.t_begin), "1", w.p}, {"err_t" + number_text(w.t_begin), "1", w.error}});
+    }
+    Table& wt = res.table("impact_parameter_windows", "time windows of P(b/d): [t_begin, t_end)");
+    std::vector<double> b, e;
+    for (const auto& w : ed.pbd) {
+        b.push_back(w.t_begin);
+        e.push_back(w.t_end);
+    }
+    wt.add({{"t_begin", "s", b}, {"t_end", "s", e}});
+    res.scalar("pbd_grazing_ratio_first", grazing_ratio(ed.pbd.front(), ed.pbd_centres), "1", "P(b/d>0.8)/P(b/d<0.2), first window, ED");
+    res.scalar("pbd_grazing_ratio_last", grazing_ratio(ed.pbd.back(), ed.pbd_centres), "1", "P(b/d>0.8)/P(b/d<0.2), last window, ED");
+    res.scalar("pbd_collisions_first", double(ed.pbd.front().total), "1", "collisions in the first window");
+    add_grazing_trend(res, ed);
+}
+
+} // namespace granrepro::experiments::cooling_detail

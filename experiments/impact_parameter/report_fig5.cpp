@@ -1,0 +1,209 @@
+// impact-parameter, Fig. 5: the snapshot and stress panels, their ordering over r and seeds, the
+// co-rotating eddies, and the cooling curves of the figure runs.
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "analysis/seed_stats.hpp"
+#include "analysis/stress_shape.hpp"
+#include "experiments/impact_parameter/spec.hpp"
+#include "theory/kinetic_theory.hpp"
+
+namespace granrepro::experiments::impact_parameter_detail {
+
+namespace {
+
+// Appends a row to a table whose columns are all in place.
+void add_row(Table& t, std::initializer_list<double> row) {
+    auto col = t.columns.begin();
+    for (double x : row) (col++)->values.push_back(x);
+}
+
+// Fig. 5 top: the particles of the figure run with arrows of length velocity x tau [d].
+void fig5_snapshot(Result& res, const ImpactSpec& s, const PointResult& pr, const std::string& lb, double tau) {
+    Table& t = res.table("fig5_snapshot_" + lb, "particles at t = t_end with velocity arrows (seed 0)");
+    for (const char* c : {"x_over_d", "y_over_d", "arrow_x_over_d", "arrow_y_over_d"}) t.add(c, "1");
+    t.add("vx", "m/s");
+    t.add("vy", "m/s");
+    for (std::size_t i = 0; i < pr.pos.size(); ++i) {
+        const Vec2 x = pr.pos[i], v = pr.vel[i];
+        add_row(t, {x.x / s.d, x.y / s.d, v.x * tau / s.d, v.y * tau / s.d, v.x, v.y});
+    }
+}
+
+// Fig. 5 bottom: a cross per cell. Half-length of an arm: |sigma| / sigma_max of the panel times
+// 0.45 cell widths, so that sigma_max has the same length in every panel (as in the paper).
+void fig5_stress(Result& res, const ImpactSpec& s, const PointResult& pr, const std::string& lb, double l) {
+    const int nc = s.stress_cells;
+    const double smax = pr.sigma_max, cell = l / nc / s.d;
+    Table& t = res.table("fig5_stress_" + lb, "principal stresses of Eq. (9) per cell, stress window (seed 0)");
+    const char* const cols[][2] = {{"x_over_d", "1"}, {"y_over_d", "1"}, {"sigma_1", "N/m"}, {"sigma_2", "N/m"},
+                                   {"axis1_x_over_d", "1"}, {"axis1_y_over_d", "1"}, {"axis2_x_over_d", "1"},
+                                   {"axis2_y_over_d", "1"}, {"collisions", "1"}, {"pressure", "N/m"}};
+    for (const auto& c : cols) t.add(c[0], c[1]);
+    for (int iy = 0; iy < nc; ++iy)
+        for (int ix = 0; ix < nc; ++ix) {
+            const auto& c = pr.cells[static_cast<std::size_t>(ix + nc * iy)];
+            const double h1 = smax > 0 ? 0.45 * cell * std::fabs(c.sigma_min) / smax : 0.0;
+            const double h2 = smax > 0 ? 0.45 * cell * std::fabs(c.sigma_max) / smax : 0.0;
+            // sigma_1, sigma_2: the compressive principal stresses, positive.
+            add_row(t, {(ix + 0.5) * cell, (iy + 0.5) * cell, -c.sigma_min, -c.sigma_max, h1 * c.axis_min.x(), h1 * c.axis_min.y(),
+                        h2 * c.axis_max.x(), h2 * c.axis_max.y(), static_cast<double>(c.collisions), c.pressure()});
+        }
+}
+
+// Index of r in rs, or -1 when it is not swept.
+long find_r(const std::vector<double>& rs, double r) {
+    for (std::size_t k = 0; k < rs.size(); ++k)
+        if (std::fabs(rs[k] - r) < 1e-9) return static_cast<long>(k);
+    return -1;
+}
+
+} // namespace
+
+// One panel of Fig. 5 per r: the figure run (seed 0), and how typical it is over the seeds.
+void fig5_panels(Result& res, const ImpactSpec& s, const std::vector<PointResult>& pts, double l) {
+    std::vector<double> sig_max, v_rms, taus;
+    for (std::size_t k = 0; k < s.n_r(); ++k) {
+        const PointResult& pr = pts[k];
+        const std::string lb = r_label(s, k);
+        // Arrows: a particle moving at the panel's rms speed gets an arrow of arrow_rms_length d;
+        // tau [s] turns a velocity into an arrow length (the paper's factors 1, 3, 7 play this role).
+        const double tau = pr.v_rms > 0 ? s.arrow_rms_length * s.d / pr.v_rms : 0.0;
+        fig5_snapshot(res, s, pr, lb, tau);
+        fig5_stress(res, s, pr, lb, l);
+        sig_max.push_back(pr.sigma_max);
+        v_rms.push_back(pr.v_rms);
+        taus.push_back(tau);
+        res.scalar("sigma_max_" + lb, pr.sigma_max, "N/m", "largest principal stress magnitude over the cells (Eq. 9, stress window)");
+        res.scalar("v_rms_end_" + lb, pr.v_rms, "m/s", "rms speed at t_end (seed 0)");
+        res.scalar("arrow_tau_" + lb, tau, "s", "arrow length / velocity in the snapshot panel");
+        res.scalar("K_end_over_K0_" + lb, pr.k_end / pr.k0, "1", "translational kinetic energy at t_end over K(0) (seed 0)");
+        res.scalar("flow_fraction_end_" + lb, pr.flow_fraction, "1",
+                   "K of the velocity field averaged over the stress cells, over K, at t_end (seed 0)");
+        const double ns = static_cast<double>(s.n_seeds());
+        res.scalar("flow_fraction_mean_" + lb, seed_sum(s, pts, k, &PointResult::flow_fraction) / ns, "1", "flow_fraction_end averaged over seeds");
+        res.scalar("sigma_max_mean_" + lb, seed_sum(s, pts, k, &PointResult::sigma_max) / ns, "N/m", "sigma_max averaged over seeds");
+    }
+    Table& tm = res.table("fig5_meta", "per panel: r, box side, arrow scale, sigma_max, rms speed at t_end");
+    tm.add({{"r", "1", s.restitutions}, {"box_over_d", "1", std::vector<double>(s.n_r(), l / s.d)},
+            {"sigma_max", "N/m", sig_max}, {"v_rms", "m/s", v_rms}, {"arrow_tau", "s", taus}});
+}
+
+// The ordering of Fig. 5's panels over seeds, when r = 0.8, 0.9 and 0.95 are all swept.
+// sigma_max: the paper's values are in arbitrary units, only ratios are comparable: 0.894 / 0.568 =
+// 1.57 (r = 0.8 over 0.9), 1.56 / 0.568 = 2.75 (0.95 over 0.9). Arrows: the paper scales them by
+// 1, 3, 7 (left to right), which, read as arrow = velocity x factor drawn at a similar length,
+// means v(0.8) > v(0.9) > v(0.95).
+void fig5_orderings(Result& res, const ImpactSpec& s, const std::vector<PointResult>& pts) {
+    const long k8 = find_r(s.restitutions, 0.8), k9 = find_r(s.restitutions, 0.9), k95 = find_r(s.restitutions, 0.95);
+    if (k8 < 0 || k9 < 0 || k95 < 0) return;
+    const PointResult &f8 = pts[std::size_t(k8)], &f9 = pts[std::size_t(k9)], &f95 = pts[std::size_t(k95)]; // seed 0
+    res.scalar("sigma_max_ratio_080_over_090", f8.sigma_max / f9.sigma_max, "1", "sigma_max(r=0.8)/sigma_max(r=0.9)");
+    res.scalar("sigma_max_ratio_095_over_090", f95.sigma_max / f9.sigma_max, "1", "sigma_max(r=0.95)/sigma_max(r=0.9)");
+    res.scalar("v_rms_ratio_080_over_095", f8.v_rms / f95.v_rms, "1", "rms speed at t_end, r=0.8 over r=0.95");
+    const double ns = static_cast<double>(s.n_seeds());
+    double n_090_lowest = 0, n_095_highest = 0, ordered = 0, reversed = 0, stress_order = 0, r89 = 0, r895 = 0;
+    for (std::size_t seed = 0; seed < s.n_seeds(); ++seed) {
+        const PointResult &p8 = at(s, pts, seed, std::size_t(k8)), &p9 = at(s, pts, seed, std::size_t(k9)),
+                          &p95 = at(s, pts, seed, std::size_t(k95));
+        // Seeds whose panels are ordered as the paper's (0.95 largest, then 0.8, then 0.9).
+        n_090_lowest += (p9.sigma_max < p8.sigma_max && p9.sigma_max < p95.sigma_max);
+        n_095_highest += (p95.sigma_max > p8.sigma_max && p95.sigma_max > p9.sigma_max);
+        const double a = p8.v_rms, b = p9.v_rms, c = p95.v_rms;
+        ordered += (a > b && b > c);
+        reversed += (a < b && b < c);
+        stress_order += (c > a && a > b);
+        r89 += std::log(a / b) / ns;
+        r895 += std::log(a / c) / ns;
+    }
+    res.scalar("seeds_sigma_max_090_lowest", n_090_lowest / ns, "1",
+               "fraction of seeds where sigma_max(0.9) is the smallest of the three (as in the paper)");
+    res.scalar("seeds_sigma_max_095_highest", n_095_highest / ns, "1",
+               "fraction of seeds where sigma_max(0.95) is the largest of the three (as in the paper)");
+    res.scalar("seeds_v_rms_order_080_090_095", ordered / ns, "1",
+               "fraction of seeds with v_rms(0.8) > v_rms(0.9) > v_rms(0.95) at t_end (the paper's arrow factors 1, 3, 7)");
+    res.scalar("seeds_v_rms_order_reversed", reversed / ns, "1",
+               "fraction of seeds with v_rms(0.8) < v_rms(0.9) < v_rms(0.95) (homogeneous cooling: v ~ 1/((1 - r^2) t))");
+    res.scalar("seeds_v_rms_order_095_080_090", stress_order / ns, "1",
+               "fraction of seeds with v_rms(0.95) > v_rms(0.8) > v_rms(0.9), the order of the paper's sigma_max values 1.56 > 0.894 > 0.568");
+    res.scalar("v_rms_ratio_080_over_090_geomean", std::exp(r89), "1", "v_rms(0.8)/v_rms(0.9) at t_end, geometric mean over seeds (paper's factors: 3)");
+    res.scalar("v_rms_ratio_080_over_095_geomean", std::exp(r895), "1", "v_rms(0.8)/v_rms(0.95) at t_end, geometric mean over seeds (paper's factors: 7)");
+}
+
+// Fig. 5 left: two co-rotating eddies with small stresses inside.
+void fig5_eddies(Result& res, const ImpactSpec& s, const std::vector<PointResult>& pts) {
+    const double ns = static_cast<double>(s.n_seeds());
+    for (std::size_t k = 0; k < s.n_r(); ++k) {
+        const std::string lb = r_label(s, k);
+        double found = 0, e_sum = 0, mean = 0, m2 = 0, cnt = 0;
+        std::vector<double> ratios, all; // significant pairs; every seed's strongest pair
+        for (std::size_t seed = 0; seed < s.n_seeds(); ++seed) {
+            const PointResult& pr = at(s, pts, seed, k);
+            e_sum += pr.eddy_strength / ns;
+            if (pr.eddy_beats >= s.eddy_significance) {
+                found += 1;
+                if (std::isfinite(pr.eddy_core_pressure_ratio)) ratios.push_back(pr.eddy_core_pressure_ratio);
+            }
+            const double x = pr.eddy_core_pressure_ratio;
+            if (std::isfinite(x)) { mean += x; m2 += x * x; cnt += 1; all.push_back(x); }
+        }
+        res.scalar("eddy_pair_fraction_" + lb, found / ns, "1",
+                   "fraction of seeds whose strongest co-rotating eddy pair at t_end beats at least eddy_significance of its velocity shuffles");
+        res.scalar("eddy_strength_mean_" + lb, e_sum, "1", "eddy-pair strength E at t_end, mean over seeds");
+        res.scalar("eddy_core_pressure_ratio_median_" + lb, median(ratios), "1",
+                   "mean Eq. (9) pressure (0.5-1 s) of the stress cells in the two eddy cores over that of the other cells, median over seeds with a significant pair");
+        res.scalar("eddy_core_pressure_ratio_seeds_" + lb, static_cast<double>(ratios.size()), "1", "seeds entering that median");
+        res.scalar("eddy_core_pressure_ratio_median_all_" + lb, median(all), "1",
+                   "the same ratio for every seed's strongest co-rotating pair, significant or not, median over seeds");
+        // Sec. 3.2's stress statements (Fig. 5 bottom): anisotropy outside the eddy cores over inside,
+        // and whether the cells' principal axes look random (Rayleigh test at the 1 % level:
+        // P(S > s) = exp(-n s^2) for n random axes, so s_1% = sqrt(ln(100) / n)).
+        std::vector<double> aniso_ratio;
+        double aniso = 0, order = 0, random_axes = 0, flow_thermal = 0;
+        const double s_1pc = random_axes_level(static_cast<std::size_t>(s.stress_cells * s.stress_cells), 0.01);
+        for (std::size_t seed = 0; seed < s.n_seeds(); ++seed) {
+            const PointResult& pr = at(s, pts, seed, k);
+            if (std::isfinite(pr.eddy_outside_anisotropy_ratio)) aniso_ratio.push_back(pr.eddy_outside_anisotropy_ratio);
+            aniso += pr.stress_anisotropy / ns;
+            order += pr.stress_axes_order / ns;
+            random_axes += (pr.stress_axes_order < s_1pc) / ns;
+            flow_thermal += pr.flow_fraction / (1.0 - pr.flow_fraction) / ns;
+        }
+        res.scalar("eddy_outside_anisotropy_ratio_median_all_" + lb, median(aniso_ratio), "1",
+                   "stress anisotropy (|s1| - |s2|)/(|s1| + |s2|) of the cells outside the strongest co-rotating pair's cores over that inside, median over seeds");
+        res.scalar("stress_anisotropy_mean_" + lb, aniso, "1", "stress anisotropy (|s1| - |s2|)/(|s1| + |s2|) averaged over cells and seeds");
+        res.scalar("stress_axes_order_mean_" + lb, order, "1",
+                   "alignment |<exp(2 i theta)>| of the cells' major compressive axes, mean over seeds (random axes: sqrt(pi/(4 n_cells)))");
+        res.scalar("stress_axes_random_fraction_" + lb, random_axes, "1",
+                   "fraction of seeds whose principal axes pass as random (alignment below the Rayleigh 1 % level sqrt(ln 100 / n_cells))");
+        res.scalar("flow_to_thermal_mean_" + lb, flow_thermal, "1",
+                   "K of the cell-averaged flow over the rest of K (flow_fraction / (1 - flow_fraction)) at t_end, mean over seeds");
+        if (cnt >= 2) {
+            mean /= cnt;
+            res.scalar("eddy_core_pressure_ratio_mean_all_" + lb, mean, "1", "its mean over seeds");
+            res.scalar("eddy_core_pressure_ratio_sem_all_" + lb, std::sqrt(std::max(0.0, (m2 / cnt - mean * mean) * cnt / (cnt - 1)) / cnt), "1",
+                       "standard error of that mean (seed scatter)");
+        }
+    }
+}
+
+// Cooling curves of the figure runs, for reference: Eq. (18) with t0 of Eq. (19) as printed.
+void cooling_curves(Result& res, const ImpactSpec& s, const std::vector<PointResult>& pts) {
+    Table& tk = res.table("cooling", "K(t)/K(0) of the figure runs (seed 0) and Eq. (18) with t0 from Eq. (19)");
+    tk.add("t", "s").values = pts[0].k_t;
+    for (std::size_t k = 0; k < s.n_r(); ++k) {
+        const std::string lb = r_label(s, k);
+        const double t0h = theory::luding_eq19_t0_printed(s.restitutions[k], s.rho, s.d, s.vbar);
+        std::vector<double> kk, haff;
+        for (std::size_t i = 0; i < pts[k].k_t.size(); ++i) {
+            kk.push_back(pts[k].k_val[i] / pts[k].k0);
+            haff.push_back(std::pow(1.0 + pts[k].k_t[i] / t0h, -2.0));
+        }
+        tk.add({{"K_over_K0_" + lb, "1", kk}, {"haff_" + lb, "1", haff}});
+        res.scalar("haff_t0_" + lb, t0h, "s", "t0 of Eq. (19) at rho, r and vbar");
+    }
+}
+
+} // namespace granrepro::experiments::impact_parameter_detail
