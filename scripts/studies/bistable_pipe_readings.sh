@@ -69,7 +69,7 @@ def steady(r):
 def checkpoint(d, en, k_index):
     """A pipe run still under way: its finished points from the sweep checkpoint. Point i of a
     sweep over kN_list x en is k_N number i // (2 len(en)), e_N = en[i // 2 % len(en)], i % 2 = 0
-    slow start, 1 fast start (experiments/bistable_pipe.cpp, tasks); outcome 0 steady, 1 free fall,
+    slow start, 1 fast start (experiments/bistable_pipe/bistable_pipe.cpp, make_tasks); outcome 0 steady, 1 free fall,
     2 unsettled; speeds negative downwards. Points not finished are missing."""
     import glob
     rows = {e: {} for e in GRID}

@@ -1,0 +1,278 @@
+// bistable-pipe (Fig. 6): the report: per k_N tables of the steady states, branches, v_crit
+// crossings, the near-wall area fraction, the estimates below Eq. (9) and the time series.
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <string>
+
+#include "analysis/curve_analysis.hpp"
+#include "data/parameter_set.hpp"
+#include "experiments/bistable_pipe/spec.hpp"
+
+namespace granrepro::experiments::bistable_pipe_detail {
+
+namespace {
+
+// The columns of one k_N's table of Fig. 6, per start (0 slow, 1 fast) over e_N, and the
+// construction's link for the slow start at the largest e_N.
+enum SteadyColumn { kV, kVLast, kOutcome, kTEnd, kBalance, kSigmaVx, kNdot, kDvy, kVConstruction, kImpactSlope,
+                    kContacts, kVyImpact, kVConstructionVxin, kReach, kBuildsPerStep, kXiSteady, kPhiWall, kColumns };
+struct KColumns { std::vector<double> col[2][kColumns]; double link_top = NAN; };
+// Over all runs: the worst Eq. (9) balance, the smallest impact-curve slope, steady states.
+struct Totals { double worst_balance = 0, min_slope = INFINITY; int steady = 0; };
+
+// One k_N of Fig. 6: both starts against e_N, with outcomes, Eq. (9) and the construction.
+KColumns table_k(Result& r, const BistablePipeSpec& b, const PipeSpec& base, std::size_t ki, const std::string& kt,
+                 const std::vector<RunResult>& results, Totals& tot) {
+    const auto& es = b.eN_list;
+    KColumns c;
+    for (std::size_t ei = 0; ei < es.size(); ++ei)
+        for (int f = 0; f < 2; ++f) {
+            const RunResult& rr = results[(ki * es.size() + ei) * 2 + std::size_t(f)];
+            const bool ok = rr.outcome == kSteady;
+            const double bal = ok ? rr.ndot * rr.dvy / base.geo.gravity : NAN;
+            const Construction cons = construct(base, b.kN_list[ki], es[ei], rr);
+            if (f == 0 && ei + 1 == es.size()) c.link_top = cons.link;
+            const double row[kColumns] = {ok ? -rr.v_mean : NAN, -rr.v_final, double(rr.outcome),
+                                          ok ? rr.t_steady : rr.t_final, bal, ok ? rr.sigma_vx : NAN,
+                                          ok ? rr.ndot : NAN, ok ? rr.dvy : NAN, cons.v, cons.slope, cons.contacts,
+                                          ok ? rr.vy_in : NAN, cons.v_vxin, cons.reach,
+                                          double(rr.list_builds) / double(std::max(1L, rr.steps)), ok ? rr.xi_steady : NAN,
+                                          ok ? rr.phi_wall : NAN};
+            for (int j = 0; j < kColumns; ++j) c.col[f][j].push_back(row[j]);
+            if (ok) {
+                ++tot.steady;
+                tot.worst_balance = std::max(tot.worst_balance, std::abs(bal - 1));
+                if (std::isfinite(cons.slope)) tot.min_slope = std::min(tot.min_slope, cons.slope);
+            }
+        }
+    Table& t = r.table("steady_" + kt, "steady-state mean velocity against e_N (NaN: no steady state)");
+    t.add("e_N", "1").values = es;
+    const char* names[kColumns] = {"v", "v_last", "outcome", "t_end", "eq9_balance", "sigma_vx", "ndot", "dvy",
+                                   "v_construction", "impact_slope", "impact_contacts", "vy_impact",
+                                   "v_construction_vxin", "construction_reach", "list_builds_per_step", "xi_max_steady",
+                                   "phi_wall"};
+    const char* units[kColumns] = {"m/s", "m/s", "1", "s", "1", "m/s", "1/s", "m/s", "m/s", "s", "1", "m/s", "m/s", "1", "1", "1", "1"};
+    for (int f = 0; f < 2; ++f)
+        for (int j = 0; j < kColumns; ++j) t.add(std::string(names[j]) + (f ? "_fast" : "_slow"), units[j]).values = c.col[f][j];
+    return c;
+}
+
+// The steady states of one k_N against v_crit(k_N): the slow branch (normal regime, below v_crit),
+// the fast one, and where both coexist (bistability).
+void report_states_k(Result& r, const std::vector<double>& es, const std::string& kt, const KColumns& c, double v_crit) {
+    const auto &slow = c.col[0], &fast = c.col[1];
+    // A slow start that settles above v_crit has joined the fast branch and does not count.
+    double e_lowest_slow = NAN;
+    int fast_steady = 0;
+    for (std::size_t ei = 0; ei < es.size(); ++ei) {
+        if (slow[kV][ei] < v_crit) e_lowest_slow = std::isnan(e_lowest_slow) ? es[ei] : std::min(e_lowest_slow, es[ei]);
+        // A fast start that falls back to the slow branch is not a state of the fast branch.
+        fast_steady += fast[kOutcome][ei] == double(kSteady) && fast[kV][ei] >= v_crit;
+    }
+    r.scalar("impact_link_top_" + kt, c.link_top, "1",
+             "slow start at the largest e_N: Δv_y of the wall's impact curve at the measured mean impact velocities "
+             "over the measured Δv_y per wall impact");
+    r.scalar("slow_branch_lowest_eN_" + kt, e_lowest_slow, "1",
+             "smallest e_N whose slow start reached a steady state in the normal regime (below v_crit)");
+    r.scalar("fast_branch_fraction_" + kt, double(fast_steady) / double(es.size()), "1",
+             "fraction of e_N values whose fast start reached a steady state above v_crit (the fast branch)");
+    r.scalar("v_slow_top_" + kt, slow[kV].back(), "m/s", "steady speed of the slow start at the largest e_N");
+    r.scalar("v_fast_top_" + kt, fast[kV].back(), "m/s", "steady speed of the fast start at the largest e_N");
+    // Bistability: at the e_N > 0.85 of the grid, the slow start reaches a steady state in the
+    // normal regime (below v_crit) and the fast start one above it: two coexisting steady states.
+    int bistable = 0, above_085 = 0;
+    double sx_ratio = NAN;
+    for (std::size_t ei = 0; ei < es.size(); ++ei) {
+        if (!(es[ei] > 0.85)) continue;
+        ++above_085;
+        if (!(slow[kV][ei] < v_crit && fast[kV][ei] >= v_crit)) continue; // NaN compares false
+        ++bistable;
+        sx_ratio = fast[kSigmaVx][ei] / slow[kSigmaVx][ei];
+    }
+    r.scalar("bistable_fraction_" + kt, above_085 ? double(bistable) / above_085 : NAN, "1",
+             "fraction of the e_N > 0.85 of the grid where a slow (below v_crit) and a fast (above) steady state coexist");
+    r.scalar("bistable_sigma_vx_ratio_" + kt, sx_ratio, "1", "σ_vx of the fast over the slow state at the largest bistable e_N");
+    r.scalar("normal_branch_top_" + kt, slow[kV].back() < v_crit ? 1.0 : 0.0, "1",
+             "1 if the slow start at the largest e_N reaches a steady state below v_crit = v_crit_2000 sqrt(k_N/2000 N/m)");
+    r.scalar("bistable_eN_count_" + kt, bistable, "1",
+             "e_N > 0.85 of the grid at which a slow (below v_crit) and a fast (above) steady state coexist");
+}
+
+// One regime of a k_N: states faster than v_crit(k_N) (Fig. 3's maximum, scaled with sqrt(k_N) by
+// Eq. 8) are the fast branch whichever start reached them. Fig. 5 says the fast branch is the
+// emergency brake (>= 2 wall grains per impact), the slow one the normal regime. And the paper's
+// construction against the measured speed.
+void report_branch_k(Result& r, const std::vector<double>& es, const std::string& kt, const KColumns& c, double v_crit,
+                     bool fast_branch) {
+    double contacts = 0, ratio = 0, ratio_in = 0, reach = 0;
+    int nc = 0, nr = 0, nr_in = 0, nreach = 0;
+    std::vector<double> v_ln_e; // fast branch: v |ln e_N| per state
+    for (const auto& col : c.col)
+        for (std::size_t ei = 0; ei < es.size(); ++ei) {
+            const double v = col[kV][ei];
+            if (std::isnan(v) || (v > v_crit) != fast_branch) continue;
+            if (std::isfinite(col[kContacts][ei])) { contacts += col[kContacts][ei]; ++nc; }
+            if (std::isfinite(col[kVConstruction][ei])) { ratio += std::log(col[kVConstruction][ei] / v); ++nr; }
+            if (std::isfinite(col[kVConstructionVxin][ei])) { ratio_in += std::log(col[kVConstructionVxin][ei] / v); ++nr_in; }
+            if (std::isfinite(col[kReach][ei])) { reach += std::log(col[kReach][ei]); ++nreach; }
+            if (fast_branch) v_ln_e.push_back(v * std::abs(std::log(es[ei])));
+        }
+    const std::string name = fast_branch ? "fast" : "slow";
+    if (fast_branch) {
+        // The fast branch's speed against 1/|ln e_N| ∝ 1/gamma_N: how much of its braking is the
+        // dashpot's speed-independent friction impulse (brake-failure's high_v_plateau).
+        double mean = 0, sd = 0;
+        for (double x : v_ln_e) mean += x / double(v_ln_e.size());
+        for (double x : v_ln_e) sd += (x - mean) * (x - mean) / double(std::max<std::size_t>(1, v_ln_e.size() - 1));
+        r.scalar("fast_branch_v_ln_eN_" + kt, v_ln_e.empty() ? NAN : mean, "m/s",
+                 "mean of v |ln e_N| over the fast branch's states (constant if v ∝ 1/gamma_N)");
+        r.scalar("fast_branch_v_ln_eN_cv_" + kt, v_ln_e.size() > 1 ? std::sqrt(sd) / mean : NAN, "1",
+                 "its coefficient of variation over the states");
+    }
+    r.scalar(name + "_branch_states_" + kt, nc, "1", "steady states on the " + name + " branch (either start)");
+    r.scalar(name + "_branch_contacts_" + kt, nc ? contacts / nc : NAN, "1",
+             "mean wall grains touched per impact at the measured impact velocities, " + name + " branch");
+    r.scalar(name + "_branch_construction_ratio_" + kt, nr ? std::exp(ratio / nr) : NAN, "1",
+             "geometric mean of the construction's speed (v_x^i = σ_vx) over the measured one, " + name +
+                 " branch; NaN if no state has a stable intersection");
+    r.scalar(name + "_branch_construction_found_" + kt, nc ? double(nr) / nc : NAN, "1",
+             "fraction of the " + name + " branch's states for which the construction (v_x^i = σ_vx) finds a "
+             "stable intersection within 0.1-3 times the measured speed");
+    r.scalar(name + "_branch_construction_ratio_vxin_" + kt, nr_in ? std::exp(ratio_in / nr_in) : NAN, "1",
+             "the same with v_x^i = the measured mean |v_x| of the wall impacts, " + name + " branch");
+    r.scalar(name + "_branch_construction_reach_" + kt, nreach ? std::exp(reach / nreach) : NAN, "1",
+             "geometric mean over the states of max Δv_y(v_y^i; v_x^i = σ_vx) / (g/ṅ): below 1 the paper's "
+             "association gives no intersection, " + name + " branch");
+}
+
+// Fig. 6 over every k_N, and what the paper says across them.
+// "If the flow ... becomes higher than v_crit, the system will accelerate to the emergency-brake
+// steady state" (Summary): of the runs of one k_N whose mean speed ever exceeded v_crit, the
+// fraction that ended above it (a fast steady state, or still faster than v_crit at the end).
+void report_vcrit_crossings_k(Result& r, const std::string& kt, std::vector<RunResult>::const_iterator runs,
+                              std::size_t count, double v_crit) {
+    int crossed = 0, ended_fast = 0;
+    for (std::size_t j = 0; j < count; ++j) {
+        const RunResult& rr = runs[long(j)];
+        // "Becomes faster": starts below v_crit (a fast start begins above it and may only fall back).
+        if (rr.v.empty() || -rr.v.front() > v_crit || -*std::min_element(rr.v.begin(), rr.v.end()) <= v_crit) continue;
+        ++crossed;
+        ended_fast += (rr.outcome == kSteady ? -rr.v_mean : -rr.v_final) > v_crit;
+    }
+    r.scalar("vcrit_crossings_" + kt, crossed, "1", "runs that started below v_crit and whose mean speed exceeded it at some sample");
+    r.scalar("vcrit_crossings_end_fast_" + kt, crossed ? double(ended_fast) / crossed : NAN, "1",
+             "fraction of those runs that ended above v_crit (fast steady state, or faster than v_crit at the end)");
+}
+
+// Eq. (9)'s argument: the volume fraction near the wall is "essentially a constant for fixed global
+// volume fraction". Over every steady state (all k_N, both starts, one global phi): its spread.
+void report_near_wall_phi(Result& r, const std::vector<RunResult>& results) {
+    std::vector<double> pw;
+    for (const RunResult& rr : results)
+        if (rr.outcome == kSteady && std::isfinite(rr.phi_wall)) pw.push_back(rr.phi_wall);
+    const auto [lo, hi] = std::minmax_element(pw.begin(), pw.end());
+    const double mean = pw.empty() ? NAN : std::accumulate(pw.begin(), pw.end(), 0.0) / double(pw.size());
+    r.scalar("near_wall_phi_mean", mean, "1", "mean area fraction of the layer one diameter inside the wall crests, steady states");
+    r.scalar("near_wall_phi_spread", pw.size() >= 2 ? (*hi - *lo) / mean : NAN, "1",
+             "(largest - smallest) / mean of that near-wall area fraction over the steady states");
+}
+
+} // namespace
+
+
+void report_fig6(Result& r, const BistablePipeSpec& b, const PipeSpec& base, const std::vector<RunResult>& results) {
+    const auto &ks = b.kN_list, &es = b.eN_list;
+    Totals tot;
+    for (std::size_t ki = 0; ki < ks.size(); ++ki) { // one row of the figure
+        const std::string kt = "k" + number_text(ks[ki]);
+        const KColumns c = table_k(r, b, base, ki, kt, results, tot);
+        const double vc = v_crit(b, ks[ki]);
+        report_states_k(r, es, kt, c, vc);
+        for (bool fast : {false, true}) report_branch_k(r, es, kt, c, vc, fast);
+        report_vcrit_crossings_k(r, kt, results.begin() + long(ki * es.size() * 2), es.size() * 2, vc);
+        double xi = 0;
+        for (std::size_t j = 0; j < es.size() * 2; ++j) xi = std::max(xi, results[ki * es.size() * 2 + j].xi_max);
+        r.scalar("xi_max_over_d_" + kt, xi, "1",
+                 "largest overlap of any contact over all runs at this k_N, over the smaller diameter (Eq. 4's xi_max)");
+        double xs = NAN;
+        for (std::size_t j = 0; j < es.size() * 2; ++j)
+            if (const double x = results[ki * es.size() * 2 + j].xi_steady; std::isfinite(x)) xs = std::isnan(xs) ? x : std::max(xs, x);
+        r.scalar("xi_max_steady_over_d_" + kt, xs, "1", "the same over the steady states only (NaN: none)");
+    }
+    report_near_wall_phi(r, results);
+    r.scalar("steady_runs", tot.steady, "1", "runs that reached a steady state");
+    // Softer grains brake earlier: the k_N = 200 fast branch against the k_N = 2000 one at the same
+    // e_N (geometric mean of the speed ratio over the e_N where both fast starts settled above v_crit).
+    const auto k_lo = std::find(ks.begin(), ks.end(), 200.0), k_mid = std::find(ks.begin(), ks.end(), 2000.0);
+    if (k_lo != ks.end() && k_mid != ks.end()) {
+        const std::size_t lo_i = std::size_t(k_lo - ks.begin()), mid_i = std::size_t(k_mid - ks.begin());
+        double lr = 0;
+        int nr = 0;
+        for (std::size_t ei = 0; ei < es.size(); ++ei) {
+            const RunResult& lo = results[(lo_i * es.size() + ei) * 2 + 1];
+            const RunResult& mid = results[(mid_i * es.size() + ei) * 2 + 1];
+            // Fast-branch states only: a fast start that fell back to the slow branch is not one.
+            if (lo.outcome != kSteady || mid.outcome != kSteady || -lo.v_mean < v_crit(b, 200.0) ||
+                -mid.v_mean < v_crit(b, 2000.0))
+                continue;
+            lr += std::log(lo.v_mean / mid.v_mean);
+            ++nr;
+        }
+        r.scalar("fast_branch_k200_over_k2000", nr ? std::exp(lr / nr) : NAN, "1",
+                 "geometric mean of v_fast(k_N = 200) / v_fast(k_N = 2000) over the e_N where both settled on the fast branch");
+    }
+    r.scalar("eq9_worst_deviation", tot.steady ? tot.worst_balance : NAN, "1", "largest |ṅ Δv_y / g - 1| over steady runs (Eq. 9)");
+    r.scalar("impact_slope_min", std::isfinite(tot.min_slope) ? tot.min_slope : NAN, "s",
+             "smallest slope dΔv_y/dv of the impact curve at a steady state's speed (Eq. 9 argument: > 0)");
+    if (b.length_check > 0) {
+        const RunResult& at_length = results[((ks.size() > 1 ? 1 : 0) * es.size() + es.size() - 1) * 2];
+        const RunResult& at_check = results.back();
+        r.scalar("length_check_ratio", (at_length.outcome == kSteady && at_check.outcome == kSteady) ? at_check.v_mean / at_length.v_mean : NAN, "1",
+                 "steady speed at length_check over that at length (same k_N, e_N, slow start)");
+    }
+}
+
+// The crude estimates below Eq. (9), over windows of every run: ṅ ∝ σ_vx, and ṅ Δv_y grows
+// about quadratically with Δv_y.
+void report_eq9_windows(Result& r, const std::vector<Task>& tasks, const std::vector<RunResult>& results) {
+    std::vector<double> wk, wn, wd, ws, wv, lx, ly, ld, lnd; // every window; those for the power-law fits
+    for (std::size_t i = 0; i < tasks.size(); ++i)
+        for (std::size_t j = 0; j < results[i].w_ndot.size(); ++j) {
+            const double n = results[i].w_ndot[j], d = results[i].w_dvy[j], sx = results[i].w_sx[j];
+            wk.push_back(tasks[i].k);
+            wn.push_back(n);
+            wd.push_back(d);
+            ws.push_back(sx);
+            wv.push_back(results[i].w_v[j]);
+            if (n > 0 && sx > 0 && d > 0) {
+                lx.push_back(sx);
+                ly.push_back(n);
+                ld.push_back(d);
+                lnd.push_back(n * d);
+            }
+        }
+    Table& tw = r.table("eq9_windows", "ṅ, Δv_y, σ_vx and speed over windows of eq9_window, every run");
+    tw.add({{"k_N", "N/m", wk}, {"ndot", "1/s", wn}, {"dvy", "m/s", wd}, {"sigma_vx", "m/s", ws}, {"v", "m/s", wv}});
+    const auto a = lx.size() >= 10 ? fit_power_law(lx, ly, 0, INFINITY) : PowerLawFit{NAN, NAN, 0};
+    const auto c = ld.size() >= 10 ? fit_power_law(ld, lnd, 0, INFINITY) : PowerLawFit{NAN, NAN, 0};
+    const auto sd = ld.size() >= 10 ? fit_power_law(ld, lx, 0, INFINITY) : PowerLawFit{NAN, NAN, 0};
+    r.scalar("ndot_vs_sigma_vx_exponent", a.exponent, "1", "exponent of ṅ ∝ σ_vx^a over all windows");
+    r.scalar("ndot_dvy_vs_dvy_exponent", c.exponent, "1", "exponent of ṅ Δv_y ∝ Δv_y^b over all windows");
+    r.scalar("sigma_vx_vs_dvy_exponent", sd.exponent, "1", "exponent of σ_vx ∝ Δv_y^c over all windows");
+    r.scalar("eq9_windows", double(lx.size()), "1", "windows in those fits");
+}
+
+void report_series(Result& r, const BistablePipeSpec& b, const std::vector<Task>& tasks, const std::vector<RunResult>& results) {
+    for (std::size_t i = 0; i < tasks.size(); ++i) {
+        const bool length_check = b.length_check > 0 && i + 1 == tasks.size();
+        const std::string name = "series_k" + number_text(tasks[i].k) + "_e" + number_text(tasks[i].e) +
+                                 (tasks[i].fast ? "_fast" : "_slow") + (length_check ? "_length_check" : "");
+        Table& ts = r.table(name, "mean velocity and rms v_x against time");
+        ts.add("t", "s").values = results[i].t;
+        std::vector<double> speed(results[i].v.size());
+        for (std::size_t j = 0; j < speed.size(); ++j) speed[j] = -results[i].v[j];
+        ts.add({{"v_down", "m/s", speed}, {"sigma_vx", "m/s", results[i].sx}});
+    }
+}
+} // namespace granrepro::experiments::bistable_pipe_detail

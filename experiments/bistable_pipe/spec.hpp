@@ -1,0 +1,100 @@
+// bistable-pipe (Fig. 6): the spec, a run's outcome, the sweep's tasks, and what the files share.
+#pragma once
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "data/result.hpp"
+#include "scenarios/pipe_setup.hpp"
+
+namespace granrepro::experiments::bistable_pipe_detail {
+
+// Units and ranges: experiments/bistable-pipe.toml. Each run's PipeSpec is built from this.
+struct BistablePipeSpec {
+    double width = 0, length = 0, length_check = 0, d_wall = 0, wall_spacing = 0; // [m]; length_check 0: off
+    double d_mean = 0, polydispersity = 0, m_mean = 0, phi = 0, mu = 0, g = 0;    // d_mean [m], m_mean [kg], g [m/s^2]
+    std::string friction_normal;                                                  // the reading of Eq. (2)
+    std::vector<double> kN_list, eN_list;                                         // [N/m], [1]
+    double slow_v0 = 0, fast_v0 = 0, agitation = 0, v_crit_2000 = 0, v_abort = 0; // [m/s]
+    double steps_per_contact = 0, skin = 0, budget_tcol = 0, budget_min = 0; // skin [m]; budget in contact durations t_col (Eq. 4); [s]
+    double window = 0, t_average = 0, sample_dt = 0, eq9_window = 0, drift_tol = 0; // [s]; drift_tol [m/s^2]
+    double hold_distance = 0, agitation_vcrit = 0; // [m]: a steady state holds while falling this far; [1]
+    template <class V> void fields(V&& v) {
+        v("width", width); v("length", length); v("length_check", length_check); v("d_wall", d_wall); v("phi", phi);
+        v("wall_spacing", wall_spacing); v("d_mean", d_mean); v("polydispersity", polydispersity); v("m_mean", m_mean);
+        v("mu", mu); v("g", g); v("friction_normal", friction_normal); v("kN_list", kN_list); v("eN_list", eN_list);
+        v("slow_v0", slow_v0); v("fast_v0", fast_v0); v("agitation", agitation); v("v_crit_2000", v_crit_2000);
+        v("v_abort", v_abort); v("steps_per_contact", steps_per_contact); v("skin", skin); v("budget_tcol", budget_tcol); v("budget_min", budget_min);
+        v("window", window); v("t_average", t_average); v("sample_dt", sample_dt); v("eq9_window", eq9_window);
+        v("drift_tol", drift_tol); v("hold_distance", hold_distance);
+        v("agitation_vcrit", agitation_vcrit);
+    }
+};
+
+// The engine's spec at the base length; k_N, e_N, the start and the stream are set per run.
+PipeSpec pipe_spec(const BistablePipeSpec& b, std::uint64_t seed);
+
+// v_crit of Eq. (8) at k_N, from Fig. 3's maximum at 2000 N/m (v_crit ∝ sqrt(k_N)) [m/s].
+inline double v_crit(const BistablePipeSpec& b, double k) { return b.v_crit_2000 * std::sqrt(k / 2000.0); }
+
+// The run's time budget: budget_tcol free-wall contact durations (Eq. 4) at its own k_N, e_N, and
+// at least budget_min: the stiffest pipe's flows take seconds to settle, not contact durations.
+inline double time_budget(const BistablePipeSpec& b, double k, double e) {
+    return std::max(b.budget_tcol * pipe_law(k, e, b.m_mean).collision_time(b.m_mean), b.budget_min);
+}
+
+enum Outcome { kSteady = 0, kFreeFall = 1, kUnsettled = 2 };
+
+struct RunResult {
+    int outcome = kUnsettled;
+    double t_steady = NAN, v_mean = NAN, v_final = NAN, t_final = NAN, accel_final = NAN;
+    double sigma_vx = NAN, ndot = NAN, dvy = NAN, vx_in = NAN, vy_in = NAN;
+    long grains = 0, steps = 0, list_builds = 0; // Verlet-list builds: the cost of fast flows (issue 26)
+    double xi_max = 0;        // largest overlap over the run, relative to the smaller diameter [1]
+    double xi_steady = NAN;   // the same over the steady state [1]
+    double phi_wall = NAN;    // near-wall area fraction over the steady state [1]
+    std::vector<double> t, v, sx, pw, xq; // samples: time [s], mean v_y [m/s], rms v_x [m/s], near-wall area
+                                          // fraction [1], largest overlap / smaller diameter since the last sample [1]
+    std::vector<double> w_ndot, w_dvy, w_sx, w_v; // windows (Eq. 9 estimates): ṅ, Δv_y, σ_vx, v
+    template <class V> void fields(V&& f) {
+        f("outcome", outcome); f("t_steady", t_steady); f("v_mean", v_mean); f("v_final", v_final);
+        f("t_final", t_final); f("accel_final", accel_final); f("sigma_vx", sigma_vx); f("ndot", ndot); f("dvy", dvy);
+        f("vx_in", vx_in); f("vy_in", vy_in); f("grains", grains);
+        f("steps", steps); f("list_builds", list_builds); f("xi_max", xi_max); f("xi_steady", xi_steady); f("phi_wall", phi_wall);
+        f("t", t); f("v", v); f("sx", sx); f("pw", pw); f("xq", xq);
+        f("w_ndot", w_ndot); f("w_dvy", w_dvy); f("w_sx", w_sx); f("w_v", w_v);
+    }
+};
+
+// One sweep point: a pipe run at k_N, e_N from a slow or a fast start, at a pipe length.
+struct Task { double k, e; bool fast; double length; };
+
+// compute.cpp: one start of the pipe until steady, free fall, v_abort or the end of its budget.
+RunResult run_pipe(const PipeSpec& s, double t_budget, double eq9_window, double hold_distance);
+
+// The paper's construction (text below Eq. 9): on the impact curve Δv_y(v_y^i) of the wall, the
+// speed where Δv_y = g/ṅ with positive slope (a stable intersection) nearest to the measured mean
+// speed; NaN if there is none in 0.1-3 times it. Done at two v_x^i: σ_vx (the paper's association)
+// and the measured mean |v_x| of the wall impacts (grains reaching the wall are the faster ones).
+// reach = max Δv_y(v_y^i; σ_vx) / (g/ṅ) over the grid: below 1 the paper's association cannot give
+// an intersection at all.
+struct Construction {
+    double v = NAN;        // predicted steady speed at v_x^i = σ_vx [m/s]
+    double v_vxin = NAN;   // predicted steady speed at v_x^i = measured mean impact |v_x| [m/s]
+    double reach = NAN;    // max over the grid of Δv_y(σ_vx) / (g/ṅ) [1]
+    double slope = NAN;    // d Δv_y / d v at the measured speed, v_x^i = σ_vx [s] (> 0: stable, Eq. 9 argument)
+    double contacts = NAN; // wall grains touched per impact at the measured impact velocities (Fig. 5)
+    double link = NAN;     // the impact curve's Δv_y at the measured impact velocities over the measured Δv_y
+};
+// compute.cpp: the construction for one run (impact shots on the pipe's wall row); NaN where there
+// is no steady state.
+Construction construct(const PipeSpec& base, double k, double e, const RunResult& rr);
+
+// report.cpp: Fig. 6 over every k_N, the estimates below Eq. (9), and every run's time series.
+void report_fig6(Result& r, const BistablePipeSpec& b, const PipeSpec& base, const std::vector<RunResult>& results);
+void report_eq9_windows(Result& r, const std::vector<Task>& tasks, const std::vector<RunResult>& results);
+void report_series(Result& r, const BistablePipeSpec& b, const std::vector<Task>& tasks, const std::vector<RunResult>& results);
+
+} // namespace granrepro::experiments::bistable_pipe_detail
