@@ -1,0 +1,62 @@
+// brake-failure's spec, its sweep's shared inputs and outcome, and what its files share.
+#pragma once
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "analysis/curve_analysis.hpp"
+#include "data/result.hpp"
+#include "models/hertz_kuwabara_kono.hpp"
+#include "models/linear_spring_dashpot.hpp"
+#include "scenarios/impact_shot.hpp"
+
+namespace granrepro::experiments::brake_failure_detail {
+
+struct BrakeFailureSpec : ImpactShotSpec {
+    double offset = 0;             // flight line's distance from the wall grain's centre [m]
+    double vx_i = 0;               // initial speed towards the wall [m/s]
+    double vy_min = 0, vy_max = 0; // the figure's v_y^i range [m/s]
+    int n_vy = 0;
+    double fine_factor = 0;        // the Δt check runs at dt / fine_factor
+    std::vector<double> betas;     // k' = beta k_N
+    double hkk_xi_ref = 0;         // overlap at which HKK matches the linear law [m]
+    template <class V> void fields(V&& v) {
+        ImpactShotSpec::fields(v);
+        v("offset", offset); v("vx_i", vx_i); v("vy_min", vy_min); v("vy_max", vy_max); v("n_vy", n_vy);
+        v("fine_factor", fine_factor); v("betas", betas); v("hkk_xi_ref", hkk_xi_ref);
+    }
+    // Half the chord y_c that the free grain's centre runs in contact on its straight path [m].
+    double half_chord() const { return std::sqrt(reach() * reach() - offset * offset); }
+};
+
+// The figure's law, time step and v_y^i grid, that grid extended to 10 vy_max, and HKK.
+struct Sweep {
+    LinearSpringDashpot law;
+    double dt;
+    std::vector<double> vy, vy_ext;
+    HertzKuwabaraKono hkk;
+};
+
+struct Curve {
+    std::vector<double> dvy, dvx, dvy_shear;
+    std::vector<int> complete;
+    template <class V> void fields(V&& v) {
+        v("dvy", dvy), v("dvx", dvx), v("dvy_shear", dvy_shear), v("complete", complete);
+    }
+};
+
+// Curves: Fig. 3, dt / fine_factor, HKK, elastic limit (gamma_N = 0) and paper parameters both on
+// the extended grid, then per reading of Eq. (2) one curve on the figure's grid and one on the
+// extended grid (the study of which F_N enters Coulomb's law, panel (b)), then k' = beta k_N per beta.
+enum : std::size_t { kFig3, kFine, kHkk, kElasticExt, kPaperExt, kFirstReading,
+                     kFirstBeta = kFirstReading + 2 * kFrictionNormals.size() };
+
+
+// Reports (report.cpp).
+void report_head_on(Result& r, const ImpactShotSpec& s, const Sweep& w);
+Peak report_fig3(Result& r, const Sweep& w, const std::vector<Curve>& curves);
+void report_high_velocity(Result& r, const BrakeFailureSpec& s, const Sweep& w, const std::vector<Curve>& curves);
+void report_collapse(Result& r, const BrakeFailureSpec& s, const Sweep& w, const std::vector<Curve>& curves, const Peak& pk);
+void report_readings(Result& r, const BrakeFailureSpec& s, const Sweep& w, const std::vector<Curve>& curves);
+
+} // namespace granrepro::experiments::brake_failure_detail
