@@ -4,11 +4,15 @@
 # collisions elastic; the earlier study (pipe_arching_sensitivity.sh) stopped at 1e-5 s. Here
 # t_c = 3e-5, 1e-4, 3e-4 s, with friction kept and dropped in TC-elastic collisions, all at
 # g = 9.81 m/s^2 and d = 1 mm (neither tuned: v̄ at t = 0 is an outcome), plus the reference row
-# t_c = 1e-6 s (the default), friction kept, at g = 9.81 m/s^2.
+# t_c = 1e-6 s (the default), friction kept, at g = 9.81 m/s^2. Then, since no TC row opens a crack
+# or makes the arch vanish, the rough-wall rows: in the paper's model a wall's roughness is its
+# tangential restitution (Eq. 6: beta0_w = -1 smooth, +1 perfectly rough) and its friction mu_w;
+# beta0_w = 1 (the roughest wall the model has) at t_c = 1e-6 and 1e-4 s, and with mu_w = 0.7
+# (mu_w = 1 jams the column at 0.019 s, pipe_arching_sensitivity.sh).
 #
 #   scripts/studies/pipe_arching_tc.sh
 #
-# Environment: GRANREPRO (default ./build/granrepro), SEEDS (seeds per row, default 16),
+# Environment: GRANREPRO (default ./build/granrepro), SEEDS (seeds per row, default 32),
 # REF_SEEDS (seeds of the reference row, default 32), SCALE (default paper: t_relax = 0.3 s),
 # OUT (default out/studies/pipe-arching-tc), THREADS (default 1).
 # Every row is one run `granrepro pipe-arching --scale $SCALE --set n_seeds=$SEEDS --set g=9.81
@@ -27,7 +31,7 @@
 #     stronger wave; wall_share: side walls' share of the weight; tc_el: TC-elastic share.
 set -euo pipefail
 GRANREPRO=${GRANREPRO:-./build/granrepro}
-SEEDS=${SEEDS:-16}
+SEEDS=${SEEDS:-32}
 REF_SEEDS=${REF_SEEDS:-32}
 SCALE=${SCALE:-paper}
 OUT=${OUT:-out/studies/pipe-arching-tc}
@@ -43,6 +47,9 @@ rows=(
   "t_c=3e-5,drop|$SEEDS|t_c=3e-5 tc_friction=drop"
   "t_c=1e-4,drop|$SEEDS|t_c=1e-4 tc_friction=drop"
   "t_c=3e-4,drop|$SEEDS|t_c=3e-4 tc_friction=drop"
+  "rough:beta0_w=1,t_c=1e-6|$SEEDS|t_c=1e-6 tc_friction=keep beta0_w=1"
+  "rough:beta0_w=1,t_c=1e-4|$SEEDS|t_c=1e-4 tc_friction=keep beta0_w=1"
+  "rough:beta0_w=1,mu_w=0.7|$SEEDS|t_c=1e-6 tc_friction=keep beta0_w=1 mu_w=0.7"
 )
 
 # get SCALAR SUMMARY, fmt VALUE FORMAT
