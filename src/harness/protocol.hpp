@@ -113,7 +113,10 @@ Result run(const RunContext& ctx) {
     Swept<Outcome> out;
     out.resumed = swept.resumed;
     out.outcomes.reserve(swept.points.size());
-    for (const auto& j : swept.points) out.outcomes.push_back(from_json_fields<Outcome>(j));
+    // `verify` aggregates the stored outcomes of an earlier build, which may lack fields added since.
+    const bool stored = ctx.sweep.mode == SweepPlan::Mode::Verify;
+    for (const auto& j : swept.points)
+        out.outcomes.push_back(stored ? from_json_fields_lenient<Outcome>(j) : from_json_fields<Outcome>(j));
     return report<E>(spec, shared, out, ctx);
 }
 

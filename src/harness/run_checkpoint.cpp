@@ -1,6 +1,8 @@
 #include "harness/run_checkpoint.hpp"
+
 #include "harness/run_log.hpp"
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdio>
 #include <cstdlib>
@@ -31,10 +33,12 @@ std::string checkpoint_fingerprint(const RunContext& ctx) {
     return hex64(fnv1a64(j.dump())); // nlohmann::json keeps object keys sorted: canonical text
 }
 
-std::string sweep_point_inputs_hash(const RunContext& ctx, const std::string& label, long index, long count) {
+std::string sweep_point_inputs_hash(const RunContext& ctx, const std::string& label, long index, long count,
+                                    const std::vector<std::string>& without) {
     nlohmann::json values = nlohmann::json::object();
     const nlohmann::json all = ctx.params.to_json();
-    for (auto it = all.begin(); it != all.end(); ++it) values[it.key()] = it.value()["value"];
+    for (auto it = all.begin(); it != all.end(); ++it)
+        if (std::find(without.begin(), without.end(), it.key()) == without.end()) values[it.key()] = it.value()["value"];
     const nlohmann::json j = {{"parameters", values}, {"scale", to_string(ctx.scale)}, {"seed", ctx.seed},
                               {"sweep", label}, {"point", index}, {"points", count}};
     return "fnv1a64:" + hex64(fnv1a64(j.dump()));

@@ -18,6 +18,7 @@
 #include <filesystem>
 #include <functional>
 #include <string>
+#include <vector>
 
 #include "harness/experiment.hpp"
 #include "io/h5_file.hpp"
@@ -34,7 +35,9 @@ std::string checkpoint_fingerprint(const RunContext& ctx);
 // left out), "scale", "seed", "sweep": label, "point": index, "points": count}. A point's own
 // inputs (its k_N, e_N, random stream, ...) are a function of these by construction
 // (distributed_sweep.hpp), so equal fingerprints mean equal inputs to the same code.
-std::string sweep_point_inputs_hash(const RunContext& ctx, const std::string& label, long index, long count);
+// without: parameters left out (verify's parameters added after the results were made).
+std::string sweep_point_inputs_hash(const RunContext& ctx, const std::string& label, long index, long count,
+                                    const std::vector<std::string>& without = {});
 
 class RunCheckpoint {
 public:

@@ -6,13 +6,16 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <optional>
+#include <utility>
 #include <unistd.h>
 
 #include "core/input_error.hpp"
 #include "core/provenance.hpp"
 #include "harness/claims.hpp"
 #include "harness/experiment.hpp"
+#include "harness/run_checkpoint.hpp"
 #include "harness/runner.hpp"
+#include "data/toml_file.hpp"
 #include "io/h5_file.hpp"
 #include "io/result_writer.hpp"
 
@@ -37,6 +40,7 @@ struct Diff {
 struct Comparison {
     long compared = 0;
     std::vector<std::string> timing; // not compared
+    std::vector<std::string> added;  // fields the code writes now that the stored outcome lacks
     std::vector<Diff> diffs;
 };
 
@@ -65,9 +69,10 @@ void compare(const json& a, const json& b, const std::string& path, Comparison& 
             if (!b.contains(it.key())) c.diffs.push_back({p, shown(it.value()), "(absent)"});
             else compare(it.value(), b[it.key()], p, c);
         }
+        // A field the outcome gained after the results were made is new output, not a changed
+        // value: named, not counted as a difference (every stored value is still compared).
         for (auto it = b.begin(); it != b.end(); ++it)
-            if (!a.contains(it.key()) && !is_timing_name(it.key()))
-                c.diffs.push_back({path + "/" + it.key(), "(absent)", shown(it.value())});
+            if (!a.contains(it.key()) && !is_timing_name(it.key())) c.added.push_back(path + "/" + it.key());
         return;
     }
     if (a.is_array() && b.is_array()) {
@@ -97,6 +102,14 @@ bool report(const std::string& what, const Comparison& c, bool same_version) {
             if (std::find(names.begin(), names.end(), leaf) == names.end()) names.push_back(leaf);
         }
         timing = "; not compared (timings, resume counts): " + joined(names);
+    }
+    if (!c.added.empty()) {
+        std::vector<std::string> names;
+        for (const auto& t : c.added) {
+            const std::string leaf = t.substr(t.rfind('/') + 1);
+            if (std::find(names.begin(), names.end(), leaf) == names.end()) names.push_back(leaf);
+        }
+        timing += "; new since the results were made (not stored, not compared): " + joined(names);
     }
     if (c.diffs.empty()) {
         std::printf("  %s: %ld values %s%s\n", what.c_str(), c.compared,
@@ -129,15 +142,58 @@ struct TempDir {
     }
 };
 
+// The [parameters.<name>] blocks of today's experiments/<name>.toml that the recorded one lacks
+// (parameters added after the results were made), as TOML text, and their names. An added
+// parameter takes today's default: a new option that changes nothing unless asked for leaves the
+// point as it was, and one that changes it shows as a moved value.
+std::pair<std::string, std::string> added_parameters(const std::string& name, const fs::path& recorded) {
+    const fs::path today = project_root() / "experiments" / (name + ".toml");
+    const toml::value had = parse_toml_file(recorded, "recorded experiment file");
+    const toml::value now = parse_toml_file(today, "experiment file");
+    const auto& had_params = toml::find(had, "parameters").as_table();
+    std::ifstream in(today);
+    std::string text, names, line;
+    bool copying = false;
+    while (std::getline(in, line)) {
+        if (!line.empty() && line[0] == '[') {
+            const auto close = line.find(']');
+            const std::string header = line.substr(1, close == std::string::npos ? 0 : close - 1);
+            const std::string key = header.rfind("parameters.", 0) == 0 ? header.substr(11) : "";
+            copying = !key.empty() && toml::find(now, "parameters").as_table().count(key) && !had_params.count(key);
+            if (copying) names += (names.empty() ? "" : ", ") + key;
+        }
+        if (copying) text += line + "\n";
+    }
+    return {text, names};
+}
+
+// "a, b" -> {"a", "b"}.
+std::vector<std::string> split_names(const std::string& list) {
+    std::vector<std::string> out;
+    for (std::size_t at = 0; at < list.size();) {
+        const std::size_t comma = std::min(list.find(", ", at), list.size());
+        out.push_back(list.substr(at, comma - at));
+        at = comma + 2;
+    }
+    return out;
+}
+
 // The parameters as the run resolved them: the experiments/<name>.toml text stored in data.h5,
-// at the recorded scale, with the recorded --set overrides.
+// at the recorded scale, with the recorded --set overrides (and today's defaults of parameters
+// added since, named on stderr).
 ParameterSet recorded_parameters(const Experiment& exp, const fs::path& h5, const json& summary, Scale scale,
-                                 const fs::path& tmp) {
+                                 const fs::path& tmp, std::vector<std::string>& added) {
     const H5File f = H5File::open(h5.string());
     const fs::path file = tmp / (exp.name + ".toml");
     {
         std::ofstream o(file);
         o << f.read_string_attr("experiment_file");
+    }
+    if (const auto [text, names] = added_parameters(exp.name, file); !text.empty()) {
+        std::ofstream(file, std::ios::app) << "\n" << text;
+        added = split_names(names);
+        std::fprintf(stderr, "granrepro: verify %s: parameters added since the results were made take today's defaults: %s\n",
+                     exp.name.c_str(), names.c_str());
     }
     ParameterSet params = ParameterSet::load(file, scale);
     const json sets = summary.value("overridden_parameters", json::object());
@@ -214,7 +270,8 @@ int verify_experiment(const VerifyOptions& opt) {
     const auto dirty = [](const std::string& v) { return v.find("dirty") != std::string::npos; };
     const bool same_version = recorded_version == code_version() && !dirty(recorded_version);
     const TempDir tmp;
-    const ParameterSet params = recorded_parameters(exp, h5, summary, scale, tmp.path);
+    std::vector<std::string> added; // parameters the results' TOML lacks
+    const ParameterSet params = recorded_parameters(exp, h5, summary, scale, tmp.path, added);
     RunContext ctx{params, scale, seed, opt.threads, true, tmp.path / "work", 1e12};
     const std::string where = (opt.out / name).string();
     const std::string versions = "code: recorded " + recorded_version + ", now " + code_version() +
@@ -290,8 +347,12 @@ int verify_experiment(const VerifyOptions& opt) {
     }
     if (!rerun.computed) throw std::runtime_error("verify " + name + ": the experiment ran no sweep point");
     bool same = true;
+    // Parameters added since the results were made are left out of the fingerprint: the recorded
+    // one could not hold them.
+    if (!added.empty()) rerun.inputs = sweep_point_inputs_hash(ctx, rerun.sweep, rerun.point, rerun.count, added);
     if (rerun.inputs == (*rec).value("inputs", "")) {
-        std::printf("  inputs: fingerprint %s as recorded\n", rerun.inputs.c_str());
+        std::printf("  inputs: fingerprint %s as recorded%s\n", rerun.inputs.c_str(),
+                    added.empty() ? "" : (" (without the parameters added since: " + joined(added) + ")").c_str());
     } else {
         std::printf("  inputs: fingerprint %s, recorded %s: the parameters as read now differ from the run's\n",
                     rerun.inputs.c_str(), (*rec).value("inputs", "?").c_str());

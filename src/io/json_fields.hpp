@@ -37,19 +37,22 @@ nlohmann::json put(const T& x) {
     }
 }
 
-template <class T>
+// Lenient: a field the JSON lacks keeps its default (outcomes stored before the field existed).
+template <bool Lenient = false, class T>
 void get(const nlohmann::json& j, T& x) {
     if constexpr (std::is_same_v<T, double>) x = j.is_null() ? NAN : j.get<double>();
     else if constexpr (std::is_same_v<T, nlohmann::json>) x = j;
     else if constexpr (std::is_arithmetic_v<T> || std::is_same_v<T, std::string>) j.get_to(x);
     else if constexpr (std::is_same_v<T, Vec2>) {
-        get(j.at(0), x.x);
-        get(j.at(1), x.y);
-    } else if constexpr (HasFields<T>) x.fields([&](const char* name, auto& f) { get(j.at(name), f); });
+        get<Lenient>(j.at(0), x.x);
+        get<Lenient>(j.at(1), x.y);
+    } else if constexpr (HasFields<T>) x.fields([&](const char* name, auto& f) {
+        if (!Lenient || j.contains(name)) get<Lenient>(j.at(name), f);
+    });
     else if constexpr (requires { from_json_value(j, x); }) from_json_value(j, x);
     else {
         x.resize(j.size());
-        for (std::size_t i = 0; i < x.size(); ++i) get(j.at(i), x[i]);
+        for (std::size_t i = 0; i < x.size(); ++i) get<Lenient>(j.at(i), x[i]);
     }
 }
 
@@ -91,6 +94,16 @@ template <HasFields T>
 T from_json_fields(const nlohmann::json& j) {
     T s{};
     json_fields_detail::get(j, s);
+    return s;
+}
+
+// As from_json_fields, but a field the JSON lacks keeps its default instead of throwing: for
+// outcomes stored by an earlier build (`granrepro verify` of committed results), never for resume,
+// whose point files carry the layout's hash.
+template <HasFields T>
+T from_json_fields_lenient(const nlohmann::json& j) {
+    T s{};
+    json_fields_detail::get<true>(j, s);
     return s;
 }
 

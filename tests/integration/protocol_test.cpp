@@ -102,3 +102,15 @@ TEST(Protocol, OutcomeLayoutNamesFieldsAndKinds) {
     EXPECT_EQ(json_fields_schema<OutcomeV2>(), "{x:f,y:[f],}");
     EXPECT_NE(json_fields_schema<OutcomeV1>(), json_fields_schema<ToySpec>()); // a long is not a double
 }
+
+// `verify` reads outcomes stored by an earlier build: a field added since keeps its default there,
+// while a resume (strict) refuses the JSON.
+TEST(Protocol, StoredOutcomesOfAnEarlierLayoutReadLeniently) {
+    OutcomeV1 old;
+    old.x = 2.5;
+    const nlohmann::json stored = to_json_fields(old);
+    EXPECT_THROW(from_json_fields<OutcomeV2>(stored), nlohmann::json::exception);
+    const OutcomeV2 now = from_json_fields_lenient<OutcomeV2>(stored);
+    EXPECT_EQ(now.x, 2.5);
+    EXPECT_TRUE(now.y.empty());
+}
