@@ -84,6 +84,124 @@ std::string VerdictCounts::text() const {
            " DEVIATION, " + std::to_string(skipped) + " skipped";
 }
 
+namespace {
+
+std::string line_of(const toml::value& v) { return " (line " + std::to_string(v.location().line()) + ")"; }
+
+// One [[claim]] table being read: its location for messages and the checks every key shares.
+struct ClaimReader {
+    const toml::value& c;
+    std::string where; // "<file>: claim <id>"
+
+    std::optional<double> number_at(const char* key) const {
+        if (!c.contains(key)) return std::nullopt;
+        const double x = number(c.at(key));
+        if (std::isnan(x)) throw InputError(where + line_of(c.at(key)) + ": " + key + " is NaN");
+        return x;
+    }
+    void check_scale(const std::string& s, const std::string& key) const {
+        if (s != "quick" && s != "paper") throw InputError(where + ": " + key + " names scale '" + s + "'; allowed: quick, paper");
+    }
+    // A band without its kind could be one set around our own output; the kind is checked here so
+    // that no claim file can leave it out (expected/README.md, "How bands are set").
+    template <class Allowed>
+    std::string kind(const char* key, const Allowed& allowed) const {
+        const std::string allowed_text = joined(allowed);
+        if (!c.contains(key)) throw InputError(where + ": " + key + " is missing; allowed: " + allowed_text);
+        const std::string value = toml::find<std::string>(c, key);
+        if (std::find(std::begin(allowed), std::end(allowed), value) == std::end(allowed))
+            throw InputError(where + line_of(c.at(key)) + ": " + key + " '" + value + "' is unknown; allowed: " + allowed_text);
+        return value;
+    }
+};
+
+// The claim's value and band: paper with rel_tol/abs_tol, or min/max, with their checks.
+void read_band(const ClaimReader& r, Claim& k) {
+    const toml::value& c = r.c;
+    k.paper = r.number_at("paper");
+    k.rel_tol = r.number_at("rel_tol");
+    k.abs_tol = r.number_at("abs_tol");
+    k.min = r.number_at("min");
+    k.max = r.number_at("max");
+    for (const auto& [key, val] : {std::pair{"rel_tol", k.rel_tol}, std::pair{"abs_tol", k.abs_tol}})
+        if (val && !(*val >= 0 && std::isfinite(*val)))
+            throw InputError(r.where + line_of(c.at(key)) + ": " + key + " = " + num(*val) + " must be a finite number >= 0");
+    // The verdict would silently use rel_tol alone.
+    if (k.rel_tol && k.abs_tol) throw InputError(r.where + line_of(c.at("abs_tol")) + ": give rel_tol or abs_tol, not both");
+    if (k.paper && !std::isfinite(*k.paper))
+        throw InputError(r.where + line_of(c.at("paper")) + ": paper = " + num(*k.paper) + " must be finite");
+    if (k.min && k.max && *k.min > *k.max)
+        throw InputError(r.where + line_of(c.at("min")) + ": min = " + num(*k.min) + " is above max = " + num(*k.max));
+    const bool value_claim = k.paper && (k.rel_tol || k.abs_tol);
+    const bool range_claim = k.min || k.max;
+    if (!value_claim && !range_claim) throw InputError(r.where + " needs paper with rel_tol/abs_tol, or min/max");
+    if (k.known_deviation.empty() && k.tolerance_reason.empty()) throw InputError(r.where + " needs a tolerance_reason");
+    k.tolerance_kind = r.kind("tolerance_kind", kToleranceKinds);
+}
+
+// A known deviation's own band, its reason and kind (and none of them without a deviation).
+void read_deviation(const ClaimReader& r, Claim& k) {
+    const toml::value& c = r.c;
+    if (c.contains("deviation_band")) {
+        const toml::value& b = c.at("deviation_band");
+        if (b.is_table()) {
+            for (const auto& [scale, band] : b.as_table()) {
+                r.check_scale(scale, "deviation_band");
+                k.deviation_band_by_scale[scale] = parse_band(band, r.where + ": deviation_band." + scale);
+            }
+        } else {
+            k.deviation_band = parse_band(b, r.where + ": deviation_band (or { quick = [lo, hi], paper = [lo, hi] })");
+        }
+    }
+    if (c.contains("deviation_band_reason")) k.deviation_band_reason = toml::find<std::string>(c, "deviation_band_reason");
+    const bool has_band = k.deviation_band || !k.deviation_band_by_scale.empty();
+    if (k.known_deviation.empty()) {
+        if (has_band || !k.deviation_band_reason.empty() || c.contains("deviation_band_kind"))
+            throw InputError(r.where + ": deviation_band (and its reason and kind) belongs only to a claim with known_deviation");
+        return;
+    }
+    // A known deviation is a measured result: it needs its own band at every scale where the
+    // claim applies, so that the deviation itself can still fail.
+    for (const Scale scale : {Scale::Quick, Scale::Paper})
+        if (k.applies_to(scale) && !k.band_for(scale))
+            throw InputError(r.where + ": known_deviation needs deviation_band for scale " + to_string(scale) +
+                             " (deviation_band = [lo, hi] or { quick = [lo, hi], paper = [lo, hi] })");
+    if (k.deviation_band_reason.empty())
+        throw InputError(r.where + ": known_deviation needs deviation_band_reason (where the band comes from)");
+    k.deviation_band_kind = r.kind("deviation_band_kind", kDeviationBandKinds);
+}
+
+// One [[claim]]: its keys, texts and measured scalar (which the experiment must declare).
+Claim read_claim(const toml::value& c, const std::string& where, const std::string& experiment,
+                 const DeclaredOutputs* outputs, const std::vector<Claim>& earlier_claims) {
+    Claim k;
+    k.id = toml::find<std::string>(c, "id");
+    const ClaimReader r{c, where + ": claim " + k.id};
+    for (const auto& [key, v] : c.as_table())
+        if (!std::count(std::begin(kClaimKeys), std::end(kClaimKeys), key))
+            throw InputError(r.where + line_of(v) + ": unknown key '" + key + "'; allowed: " + joined(kClaimKeys));
+    for (const auto& earlier : earlier_claims)
+        if (earlier.id == k.id) throw InputError(r.where + line_of(c) + ": claim id given twice");
+    k.statement = toml::find<std::string>(c, "statement");
+    k.source = toml::find<std::string>(c, "source");
+    k.measured = toml::find<std::string>(c, "measured");
+    if (c.contains("tolerance_reason")) k.tolerance_reason = toml::find<std::string>(c, "tolerance_reason");
+    if (c.contains("known_deviation")) k.known_deviation = toml::find<std::string>(c, "known_deviation");
+    if (c.contains("scales")) k.scales = toml::find<std::vector<std::string>>(c, "scales");
+    if (k.measured.empty() || k.measured.find_first_of(" \t\n") != std::string::npos)
+        throw InputError(r.where + line_of(c.at("measured")) + ": measured '" + k.measured +
+                         "' is not a scalar name (non-empty, no spaces)");
+    if (outputs && outputs->declared() && !outputs->declares_scalar(k.measured))
+        throw InputError(r.where + line_of(c.at("measured")) + ": measured '" + k.measured + "' is not an output of " +
+                         experiment + " (experiments/" + experiment + ".toml [outputs] declares no such scalar)");
+    for (const auto& s : k.scales) r.check_scale(s, "scales");
+    read_band(r, k);
+    read_deviation(r, k);
+    return k;
+}
+
+} // namespace
+
 std::vector<Claim> load_claims(const std::filesystem::path& file, const std::string& experiment,
                                const DeclaredOutputs* outputs) {
     const std::string where = file.string();
@@ -91,115 +209,12 @@ std::vector<Claim> load_claims(const std::filesystem::path& file, const std::str
     std::vector<Claim> claims;
     try {
         const auto root = parse_toml_file(file, "expected-claims file");
-        auto line = [](const toml::value& v) { return " (line " + std::to_string(v.location().line()) + ")"; };
         for (const auto& [key, v] : root.as_table())
             if (key != "experiment" && key != "claim")
-                throw InputError(where + line(v) + ": unknown key '" + key + "'; allowed: experiment, [[claim]]");
+                throw InputError(where + line_of(v) + ": unknown key '" + key + "'; allowed: experiment, [[claim]]");
         if (toml::find<std::string>(root, "experiment") != experiment)
             throw InputError(where + ": 'experiment' must be \"" + experiment + "\"");
-        for (const auto& c : toml::find<toml::array>(root, "claim")) {
-            Claim k;
-            k.id = toml::find<std::string>(c, "id");
-            const std::string claim_where = where + ": claim " + k.id;
-            for (const auto& [key, v] : c.as_table())
-                if (!std::count(std::begin(kClaimKeys), std::end(kClaimKeys), key))
-                    throw InputError(claim_where + line(v) + ": unknown key '" + key + "'; allowed: " +
-                                     joined(kClaimKeys));
-            for (const auto& earlier : claims)
-                if (earlier.id == k.id) throw InputError(claim_where + line(c) + ": claim id given twice");
-            k.statement = toml::find<std::string>(c, "statement");
-            k.source = toml::find<std::string>(c, "source");
-            k.measured = toml::find<std::string>(c, "measured");
-            auto opt = [&](const char* key) -> std::optional<double> {
-                if (!c.contains(key)) return std::nullopt;
-                const double x = number(c.at(key));
-                if (std::isnan(x)) throw InputError(claim_where + line(c.at(key)) + ": " + key + " is NaN");
-                return x;
-            };
-            k.paper = opt("paper");
-            k.rel_tol = opt("rel_tol");
-            k.abs_tol = opt("abs_tol");
-            k.min = opt("min");
-            k.max = opt("max");
-            if (c.contains("tolerance_reason")) k.tolerance_reason = toml::find<std::string>(c, "tolerance_reason");
-            if (c.contains("known_deviation")) k.known_deviation = toml::find<std::string>(c, "known_deviation");
-            if (c.contains("scales")) k.scales = toml::find<std::vector<std::string>>(c, "scales");
-            if (k.measured.empty() || k.measured.find_first_of(" \t\n") != std::string::npos)
-                throw InputError(claim_where + line(c.at("measured")) + ": measured '" + k.measured +
-                                 "' is not a scalar name (non-empty, no spaces)");
-            if (outputs && outputs->declared() && !outputs->declares_scalar(k.measured))
-                throw InputError(claim_where + line(c.at("measured")) + ": measured '" + k.measured +
-                                 "' is not an output of " + experiment + " (experiments/" + experiment +
-                                 ".toml [outputs] declares no such scalar)");
-            for (const auto& [key, val] : {std::pair{"rel_tol", k.rel_tol}, std::pair{"abs_tol", k.abs_tol}})
-                if (val && !(*val >= 0 && std::isfinite(*val)))
-                    throw InputError(claim_where + line(c.at(key)) + ": " + key + " = " + num(*val) +
-                                     " must be a finite number >= 0");
-            // The verdict would silently use rel_tol alone.
-            if (k.rel_tol && k.abs_tol)
-                throw InputError(claim_where + line(c.at("abs_tol")) + ": give rel_tol or abs_tol, not both");
-            if (k.paper && !std::isfinite(*k.paper))
-                throw InputError(claim_where + line(c.at("paper")) + ": paper = " + num(*k.paper) + " must be finite");
-            if (k.min && k.max && *k.min > *k.max)
-                throw InputError(claim_where + line(c.at("min")) + ": min = " + num(*k.min) + " is above max = " + num(*k.max));
-            auto check_scale = [&](const std::string& s, const std::string& key) {
-                if (s != "quick" && s != "paper")
-                    throw InputError(claim_where + ": " + key + " names scale '" + s + "'; allowed: quick, paper");
-            };
-            for (const auto& s : k.scales) check_scale(s, "scales");
-            const bool value_claim = k.paper && (k.rel_tol || k.abs_tol);
-            const bool range_claim = k.min || k.max;
-            if (!value_claim && !range_claim)
-                throw InputError(claim_where + " needs paper with rel_tol/abs_tol, or min/max");
-            if (k.known_deviation.empty() && k.tolerance_reason.empty())
-                throw InputError(claim_where + " needs a tolerance_reason");
-            // A band without its kind could be one set around our own output; the kind is checked
-            // here so that no claim file can leave it out (expected/README.md, "How bands are set").
-            auto kind = [&](const char* key, const auto& allowed) {
-                const std::string allowed_text = joined(allowed);
-                if (!c.contains(key))
-                    throw InputError(claim_where + ": " + key + " is missing; allowed: " + allowed_text);
-                const std::string value = toml::find<std::string>(c, key);
-                if (std::find(std::begin(allowed), std::end(allowed), value) == std::end(allowed))
-                    throw InputError(claim_where + line(c.at(key)) + ": " + key + " '" + value +
-                                     "' is unknown; allowed: " + allowed_text);
-                return value;
-            };
-            k.tolerance_kind = kind("tolerance_kind", kToleranceKinds);
-
-            if (c.contains("deviation_band")) {
-                const toml::value& b = c.at("deviation_band");
-                if (b.is_table()) {
-                    for (const auto& [scale, band] : b.as_table()) {
-                        check_scale(scale, "deviation_band");
-                        k.deviation_band_by_scale[scale] = parse_band(band, claim_where + ": deviation_band." + scale);
-                    }
-                } else {
-                    k.deviation_band = parse_band(
-                        b, claim_where + ": deviation_band (or { quick = [lo, hi], paper = [lo, hi] })");
-                }
-            }
-            if (c.contains("deviation_band_reason"))
-                k.deviation_band_reason = toml::find<std::string>(c, "deviation_band_reason");
-            const bool has_band = k.deviation_band || !k.deviation_band_by_scale.empty();
-            if (k.known_deviation.empty()) {
-                if (has_band || !k.deviation_band_reason.empty() || c.contains("deviation_band_kind"))
-                    throw InputError(claim_where +
-                                     ": deviation_band (and its reason and kind) belongs only to a claim with known_deviation");
-            } else {
-                // A known deviation is a measured result: it needs its own band at every scale
-                // where the claim applies, so that the deviation itself can still fail.
-                for (const Scale scale : {Scale::Quick, Scale::Paper})
-                    if (k.applies_to(scale) && !k.band_for(scale))
-                        throw InputError(claim_where + ": known_deviation needs deviation_band for scale " +
-                                         to_string(scale) +
-                                         " (deviation_band = [lo, hi] or { quick = [lo, hi], paper = [lo, hi] })");
-                if (k.deviation_band_reason.empty())
-                    throw InputError(claim_where + ": known_deviation needs deviation_band_reason (where the band comes from)");
-                k.deviation_band_kind = kind("deviation_band_kind", kDeviationBandKinds);
-            }
-            claims.push_back(std::move(k));
-        }
+        for (const auto& c : toml::find<toml::array>(root, "claim")) claims.push_back(read_claim(c, where, experiment, outputs, claims));
     } catch (const InputError& e) {
         if (std::string(e.what()).rfind(where, 0) == 0) throw;
         throw InputError(where + ": " + e.what());

@@ -252,93 +252,171 @@ void list_points(const std::string& name, const json& summary, const json& recor
 
 } // namespace
 
-int verify_experiment(const VerifyOptions& opt) {
-    const Experiment& exp = find_experiment(opt.experiment);
-    const std::string& name = exp.name;
-    const json summary = read_checked_summary(name, opt.out);
-    const fs::path h5 = opt.out / name / "data.h5";
-    const long version = H5File::open(h5.string()).read_long_attr("schema_version");
-    const json records = read_points_records(h5);
-    if (opt.list) {
-        list_points(name, summary, records, version);
-        return 0;
-    }
-    const Scale scale = parse_scale(summary.at("scale").get<std::string>());
-    const std::uint64_t seed = recorded_seed(summary);
-    const std::string recorded_version = summary.value("code_version", "unknown");
-    // A build from a dirty tree ("-dirty") is not a version: its code is not known.
-    const auto dirty = [](const std::string& v) { return v.find("dirty") != std::string::npos; };
-    const bool same_version = recorded_version == code_version() && !dirty(recorded_version);
-    const TempDir tmp;
+namespace {
+
+// What a verification knows before it reruns anything.
+struct Verification {
+    Verification(const Experiment& e, const VerifyOptions& o) : exp(e), opt(o) {}
+    const Experiment& exp;
+    const VerifyOptions& opt;
+    json summary, records;
+    fs::path h5;
+    long version = 0;
+    Scale scale = Scale::Quick;
+    std::uint64_t seed = 0;
+    bool same_version = false;
+    std::string versions, where;
     std::vector<std::string> added; // parameters the results' TOML lacks
-    const ParameterSet params = recorded_parameters(exp, h5, summary, scale, tmp.path, added);
-    RunContext ctx{params, scale, seed, opt.threads, true, tmp.path / "work", 1e12};
-    const std::string where = (opt.out / name).string();
-    const std::string versions = "code: recorded " + recorded_version + ", now " + code_version() +
-                                 (same_version ? " (same: bit for bit)" : " (another version: value by value)");
+};
 
-    if (records.empty()) {
-        if (exp.distributed || opt.point)
-            throw InputError("verify " + name + ": unverifiable: results written before point storage (" + where +
-                             "/data.h5 is of schema_version " + std::to_string(version) + "; rerun `granrepro " + name +
-                             " --scale " + to_string(scale) + "` to store its sweep points)");
-        // Cheap (no distributed sweep, under 2 s at paper scale): the whole experiment again.
-        std::printf("verify %s: the whole experiment (%s scale, seed %llu; results written before point storage)\n",
-                    name.c_str(), to_string(scale), static_cast<unsigned long long>(seed));
-        std::printf("  %s\n", versions.c_str());
-        const Result r = exp.run(ctx);
-        Comparison c;
-        const json before = summary.at("scalars"), after = scalars_through_json(r);
-        compare(before, after, "", c);
-        bool same = report("scalars", c, same_version);
-        if (summary.contains("data_h5_hash")) {
-            const json now = data_content_hash(r)["tables"], then = summary["data_h5_hash"].value("tables", json::object());
-            std::vector<std::string> moved;
-            for (auto it = then.begin(); it != then.end(); ++it)
-                if (!now.contains(it.key()) || now[it.key()] != it.value()) moved.push_back(it.key());
-            std::printf("  tables: %s\n", moved.empty() ? (std::to_string(then.size()) + " tables bit for bit identical (content hashes)").c_str()
-                                                       : ("differ: " + joined(moved)).c_str());
-            same = same && moved.empty();
-        } else {
-            std::printf("  tables: not compared (results written before content hashes)\n");
-        }
-        if (!c.diffs.empty()) report_claims(name, before, after, c, scale);
-        std::printf("verify %s: %s\n", name.c_str(), same ? "reproduced" : "differs");
-        return same ? 0 : 1;
-    }
-
-    // The point: as asked, or the cheapest by recorded CPU cost.
-    const json* rec = nullptr;
-    if (opt.point) {
-        for (const auto& r : records)
-            if (r["point"] == *opt.point) rec = &r;
-        if (!rec)
-            throw InputError("--point " + std::to_string(*opt.point) + ": " + where + " stores points 0 to " +
-                             std::to_string(records.size() - 1) + " (`verify " + name + " --list` shows them)");
+// Results written before point storage, of an experiment without a distributed sweep (under 2 s
+// at paper scale): the whole experiment again, its scalars and table hashes compared.
+int verify_whole(const Verification& v, RunContext& ctx) {
+    const std::string& name = v.exp.name;
+    if (v.exp.distributed || v.opt.point)
+        throw InputError("verify " + name + ": unverifiable: results written before point storage (" + v.where +
+                         "/data.h5 is of schema_version " + std::to_string(v.version) + "; rerun `granrepro " + name +
+                         " --scale " + to_string(v.scale) + "` to store its sweep points)");
+    std::printf("verify %s: the whole experiment (%s scale, seed %llu; results written before point storage)\n",
+                name.c_str(), to_string(v.scale), static_cast<unsigned long long>(v.seed));
+    std::printf("  %s\n", v.versions.c_str());
+    const Result r = v.exp.run(ctx);
+    Comparison c;
+    const json before = v.summary.at("scalars"), after = scalars_through_json(r);
+    compare(before, after, "", c);
+    bool same = report("scalars", c, v.same_version);
+    if (v.summary.contains("data_h5_hash")) {
+        const json now = data_content_hash(r)["tables"], then = v.summary["data_h5_hash"].value("tables", json::object());
+        std::vector<std::string> moved;
+        for (auto it = then.begin(); it != then.end(); ++it)
+            if (!now.contains(it.key()) || now[it.key()] != it.value()) moved.push_back(it.key());
+        std::printf("  tables: %s\n", moved.empty() ? (std::to_string(then.size()) + " tables bit for bit identical (content hashes)").c_str()
+                                                   : ("differ: " + joined(moved)).c_str());
+        same = same && moved.empty();
     } else {
-        for (const auto& r : records) {
-            const double c = r["cost"].value("cpu_s", -1.0);
-            if (!rec || (c >= 0 && (*rec)["cost"].value("cpu_s", -1.0) > c)) rec = &r;
-        }
+        std::printf("  tables: not compared (results written before content hashes)\n");
     }
+    if (!c.diffs.empty()) report_claims(name, before, after, c, v.scale);
+    std::printf("verify %s: %s\n", name.c_str(), same ? "reproduced" : "differs");
+    return same ? 0 : 1;
+}
+
+// The stored point to rerun: as asked, or the cheapest by recorded CPU cost.
+const json& chosen_point(const Verification& v) {
+    const json* rec = nullptr;
+    if (v.opt.point) {
+        for (const auto& r : v.records)
+            if (r["point"] == *v.opt.point) rec = &r;
+        if (!rec)
+            throw InputError("--point " + std::to_string(*v.opt.point) + ": " + v.where + " stores points 0 to " +
+                             std::to_string(v.records.size() - 1) + " (`verify " + v.exp.name + " --list` shows them)");
+        return *rec;
+    }
+    for (const auto& r : v.records) {
+        const double c = r["cost"].value("cpu_s", -1.0);
+        if (!rec || (c >= 0 && (*rec)["cost"].value("cpu_s", -1.0) > c)) rec = &r;
+    }
+    return *rec;
+}
+
+// The rerun of one point; with every other point of its sweep stored whole, the scalars are rebuilt
+// from them as the run built them.
+PointRerun point_rerun(const Verification& v, const json& rec) {
     PointRerun rerun;
-    rerun.sweep = (*rec)["sweep"].get<std::string>();
-    rerun.point = (*rec)["point"].get<long>();
-    rerun.aggregate = !opt.point_only;
-    for (const auto& r : records) {
+    rerun.sweep = rec["sweep"].get<std::string>();
+    rerun.point = rec["point"].get<long>();
+    rerun.aggregate = !v.opt.point_only;
+    for (const auto& r : v.records) {
         if (r["sweep"] != rerun.sweep) rerun.aggregate = false; // more than one sweep: the point alone
         else if (r["point"] != rerun.point) {
             if (r.value("compacted", false)) rerun.aggregate = false;
             rerun.stored[r["point"].get<long>()] = r["outcome"];
         }
     }
+    return rerun;
+}
+
+// Compares the rerun point (and the scalars rebuilt with it) with what the results store.
+bool compare_point(const Verification& v, const RunContext& ctx, PointRerun& rerun, const json& rec,
+                   const std::optional<Result>& result) {
+    bool same = true;
+    // Parameters added since the results were made are left out of the fingerprint: the recorded
+    // one could not hold them.
+    if (!v.added.empty()) rerun.inputs = sweep_point_inputs_hash(ctx, rerun.sweep, rerun.point, rerun.count, v.added);
+    if (rerun.inputs == rec.value("inputs", "")) {
+        std::printf("  inputs: fingerprint %s as recorded%s\n", rerun.inputs.c_str(),
+                    v.added.empty() ? "" : (" (without the parameters added since: " + joined(v.added) + ")").c_str());
+    } else {
+        std::printf("  inputs: fingerprint %s, recorded %s: the parameters as read now differ from the run's\n",
+                    rerun.inputs.c_str(), rec.value("inputs", "?").c_str());
+        same = false;
+    }
+    std::printf("  cost now: %s CPU s, %s s wall\n", number(rerun.cost.cpu_s, "%.3g").c_str(), number(rerun.cost.wall_s, "%.3g").c_str());
+    json fresh = rerun.outcome;
+    if (rec.value("compacted", false)) {
+        const H5File f = H5File::open(v.h5.string());
+        const H5Object g = f.open_group("points");
+        const long over = g.has_attr("compacted_arrays_over") ? g.read_long_attr("compacted_arrays_over") : long(kMaxPointArrayValues);
+        fresh = compact_outcome(fresh, std::size_t(over));
+    }
+    Comparison point;
+    compare(rec["outcome"], fresh, "", point);
+    same = report("point outcome" + std::string(rec.value("compacted", false) ? " (arrays over the compaction limit by digest)" : ""),
+                  point, v.same_version) && same;
+    if (!result) {
+        std::printf("  scalars: not rebuilt (%s)\n",
+                    v.opt.point_only                             ? "--point-only"
+                    : rerun.stored.size() + 1 < v.records.size() ? "the results hold more than one sweep"
+                                                                 : "other points are stored with digested arrays");
+        return same;
+    }
+    Comparison sc;
+    const json before = v.summary.at("scalars"), after = scalars_through_json(*result);
+    compare(before, after, "", sc);
+    same = report("scalars (point " + std::to_string(rerun.point) + " recomputed, the other " +
+                      std::to_string(rerun.stored.size()) + " as stored)",
+                  sc, v.same_version) && same;
+    if (!sc.diffs.empty()) report_claims(v.exp.name, before, after, sc, v.scale);
+    return same;
+}
+
+} // namespace
+
+int verify_experiment(const VerifyOptions& opt) {
+    const Experiment& exp = find_experiment(opt.experiment);
+    const std::string& name = exp.name;
+    Verification v(exp, opt);
+    v.summary = read_checked_summary(name, opt.out);
+    v.h5 = opt.out / name / "data.h5";
+    v.version = H5File::open(v.h5.string()).read_long_attr("schema_version");
+    v.records = read_points_records(v.h5);
+    if (opt.list) {
+        list_points(name, v.summary, v.records, v.version);
+        return 0;
+    }
+    v.scale = parse_scale(v.summary.at("scale").get<std::string>());
+    v.seed = recorded_seed(v.summary);
+    const std::string recorded_version = v.summary.value("code_version", "unknown");
+    // A build from a dirty tree ("-dirty") is not a version: its code is not known.
+    const auto dirty = [](const std::string& s) { return s.find("dirty") != std::string::npos; };
+    v.same_version = recorded_version == code_version() && !dirty(recorded_version);
+    const TempDir tmp;
+    const ParameterSet params = recorded_parameters(exp, v.h5, v.summary, v.scale, tmp.path, v.added);
+    RunContext ctx{params, v.scale, v.seed, opt.threads, true, tmp.path / "work", 1e12};
+    v.where = (opt.out / name).string();
+    v.versions = "code: recorded " + recorded_version + ", now " + code_version() +
+                 (v.same_version ? " (same: bit for bit)" : " (another version: value by value)");
+    if (v.records.empty()) return verify_whole(v, ctx);
+
+    const json& rec = chosen_point(v);
+    PointRerun rerun = point_rerun(v, rec);
     ctx.sweep.mode = SweepPlan::Mode::Verify;
     ctx.sweep.rerun = &rerun;
-    const double recorded_cpu = (*rec)["cost"].value("cpu_s", -1.0);
+    const double recorded_cpu = rec["cost"].value("cpu_s", -1.0);
     std::printf("verify %s: point %ld of %zu (sweep %s; %s scale, seed %llu; recorded cost %s CPU s)\n", name.c_str(),
-                rerun.point, records.size(), rerun.sweep.c_str(), to_string(scale), static_cast<unsigned long long>(seed),
+                rerun.point, v.records.size(), rerun.sweep.c_str(), to_string(v.scale), static_cast<unsigned long long>(v.seed),
                 number(recorded_cpu >= 0 ? recorded_cpu : NAN, "%.3g").c_str());
-    std::printf("  %s\n", versions.c_str());
+    std::printf("  %s\n", v.versions.c_str());
     std::fflush(stdout);
     std::optional<Result> result;
     try {
@@ -346,46 +424,9 @@ int verify_experiment(const VerifyOptions& opt) {
     } catch (const PointRerunDone&) {
     }
     if (!rerun.computed) throw std::runtime_error("verify " + name + ": the experiment ran no sweep point");
-    bool same = true;
-    // Parameters added since the results were made are left out of the fingerprint: the recorded
-    // one could not hold them.
-    if (!added.empty()) rerun.inputs = sweep_point_inputs_hash(ctx, rerun.sweep, rerun.point, rerun.count, added);
-    if (rerun.inputs == (*rec).value("inputs", "")) {
-        std::printf("  inputs: fingerprint %s as recorded%s\n", rerun.inputs.c_str(),
-                    added.empty() ? "" : (" (without the parameters added since: " + joined(added) + ")").c_str());
-    } else {
-        std::printf("  inputs: fingerprint %s, recorded %s: the parameters as read now differ from the run's\n",
-                    rerun.inputs.c_str(), (*rec).value("inputs", "?").c_str());
-        same = false;
-    }
-    std::printf("  cost now: %s CPU s, %s s wall\n", number(rerun.cost.cpu_s, "%.3g").c_str(), number(rerun.cost.wall_s, "%.3g").c_str());
-    json fresh = rerun.outcome;
-    if ((*rec).value("compacted", false)) {
-        const H5File f = H5File::open(h5.string());
-        const H5Object g = f.open_group("points");
-        const long over = g.has_attr("compacted_arrays_over") ? g.read_long_attr("compacted_arrays_over") : long(kMaxPointArrayValues);
-        fresh = compact_outcome(fresh, std::size_t(over));
-    }
-    Comparison point;
-    compare((*rec)["outcome"], fresh, "", point);
-    same = report("point outcome" + std::string((*rec).value("compacted", false) ? " (arrays over the compaction limit by digest)" : ""),
-                  point, same_version) && same;
-    if (result) {
-        Comparison sc;
-        const json before = summary.at("scalars"), after = scalars_through_json(*result);
-        compare(before, after, "", sc);
-        same = report("scalars (point " + std::to_string(rerun.point) + " recomputed, the other " +
-                          std::to_string(rerun.stored.size()) + " as stored)",
-                      sc, same_version) && same;
-        if (!sc.diffs.empty()) report_claims(name, before, after, sc, scale);
-    } else {
-        std::printf("  scalars: not rebuilt (%s)\n",
-                    opt.point_only                             ? "--point-only"
-                    : rerun.stored.size() + 1 < records.size() ? "the results hold more than one sweep"
-                                                               : "other points are stored with digested arrays");
-    }
+    const bool same = compare_point(v, ctx, rerun, rec, result);
     std::printf("verify %s: point %ld %s\n", name.c_str(), rerun.point,
-                same ? (same_version ? "reproduced bit for bit" : "reproduced, value by value") : "differs");
+                same ? (v.same_version ? "reproduced bit for bit" : "reproduced, value by value") : "differs");
     return same ? 0 : 1;
 }
 
