@@ -1,0 +1,84 @@
+// parameter-study (Figs. 8 and 9): the spec, one run's trace, the sweep and what the files share.
+#pragma once
+#include <chrono>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "data/result.hpp"
+
+// Not granrepro::experiments::parameter_study: that name is the experiment's function (registry.cpp).
+namespace granrepro::experiments::parameter_study_detail {
+
+// Units and ranges: experiments/parameter-study.toml.
+struct ParameterStudySpec {
+    long n_side = 0, seeds = 0;
+    double box_over_d = 0, d = 0, mass = 0, vbar = 0, mu = 0; // L/d, [m], [kg], mean speed at t = 0 [m/s]
+    double equilibration = 0, cn_end = 0;                    // collisions per particle
+    std::vector<double> fig8_r, fig9_t_c;                    // fig9_t_c [s]
+    double fig8_t_c = 0, fig9_r = 0;                         // fig8_t_c [s]
+    double exp_fit_efolds = 0, line_check_efolds = 0, aniso_threshold = 0;
+    std::vector<double> zeta_fit_early, zeta_fit_late, zeta_fit_tail; // C/N ranges [lo, hi]
+    double tc_compare_time = 0, tc_small_max = 0;                      // [s]
+    template <class V> void fields(V&& v) {
+        v("n_side", n_side); v("seeds", seeds); v("box_over_d", box_over_d); v("d", d); v("mass", mass); v("vbar", vbar);
+        v("mu", mu); v("equilibration", equilibration); v("cn_end", cn_end); v("fig8_r", fig8_r); v("fig9_t_c", fig9_t_c);
+        v("fig8_t_c", fig8_t_c); v("fig9_r", fig9_r); v("exp_fit_efolds", exp_fit_efolds); v("aniso_threshold", aniso_threshold);
+        v("line_check_efolds", line_check_efolds); v("zeta_fit_early", zeta_fit_early); v("zeta_fit_late", zeta_fit_late);
+        v("zeta_fit_tail", zeta_fit_tail); v("tc_compare_time", tc_compare_time); v("tc_small_max", tc_small_max);
+    }
+};
+
+// One sweep point and what it produced.
+struct Point { double r = 0, t_c = 0; };
+
+struct Trace {
+    std::vector<double> t, cn, elastic_cn, kx, ky, krot;
+    double wall_seconds = 0, events = 0, pairs = 0;
+    std::string error; // the engine's message if it stopped the run (collapse guard)
+    double k(std::size_t i) const { return kx[i] + ky[i] + krot[i]; }
+    template <class V> void fields(V&& v) {
+        v("t", t), v("cn", cn), v("elastic_cn", elastic_cn), v("kx", kx), v("ky", ky), v("krot", krot);
+        v("wall_seconds", wall_seconds), v("events", events), v("pairs", pairs), v("error", error);
+    }
+};
+
+// One run: seed `seed`, random stream `stream` (compute.cpp).
+Trace run_point(const ParameterStudySpec& s, const Point& pt, std::uint64_t seed, std::uint64_t stream);
+
+// A curve averaged over the seeds of one parameter set: mean and standard error of
+// log10(K/K0) on a grid (of C/N or of t). Geometric means, because K spans many decades and
+// the seeds differ by factors, not by amounts.
+struct MeanCurve {
+    std::vector<double> x, mean, sem;
+};
+MeanCurve mean_curve(const std::vector<Trace>& seeds, const std::vector<double>& grid, double (*lnk)(const Trace&, double));
+double ln_k_at_cn(const Trace& tr, double x); // ln(K/K0) at C/N = x (report.cpp)
+
+template <class Row>
+std::vector<double> column(const std::vector<Row>& rows, double Row::*field) {
+    std::vector<double> v;
+    for (const Row& row : rows) v.push_back(row.*field);
+    return v;
+}
+
+// The sweep: Fig. 8's r values at fig8_t_c, then Fig. 9's t_c values at fig9_r, sharing the point
+// (fig9_r, fig8_t_c) when both figures contain it; every point with `seeds` initial states.
+struct Sweep {
+    std::vector<Point> points;
+    std::vector<std::size_t> fig8_idx, fig9_idx; // the point of each fig8_r, of each fig9_t_c
+    std::vector<std::vector<Trace>> traces;       // [point][seed]
+    std::vector<MeanCurve> mean_cn, mean_t;       // seed means per point, against C/N and t
+    long resumed = 0;
+    double wall = 0; // [s]
+    std::chrono::steady_clock::time_point start; // of the sweep
+};
+
+// The report (report.cpp, report_fig8.cpp, report_fig9.cpp), in the order the protocol calls it.
+void report_totals(Result& res, const ParameterStudySpec& s, const Sweep& sw);
+void report_points(Result& res, Sweep& sw, const std::vector<double>& cn_grid);
+void report_fig8(Result& res, const ParameterStudySpec& s, const Sweep& sw);
+void report_fig9(Result& res, const ParameterStudySpec& s, const Sweep& sw, const std::vector<double>& cn_grid);
+void report_cn_jumps(Result& res, const ParameterStudySpec& s, const Sweep& sw);
+
+} // namespace granrepro::experiments::parameter_study_detail

@@ -1,0 +1,142 @@
+// pipe-arching: one run's fits of Eqs. (21), (22) to P(N_c) (Fig. 14), and run 0's tables (relaxation, Figs. 13 and 14).
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <optional>
+#include <stdexcept>
+
+#include "experiments/pipe_arching/spec.hpp"
+#include "observables/collision_rate_fit.hpp"
+
+namespace granrepro::experiments::pipe_arching_detail {
+
+namespace {
+
+// A converged fit, or none (too few counts, or no convergence).
+std::optional<CollisionRateFit> try_fit(const RateHistogram& h, CollisionRateFit::Model m, double lo, double hi) {
+    try {
+        if (const CollisionRateFit f = CollisionRateFit::fit(h, m, lo, hi); f.converged) return f;
+    } catch (const std::invalid_argument&) {
+    }
+    return std::nullopt;
+}
+
+// A Fig. 13 snapshot (run 0): the disks, the frame's arch and the crack.
+void add_snapshot(std::vector<FigureTable>& F, const Pipe& s, const Frame& fr) {
+    const double d = s.d;
+    std::vector<double> x, y, in_arch, side, cx, cy;
+    for (std::size_t i = 0; i < fr.pos.size(); ++i) {
+        x.push_back(fr.pos[i].x / d);
+        y.push_back((fr.pos[i].y - s.y_floor) / d);
+        in_arch.push_back(std::find(fr.arch.members.begin(), fr.arch.members.end(), int(i)) != fr.arch.members.end() ? 1 : 0);
+        side.push_back(fr.crack.side.empty() ? 0 : fr.crack.side[i]);
+    }
+    for (std::size_t j = 0; j < fr.crack.course_x.size(); ++j) {
+        cx.push_back(fr.crack.course_x[j] / d);
+        cy.push_back((fr.crack.course_y[j] - s.y_floor) / d);
+    }
+    FigureTable& t = F.emplace_back(FigureTable{"snapshot_" + tlabel(fr.t),
+        "disk centres (x, y above the removed floor), N_c over the last frame_dt, member of the frame's arch, side of the crack (-1 below, +1 above, 0 loose), run 0"});
+    t.add("x", "d", x);
+    t.add("y", "d", y);
+    t.add("Nc", "1/s", fr.rate);
+    t.add("arch", "1", in_arch);
+    t.add("crack_side", "1", side);
+    FigureTable& c = F.emplace_back(FigureTable{"crack_" + tlabel(fr.t), "course of the widest wall-to-wall crack (mid-height per slice of one diameter), run 0"});
+    c.add("x", "d", cx);
+    c.add("y", "d", cy);
+}
+
+} // namespace
+
+// Fits of Eqs. (21), (22) to P(N_c) pooled over the Fig. 14 times that lie, in this run, before
+// the first arch (panel a: "before the first arch (or crack) occurs") or after it (panel b: "when
+// cracks and arches exist"); a run without an arch has no panel (b). Then the same fits at each
+// time alone (Fig. 14 draws four times per panel); returns the histograms of those times.
+std::vector<RateHistogram> fit_fig14(SeedRun& out, const PipeArchingSpec& s, const Fall& fl) {
+    const double ddt = s.dist_dt, rmin = 1.0 / ddt; // one collision per window
+    const std::size_t n_before = s.dist_times_before.size();
+    auto hist_lin = [&](const std::vector<double>& rs) { return RateHistogram::per_count(rs, ddt, 200); };
+    auto hist_log = [&](const std::vector<double>& rs) {
+        return RateHistogram::make(rs, ddt, RateHistogram::Binning::Log, 30, 0.5 * rmin, 1.0e6);
+    };
+    const double hi_lin = (200 + 0.5) / ddt;
+    std::vector<double> before, after;
+    out.times_before = out.times_after = 0;
+    for (std::size_t k = 0; k < fl.dist_rates.size(); ++k) {
+        const std::vector<double>& rk = fl.dist_rates[k];
+        const bool arched = std::isfinite(out.t_arch) && fl.dist_t[k] >= out.t_arch - 1e-12;
+        if (k < n_before && !arched) { before.insert(before.end(), rk.begin(), rk.end()); out.times_before += 1; }
+        if (k >= n_before && arched) { after.insert(after.end(), rk.begin(), rk.end()); out.times_after += 1; }
+    }
+    using Model = CollisionRateFit::Model;
+    if (!before.empty()) {
+        const RateHistogram h = hist_lin(before);
+        const auto fe = try_fit(h, Model::Exponential, 0.5 * rmin, hi_lin), fp = try_fit(h, Model::PowerLaw, 0.5 * rmin, hi_lin);
+        if (fe) { out.A = fe->value; out.A_err = fe->error; out.A_chi2 = fe->chi2_reduced; out.dev_exp_early = fe->deviance; }
+        if (fp) out.dev_pow_early = fp->deviance;
+        out.mean_rate_early = std::accumulate(before.begin(), before.end(), 0.0) / double(before.size());
+    }
+    if (!after.empty()) {
+        const RateHistogram h = hist_log(after);
+        const auto fe = try_fit(h, Model::Exponential, 0.5 * rmin, 1.0e6), fp = try_fit(h, Model::PowerLaw, 0.5 * rmin, 1.0e6);
+        if (fp) { out.B = fp->value; out.B_err = fp->error; out.B_chi2 = fp->chi2_reduced; out.dev_pow_late = fp->deviance; }
+        if (fe) out.dev_exp_late = fe->deviance;
+    }
+    std::vector<RateHistogram> hs;
+    for (std::size_t k = 0; k < fl.dist_rates.size(); ++k) {
+        const bool early = k < n_before;
+        hs.push_back(early ? hist_lin(fl.dist_rates[k]) : hist_log(fl.dist_rates[k]));
+        const auto f = try_fit(hs.back(), early ? Model::Exponential : Model::PowerLaw, 0.5 * rmin, early ? hi_lin : 1.0e6);
+        out.per_time.push_back({fl.dist_t[k], f ? f->value : NAN, f ? f->error : NAN});
+    }
+    return hs;
+}
+
+// Run 0's tables: the relaxation, the Fig. 13 snapshots and their marks (the initiating disk, the
+// frame's arch, the crack), the timeline per frame, the Fig. 14 histograms.
+std::vector<FigureTable> figure_tables(const Pipe& s, const Fall& fl, const Relaxation& rel,
+                                       const std::vector<RateHistogram>& hs, int i_prec) {
+    std::vector<FigureTable> F{{"relaxation", "v̄ = sqrt(<v^2>) during the elastic relaxation, run 0"}};
+    F[0].add("t", "s", rel.t);
+    F[0].add("vbar", "m/s", rel.vbar);
+    std::vector<const Frame*> snaps;
+    for (long f = 1; f <= s.n_frames; ++f)
+        if (s.at(s.snapshot_times, f)) add_snapshot(F, s, *snaps.emplace_back(&fl.at(f)));
+    auto per_snap = [&](auto x) {
+        std::vector<double> v;
+        for (const Frame* fr : snaps) v.push_back(x(*fr));
+        return v;
+    };
+    auto arch_y = [](const Frame& fr) { return fr.arch.found ? fr.arch.y : NAN; };
+    auto opening = [&](const Frame& fr) { return fr.crack.course_x.empty() ? NAN : fr.crack.opening / s.d; };
+    auto initiator = [&](const Frame& fr) { return i_prec >= 0 ? fr.pos[std::size_t(i_prec)] : Vec2{NAN, NAN}; };
+    FigureTable& mk = F.emplace_back(FigureTable{"marks", "run 0 per Fig. 13 snapshot: initiating disk (x, y), arch height, crack opening"});
+    mk.add("t", "s", per_snap([](const Frame& fr) { return fr.t; }));
+    mk.add("initiator_x", "d", per_snap([&](const Frame& fr) { return initiator(fr).x / s.d; }));
+    mk.add("initiator_y", "d", per_snap([&](const Frame& fr) { return (initiator(fr).y - s.y_floor) / s.d; }));
+    mk.add("arch_y", "d", per_snap(arch_y));
+    mk.add("crack_opening", "d", per_snap(opening));
+    mk.add("crack_visible", "1", per_snap([&](const Frame& fr) { return opening(fr) >= s.crack_opening ? 1.0 : 0.0; }));
+    FigureTable& tl = F.emplace_back(FigureTable{"timeline", "run 0 per frame: hot disks, mean N_c, widest wall-to-wall crack, mean v_y, wall collisions, share of the weight carried by the walls, arch height"});
+    tl.add("t", "s", fl.per_frame(&Frame::t));
+    tl.add("hot", "1", fl.per_frame([](const Frame& fr) { return double(fr.hot.size()); }));
+    tl.add("hot_wall", "1", fl.per_frame([](const Frame& fr) { return double(fr.hot_wall.size()); }));
+    tl.add("mean", "1/s", fl.per_frame([](const Frame& fr) {
+        return std::accumulate(fr.rate.begin(), fr.rate.end(), 0.0) / double(fr.rate.size());
+    }));
+    tl.add("opening", "d", fl.per_frame(opening));
+    tl.add("vy", "m/s", fl.per_frame(&Frame::vy));
+    tl.add("wall_rate", "1/s", fl.per_frame(&Frame::wall_rate));
+    tl.add("wall_load", "1", fl.per_frame(&Frame::wall_load));
+    tl.add("arch_y", "d", fl.per_frame(arch_y));
+    for (std::size_t k = 0; k < hs.size(); ++k) {
+        FigureTable& h = F.emplace_back(FigureTable{"pnc_" + tlabel(fl.dist_t[k]), "P(N_c) over the last dist_dt, run 0"});
+        h.add("Nc", "1/s", hs[k].centres);
+        h.add("P", "s", hs[k].density);
+        h.add("err", "s", hs[k].error);
+    }
+    return F;
+}
+
+} // namespace granrepro::experiments::pipe_arching_detail

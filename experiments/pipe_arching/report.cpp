@@ -1,0 +1,300 @@
+// pipe-arching's report over the seeds: relaxation, Fig. 14's fits, the seed table, arch and crack times, Sec. 5's statements, costs.
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <iterator>
+#include <numeric>
+#include <string>
+#include <tuple>
+#include <utility>
+
+#include "analysis/seed_stats.hpp"
+#include "experiments/pipe_arching/spec.hpp"
+
+namespace granrepro::experiments::pipe_arching_detail {
+
+namespace {
+
+// f (a field or a function of a SeedRun) of every run.
+template <class F> std::vector<double> per_seed(const std::vector<SeedRun>& runs, F f) {
+    std::vector<double> v;
+    for (const auto& r : runs) v.push_back(std::invoke(f, r));
+    return v;
+}
+
+double fraction_below(const std::vector<double>& v, double x) {
+    double k = 0;
+    for (double y : v)
+        if (!std::isnan(y) && y <= x + 1e-12) ++k;
+    return k / double(v.size());
+}
+// Over the finite values, from running sums (seed_stats' two-pass mean_sd differs in the last bits).
+struct MeanSem {
+    double mean = NAN, sd = NAN, sem = NAN, n = 0;
+};
+MeanSem mean_sem(const std::vector<double>& v) {
+    MeanSem m;
+    double s = 0, s2 = 0;
+    for (double x : v)
+        if (std::isfinite(x)) { s += x; s2 += x * x; m.n += 1; }
+    if (m.n < 1) return m;
+    m.mean = s / m.n;
+    if (m.n < 2) return m;
+    m.sd = std::sqrt(std::max(0.0, (s2 - m.n * m.mean * m.mean) / (m.n - 1)));
+    m.sem = m.sd / std::sqrt(m.n);
+    return m;
+}
+// Share of the finite values for which pred holds (NaN if none is finite).
+template <class Pred> double share_finite(const std::vector<double>& v, Pred pred) {
+    double k = 0, n = 0;
+    for (double y : v)
+        if (std::isfinite(y)) { n += 1; k += pred(y) ? 1 : 0; }
+    return n > 0 ? k / n : NAN;
+}
+
+// v̄ at t = 0 over seeds, after the elastic relaxation.
+void report_relaxation(Result& res, const std::vector<SeedRun>& runs) {
+    const std::vector<double> v0s = per_seed(runs, &SeedRun::vbar0), vlate = per_seed(runs, &SeedRun::vbar_relax_late);
+    res.scalar("vbar_t0", median(v0s), "m/s", "v̄ = sqrt(<v^2>) at t = 0, median over seeds");
+    res.scalar("vbar_t0_run0", runs.front().vbar0, "m/s", "v̄ at t = 0, run 0");
+    res.scalar("vbar_relax_drift", median(v0s) / median(vlate) - 1, "1",
+               "v̄(0) over the mean v̄ of the last third of the relaxation, minus 1 (steadiness)");
+}
+
+// Fig. 14 per time: the fits at each time alone (run 0 with its error, median over seeds).
+void report_fig14_times(Result& res, const PipeArchingSpec& s, const std::vector<SeedRun>& runs) {
+    const SeedRun& f0 = runs.front();
+    const std::size_t n_before = s.dist_times_before.size();
+    Table& pt = res.table("fits_per_time", "Eq. (21) A (Fig. 14(a) times) or Eq. (22) B (Fig. 14(b) times) fitted at each time alone: run 0 with its standard error, and the median over seeds");
+    std::vector<double> tt, v0, e0, med;
+    for (std::size_t k = 0; k < f0.per_time.size(); ++k) {
+        const double t = f0.per_time[k].t;
+        tt.push_back(t);
+        v0.push_back(f0.per_time[k].value);
+        e0.push_back(f0.per_time[k].error);
+        med.push_back(median(per_seed(runs, [&](const SeedRun& r) { return r.per_time.at(k).value; })));
+        const std::string what = k < n_before ? "A_" : "B_", eq = k < n_before ? "Eq. (21)" : "Eq. (22)";
+        res.scalar(what + tlabel(t), v0.back(), "1/s", eq + " fit at this time alone, run 0");
+        res.scalar(what + "err_" + tlabel(t), e0.back(), "1/s", "its standard error");
+        res.scalar(what + tlabel(t) + "_median_seeds", med.back(), "1/s", eq + " fit at this time alone, median over seeds");
+    }
+    pt.add({{"t", "s", tt}, {"run0", "1/s", v0}, {"run0_err", "1/s", e0}, {"median_seeds", "1/s", med}});
+}
+
+// Fig. 14 pooled: Eqs. (21), (22) over each panel's four times, run 0 and over seeds (the
+// claims' values), in both readings of the paper's units.
+void report_fig14_fits(Result& res, const PipeArchingSpec& s, const std::vector<SeedRun>& runs) {
+    const SeedRun& f0 = runs.front();
+    const double ddt = s.dist_dt;
+    res.scalar("A_fit", f0.A, "1/s", "Eq. (21), pooled over the Fig. 14(a) times, run 0");
+    res.scalar("A_fit_err", f0.A_err, "1/s", "its standard error (Cramer-Rao)");
+    res.scalar("A_fit_chi2_reduced", f0.A_chi2, "1", "Pearson chi^2/dof of that fit");
+    res.scalar("B_fit", f0.B, "1/s", "Eq. (22), pooled over the Fig. 14(b) times, run 0");
+    res.scalar("B_fit_err", f0.B_err, "1/s", "its standard error (Cramer-Rao)");
+    res.scalar("B_fit_chi2_reduced", f0.B_chi2, "1", "Pearson chi^2/dof of that fit");
+    res.scalar("A_fit_per_window", f0.A * ddt, "1", "A in collisions per dist_dt window");
+    res.scalar("mean_Nc_before", f0.mean_rate_early, "1/s", "mean N_c at the Fig. 14(a) times, run 0");
+    const std::vector<double> As = per_seed(runs, &SeedRun::A), Bs = per_seed(runs, &SeedRun::B);
+    const auto BA = per_seed(runs, [](const SeedRun& r) { return r.B / r.A; });
+    // Deviance of the exponential over that of the power law: < 1 where Eq. (21) fits better.
+    const auto ratio_early = per_seed(runs, [](const SeedRun& r) { return r.dev_exp_early / r.dev_pow_early; });
+    const auto ratio_late = per_seed(runs, [](const SeedRun& r) { return r.dev_exp_late / r.dev_pow_late; });
+    res.scalar("fig14_times_before_median", median(per_seed(runs, &SeedRun::times_before)), "1", "Fig. 14(a) times before the run's first arch, pooled into A, median over seeds");
+    res.scalar("fig14_times_after_median", median(per_seed(runs, &SeedRun::times_after)), "1", "Fig. 14(b) times after the run's first arch, pooled into B, median over seeds");
+    res.scalar("A_fit_median_seeds", median(As), "1/s", "Eq. (21) A, median over seeds");
+    res.scalar("B_fit_median_seeds", median(Bs), "1/s", "Eq. (22) B, median over seeds");
+    res.scalar("B_over_A_median_seeds", median(BA), "1", "B/A per seed, median (unit-free)");
+    // The paper's numbers come from one run: where they fall in our distribution over seeds.
+    res.scalar("B_over_A_fraction_below_paper", share_finite(BA, [](double y) { return y <= 14.0; }), "1",
+               "fraction of seeds with B/A <= 14, the paper's value (its percentile in our distribution)");
+    res.scalar("B_fraction_below_paper", share_finite(Bs, [](double y) { return y <= 14.0e3; }), "1",
+               "fraction of seeds with B <= 14e3 1/s (the paper's B in reading 1)");
+    const MeanSem a = mean_sem(As), b = mean_sem(Bs), ba = mean_sem(BA);
+    res.scalar("A_fit_seed_sem", a.sem, "1/s", "standard error of the mean of A over seeds");
+    res.scalar("B_fit_seed_sem", b.sem, "1/s", "standard error of the mean of B over seeds");
+    res.scalar("B_over_A_seed_sem", ba.sem, "1", "standard error of the mean of B/A over seeds");
+    res.scalar("B_over_A_seed_sd", ba.sd, "1", "standard deviation of B/A over seeds");
+    // The two readings of the paper's 'A = 1, B = 14 s^-1' (Sec. 5): the axis in units of
+    // 1e3 1/s, or in collisions per window dist_dt.
+    res.scalar("A_in_1e3_per_s", median(As) / 1e3, "1", "A, median over seeds, in 1e3 1/s (reading 1: paper 1)");
+    res.scalar("B_in_1e3_per_s", median(Bs) / 1e3, "1", "B, median over seeds, in 1e3 1/s (reading 1: paper 14)");
+    res.scalar("A_per_window", median(As) * ddt, "1", "A, median over seeds, in collisions per dist_dt (reading 2: paper 1)");
+    res.scalar("B_per_window", median(Bs) * ddt, "1", "B, median over seeds, in collisions per dist_dt (reading 2: paper 14)");
+    Table& ft = res.table("fits", "Eqs. (21), (22) pooled over each panel's four times, as drawn in Fig. 14 and checked: median over seeds, standard error of the mean over seeds, run 0 with its fit error");
+    const std::vector<std::pair<const char*, double>> cols = {
+        {"A", median(As)}, {"A_sem", a.sem}, {"A_run0", f0.A}, {"A_run0_err", f0.A_err},
+        {"B", median(Bs)}, {"B_sem", b.sem}, {"B_run0", f0.B}, {"B_run0_err", f0.B_err}};
+    for (const auto& [name, x] : cols) ft.add(name, "1/s").values = {x};
+    ft.add({{"seeds", "1", {double(runs.size())}}, {"dist_dt", "s", {ddt}}});
+    res.scalar("exp_over_pow_deviance_before", median(ratio_early), "1",
+               "deviance of Eq. (21) over that of Eq. (22), Fig. 14(a) times, median over seeds (< 1: exponential fits better)");
+    res.scalar("exp_over_pow_deviance_after", median(ratio_late), "1",
+               "the same at the Fig. 14(b) times (> 1: power law fits better)");
+}
+
+void report_seed_table(Result& res, const std::vector<SeedRun>& runs) {
+    Table& st = res.table("seeds", "per seed: first hot wall disk, first arch (time, lab and initial height), its precursor, first crack (NaN: none before t_end)");
+    std::vector<double> index(runs.size());
+    std::iota(index.begin(), index.end(), 0.0);
+    st.add("seed_index", "1").values = index;
+    using S = SeedRun;
+    const std::vector<std::tuple<const char*, const char*, std::function<double(const SeedRun&)>>> cols = {
+        {"t_hot_wall", "s", &S::t_hot_wall}, {"t_precursor", "s", &S::t_precursor}, {"t_arch", "s", &S::t_arch},
+        {"y_arch", "d", &S::y_arch}, {"y0_arch", "d", &S::y0_arch}, {"arch_size", "1", &S::arch_size},
+        {"arch_foot_pressure_ratio", "1", [](const SeedRun& r) { return std::min(r.arch_pL, r.arch_pR); }},
+        {"react_lag", "s", &S::react_lag}, {"arch_left_4ms", "1", &S::arch_left_4ms}, {"plug_wall_load", "1", &S::plug_wall_load},
+        {"arch_brake", "m/s", &S::arch_brake}, {"opening_below", "d", &S::opening_below},
+        {"wall_slowdown_arch", "m/s", &S::wall_slowdown_arch}, {"opening_max_after", "d", &S::opening_max_after},
+        {"t_crack", "s", &S::t_crack}, {"y_crack", "d", &S::y_crack}, {"y0_crack", "d", &S::y0_crack},
+        {"crack_opening", "d", &S::crack_opening}, {"opening_max_before", "d", &S::opening_max_before},
+        {"opening_max_all", "d", &S::opening_max_all}, {"wave_steps", "1", &S::wave_steps},
+        {"wave_steps_up", "1", &S::wave_steps_up}, {"wave_stronger", "1", &S::wave_stronger},
+        {"friction_share", "1", &S::friction_share}, {"A", "1/s", &S::A},
+        {"B", "1/s", &S::B}, {"wall_seconds", "s", &S::wall_seconds}};
+    for (const auto& [name, unit, f] : cols) st.add(name, unit).values = per_seed(runs, f);
+}
+
+// First arch, its first hot wall disk and first crack over seeds: when (censored at t_end),
+// where, and where the paper's single run falls in that distribution.
+void report_arch_times(Result& res, const std::vector<SeedRun>& runs) {
+    const std::vector<double> ta = per_seed(runs, &SeedRun::t_arch), tp = per_seed(runs, &SeedRun::t_precursor);
+    const std::vector<double> tw = per_seed(runs, &SeedRun::t_hot_wall), tc = per_seed(runs, &SeedRun::t_crack);
+    const auto crack_after_arch = per_seed(runs, [](const SeedRun& r) { return r.t_crack - r.t_arch; });
+    const auto crack_near_arch = per_seed(runs, [](const SeedRun& r) { return std::abs(r.y0_crack - r.y0_arch); });
+    const auto precursor_lead = per_seed(runs, [](const SeedRun& r) { return r.t_arch - r.t_precursor; });
+    // Empirical distribution of the first-arch time over all seeds (those without an arch never count).
+    std::vector<double> tt, fr;
+    std::copy_if(ta.begin(), ta.end(), std::back_inserter(tt), [](double x) { return std::isfinite(x); });
+    std::sort(tt.begin(), tt.end());
+    for (std::size_t k = 0; k < tt.size(); ++k) fr.push_back(double(k + 1) / double(ta.size()));
+    Table& cd = res.table("arch_time_cdf", "fraction of seeds with an arch by time t");
+    cd.add({{"t_arch", "s", tt}, {"fraction", "1", fr}});
+    auto quartiles = [&](const std::string& name, const std::vector<double>& v, const std::string& what) {
+        res.scalar(name + "_q25", quantile(v, 0.25, NonFinite::censored), "s", what + ", lower quartile over seeds (none = +inf)");
+        res.scalar(name + "_median", quantile(v, 0.5, NonFinite::censored), "s", what + ", median over seeds");
+        res.scalar(name + "_q75", quantile(v, 0.75, NonFinite::censored), "s", what + ", upper quartile over seeds");
+    };
+    quartiles("t_arch", ta, "first arch");
+    quartiles("t_precursor", tp, "first hot wall disk of the first arch");
+    quartiles("t_hot_wall", tw, "first hot disk at a wall (any)");
+    quartiles("t_crack", tc, "first crack");
+    auto happened = [](const std::vector<double>& v) {
+        return 1 - double(std::count_if(v.begin(), v.end(), [](double x) { return std::isnan(x); })) / double(v.size());
+    };
+    res.scalar("arch_fraction", happened(ta), "1", "fraction of seeds with an arch before t_end");
+    res.scalar("crack_fraction", happened(tc), "1", "fraction of seeds with a crack before t_end");
+    res.scalar("arch_time_fraction_by_paper", fraction_below(ta, 0.056), "1",
+               "fraction of seeds whose first arch formed by the paper's 0.056 s (its percentile in our distribution)");
+    res.scalar("precursor_time_fraction_by_paper", fraction_below(tp, 0.048), "1",
+               "fraction of seeds whose arch's first hot wall disk appeared by the paper's 0.048 s");
+    res.scalar("crack_time_fraction_by_paper", fraction_below(tc, 0.060), "1",
+               "fraction of seeds with a crack by the paper's 0.060 s");
+    // Section 5 takes P(N_c) at 0.02-0.05 s as "before the first arch (or crack) occurs".
+    res.scalar("arch_by_0.05_fraction", fraction_below(ta, 0.05), "1",
+               "fraction of seeds whose first arch formed by 0.05 s, the last Fig. 14(a) time");
+    res.scalar("arch_height_median", median(per_seed(runs, &SeedRun::y_arch)), "d", "lab height of the first arch above the removed floor, median");
+    res.scalar("arch_initial_height_median", median(per_seed(runs, &SeedRun::y0_arch)), "d", "initial (t = 0) height of the first arch's disks, median");
+    res.scalar("crack_initial_height_median", median(per_seed(runs, &SeedRun::y0_crack)), "d", "initial height of the disks bounding the first crack, median");
+    res.scalar("precursor_lead_median", median(precursor_lead), "s", "first arch minus its first hot wall disk, median (paper: 0.008 s)");
+    res.scalar("crack_after_arch_median", median(crack_after_arch), "s", "first crack minus first arch, median over seeds with both (paper: ~0.004 s)");
+    res.scalar("crack_arch_height_offset_median", median(crack_near_arch), "d",
+               "|initial height of first crack - that of first arch|, median over seeds with both");
+    const SeedRun& f0 = runs.front();
+    res.scalar("t_arch_run0", f0.t_arch, "s", "first arch, run 0");
+    res.scalar("y_arch_run0", f0.y_arch, "d", "its lab height above the removed floor, run 0");
+    res.scalar("t_precursor_run0", f0.t_precursor, "s", "its first hot wall disk, run 0");
+    res.scalar("t_crack_run0", f0.t_crack, "s", "first crack, run 0");
+    res.scalar("y_crack_run0", f0.y_crack, "d", "its lab height, run 0");
+}
+
+// The section's other statements (Sec. 5), per seed, then over seeds.
+void report_section(Result& res, const std::vector<SeedRun>& runs) {
+    auto med = [&](double SeedRun::*f) { return median(per_seed(runs, f)); };
+    res.scalar("fluid_layers_median", med(&SeedRun::fluid_layers), "1",
+               "top rows at t = 0 in which at least half of the disks lost a lattice neighbour, median");
+    double broken = 0;
+    for (double x : per_seed(runs, &SeedRun::lattice_broken_below)) broken = std::max(broken, x);
+    res.scalar("lattice_broken_below_max", broken, "1", "share of the disks below those rows that lost a lattice neighbour, largest over seeds");
+    res.scalar("react_lag_median", med(&SeedRun::react_lag), "s",
+               "first frame with half of the initiating disk's neighbours hot, minus its first hot frame, median (paper: 0.004 s)");
+    res.scalar("arch_left_4ms_median", med(&SeedRun::arch_left_4ms), "1",
+               "share of the first arch's disks still hot 4 ms after it spanned the width, median");
+    // Later arches above and below are 0 or 1, and NaN together (no frame 4 ms after the first).
+    const auto above = per_seed(runs, &SeedRun::arch_above_later), below = per_seed(runs, &SeedRun::arch_below_later);
+    const auto both = per_seed(runs, [](const SeedRun& r) { return r.arch_above_later * r.arch_below_later; });
+    auto one = [](double y) { return y == 1.0; };
+    res.scalar("arch_above_later_fraction", share_finite(above, one), "1", "seeds with a later arch (after the first + 4 ms) more than arch_separation above the first");
+    res.scalar("arch_below_later_fraction", share_finite(below, one), "1", "the same below");
+    res.scalar("arch_above_and_below_fraction", share_finite(both, one), "1", "seeds with later arches both above and below");
+    res.scalar("plug_wall_load_median", med(&SeedRun::plug_wall_load), "1",
+               "wall impulse on the arch's plug within 4 ms of the arch over the plug's weight times that time, median (1: the walls hold the plug)");
+    const auto rel = per_seed(runs, [](const SeedRun& r) { return r.plug_wall_load / r.friction_share; });
+    res.scalar("plug_wall_load_over_mean_median", median(rel), "1",
+               "plug_wall_load over the column's wall share over the whole fall, per seed, median (> 1: the walls hold the plug harder than the column)");
+    res.scalar("arch_brake_median", med(&SeedRun::arch_brake), "m/s",
+               "largest gain of v_y(plug) - v_y(material below) within arch_window of the arch, median (> 0: the plug falls slower)");
+    res.scalar("opening_below_median", med(&SeedRun::opening_below), "d",
+               "largest growth of the distance between plug and material below within arch_window of the arch, median");
+    res.scalar("opening_max_before_median", med(&SeedRun::opening_max_before), "d",
+               "widest wall-to-wall crack before the first arch, median over seeds (the falling column's own gaps)");
+    res.scalar("opening_max_after_median", med(&SeedRun::opening_max_after), "d",
+               "widest wall-to-wall crack within arch_window after the first arch, median");
+    res.scalar("opening_max_all_median", med(&SeedRun::opening_max_all), "d",
+               "widest wall-to-wall crack at any frame from t_detect_min on, median over seeds");
+    // The distribution of the widest gap, not only crack yes/no (issue 27).
+    for (const auto& [name, f] : {std::pair{"opening_max_all", &SeedRun::opening_max_all}, std::pair{"opening_max_after", &SeedRun::opening_max_after}}) {
+        std::vector<double> v = per_seed(runs, f);
+        std::erase_if(v, [](double x) { return !std::isfinite(x); });
+        res.scalar(std::string(name) + "_q25", v.empty() ? NAN : quantile(v, 0.25, NonFinite::censored), "d", "its lower quartile over seeds");
+        res.scalar(std::string(name) + "_q75", v.empty() ? NAN : quantile(v, 0.75, NonFinite::censored), "d", "its upper quartile over seeds");
+        res.scalar(std::string(name) + "_max", v.empty() ? NAN : *std::max_element(v.begin(), v.end()), "d", "its largest value over seeds");
+    }
+    // Successive waves (arch_aftermath): the share of steps that rise, pooled over seeds, and the
+    // seeds in which a later wave is stronger than the first arch, among the seeds with an arch.
+    double steps = 0, up = 0;
+    for (const SeedRun& r : runs)
+        if (std::isfinite(r.wave_steps)) { steps += r.wave_steps; up += r.wave_steps_up; }
+    res.scalar("wave_steps_total", steps, "1", "steps between successive distinct arches, summed over seeds");
+    res.scalar("wave_ascend_share", steps > 0 ? up / steps : NAN, "1",
+               "share of those steps in which the new wave starts higher than the previous one");
+    res.scalar("wave_stronger_fraction", share_finite(per_seed(runs, &SeedRun::wave_stronger), [](double y) { return y == 1.0; }), "1",
+               "seeds in which a later wave (arch more than arch_separation from the first, after its first 4 ms) had more hot disks than the first arch, among seeds with an arch");
+    res.scalar("crack_below_arch_median", med(&SeedRun::crack_below_arch), "d",
+               "initial height of the first arch minus that of the first crack, median (> 0: crack below)");
+    res.scalar("crack_at_initiator_median", med(&SeedRun::crack_at_initiator), "d",
+               "crack course at the initiating disk's wall minus the disk's height, at the crack's first frame, median");
+    // Disks at the walls slow down (Sec. 5): v_y(wall) - v_y(inside) in the plug at the arch,
+    // against the same at the window's start; the mean difference over seeds and its z-score.
+    const MeanSem ws = mean_sem(per_seed(runs, &SeedRun::wall_slowdown_arch));
+    const MeanSem dd = mean_sem(per_seed(runs, [](const SeedRun& r) { return r.wall_slowdown_arch - r.wall_slowdown_before; }));
+    res.scalar("wall_slowdown_arch_mean", ws.mean, "m/s", "v_y(wall disks) - v_y(inner disks) of the plug at the arch, mean over seeds (> 0: wall disks slower)");
+    res.scalar("wall_slowdown_gain_mean", dd.mean, "m/s", "the same minus its value arch_window before the arch, mean over seeds");
+    res.scalar("wall_slowdown_gain_z", dd.sem > 0 ? dd.mean / dd.sem : NAN, "1", "that mean over its standard error (seed scatter)");
+    res.scalar("wall_load_peak_median", med(&SeedRun::wall_load_peak), "1",
+               "largest 5-frame mean of the walls' share of the weight, median over seeds");
+}
+
+// Momentum balance and costs.
+void report_costs(Result& res, const std::vector<SeedRun>& runs) {
+    const auto resid = per_seed(runs, [](const SeedRun& r) { return std::abs(r.momentum_residual); });
+    res.scalar("momentum_balance_residual_max", *std::max_element(resid.begin(), resid.end()), "1",
+               "max over seeds of |dP_y - (-M g t + J_wall)| / (M g t) over the fall");
+    res.scalar("wall_friction_share", median(per_seed(runs, &SeedRun::friction_share)), "1", "side-wall impulse over M g t_end, median (0: free fall)");
+    res.scalar("seconds_per_seed_median", median(per_seed(runs, &SeedRun::wall_seconds)), "s", "wall time of one seed (relaxation + fall)");
+    res.scalar("collisions_per_seed_median", median(per_seed(runs, &SeedRun::collisions)), "1", "pair collisions during the fall, median");
+    res.scalar("tc_elastic_share_median", median(per_seed(runs, &SeedRun::elastic_share)), "1", "share of the fall's pair collisions made elastic by TC");
+}
+
+} // namespace
+
+void report_seeds(Result& res, const PipeArchingSpec& s, const std::vector<SeedRun>& runs) {
+    report_relaxation(res, runs);
+    report_fig14_times(res, s, runs);
+    report_fig14_fits(res, s, runs);
+    report_seed_table(res, runs);
+    report_arch_times(res, runs);
+    report_section(res, runs);
+    report_costs(res, runs);
+}
+
+} // namespace granrepro::experiments::pipe_arching_detail
