@@ -1,5 +1,5 @@
 // The explicit table of experiments. To add one: write experiments/<name>.toml (parameters and
-// [outputs]), experiments/<name>.cpp (a protocol, harness/protocol.hpp, and a function returning
+// [outputs]), experiments/<name>/ (a protocol, harness/protocol.hpp, and a function returning
 // protocol_experiment<...>()), expected/<name>.toml (claims), plots/<figure-id>.gp, and add one
 // line below. ARCHITECTURE.md's worked example lists every step, CI's included.
 #include "harness/experiment.hpp"

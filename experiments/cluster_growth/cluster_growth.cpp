@@ -6,7 +6,7 @@
 // its distribution P(N_c) and the fits of Eqs. (20)-(22).
 //
 // C/N = sum of per-particle collision counts / N = 2 (pair collisions) / N. Why this reading:
-// Eq. (18) with the Enskog rate omega0 (experiments/cooling.cpp) gives
+// Eq. (18) with the Enskog rate omega0 (experiments/cooling/) gives
 // C/N = omega0 t0 ln(1 + t/t0) = 4/(1-r^2) ln(1 + t/t0) = 7.3 at t = 0.04 s, the paper's
 // "C/N = 8, i.e. t = 0.04 s"; counting a pair collision once would give 3.7.
 //

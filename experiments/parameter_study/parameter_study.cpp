@@ -5,12 +5,12 @@
 // reaches 1000. Measured: K(t), (K_x - K_y)/K, C/N and the TC-elastic collisions against t.
 //
 // C/N counts a pair collision for both partners: C/N = 2 (pair collisions) / N. The cluster-growth
-// run checks this reading against the paper's t = 0.64 s at C/N = 39 (experiments/cluster_growth.cpp).
+// run checks this reading against the paper's t = 0.64 s at C/N = 39 (experiments/cluster_growth/).
 //
 // Why K ∝ exp(-c C/N) (text above Fig. 8): with Eq. (18), K = K0/(1 + t/t0)^2, and a collision
 // rate per particle proportional to the mean speed, omega(t) = omega0 sqrt(K/K0) = omega0/(1+t/t0),
 // C/N = omega0 t0 ln(1 + t/t0), so K/K0 = exp(-2 (C/N)/(omega0 t0)). Kinetic theory gives
-// t0 = 4/((1 - r^2) omega0) (experiments/cooling.cpp), hence c = (1 - r^2)/2 per collision per
+// t0 = 4/((1 - r^2) omega0) (experiments/cooling/), hence c = (1 - r^2)/2 per collision per
 // particle, independent of density and of v̄: each collision removes (1 - r^2)/2 of the mean
 // normal-relative energy share. The paper writes exp(-C/N), i.e. up to this constant.
 #include <chrono>

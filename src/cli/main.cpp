@@ -108,7 +108,7 @@ struct CommonFlags {
             app->add_option("--set", sets, "override a parameter: --set name=value (repeatable)")
                 ->type_name("NAME=VALUE");
     }
-    // --points: experiments with a distributed sweep (marked distributed(...) in experiments/registry.cpp).
+    // --points: experiments with a distributed sweep (a protocol whose points are saved, harness/protocol.hpp).
     void add_points_to(CLI::App* app) {
         app->add_option("--points", points,
                         "compute only shard I of N of the sweep points into OUT/.<experiment>.checkpoint/, then "

@@ -1,4 +1,5 @@
-// An experiment: the C++ half of experiments/<name>.{toml,cpp}. It knows its physics set-up and
+// An experiment: the C++ half of experiments/<name>.toml and experiments/<name>/ (made by
+// protocol_experiment, harness/protocol.hpp). It knows its physics set-up and
 // which observables to compute; it knows nothing of files, plots or the command line.
 #pragma once
 #include <cstdint>
