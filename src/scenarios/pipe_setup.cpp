@@ -55,10 +55,7 @@ double pipe_time_step(const PipeSpec& s, const LinearSpringDashpot& law) {
     return law.collision_time(0.5 * m_min) / s.steps_per_contact;
 }
 
-PipeEngine<LinearSpringDashpot, CoulombShear> build_pipe(const PipeSpec& s) {
-    const LinearSpringDashpot law = pipe_law(s.k_N, s.e_N, s.m_mean);
-    PipeEngine<LinearSpringDashpot, CoulombShear> eng(law, CoulombShear{s.mu, s.friction_normal}, s.geo,
-                                                      pipe_time_step(s, law), s.skin);
+PipeStart pipe_start(const PipeSpec& s) {
     RngStream rng(s.seed, s.stream);
     const long n = pipe_grain_count(s);
     std::vector<std::pair<double, double>> sites = lattice_sites(s, n);
@@ -72,13 +69,22 @@ PipeEngine<LinearSpringDashpot, CoulombShear> build_pipe(const PipeSpec& s) {
     }
     const double mx = std::accumulate(vx.begin(), vx.end(), 0.0) / double(n);
     const double my = std::accumulate(vy.begin(), vy.end(), 0.0) / double(n);
+    PipeStart g;
     for (long i = 0; i < n; ++i) {
         const double d = s.d_mean * (1 + s.polydispersity * rng.uniform(-1, 1));
-        eng.add_grain(sites[std::size_t(i)].first, sites[std::size_t(i)].second, vx[std::size_t(i)] - mx,
-                      vy[std::size_t(i)] - my - s.v0, 0.5 * d, s.m_mean * (d / s.d_mean) * (d / s.d_mean));
+        g.x.push_back(sites[std::size_t(i)].first);
+        g.y.push_back(sites[std::size_t(i)].second);
+        g.vx.push_back(vx[std::size_t(i)] - mx);
+        g.vy.push_back(vy[std::size_t(i)] - my - s.v0);
+        g.radius.push_back(0.5 * d);
+        g.mass.push_back(s.m_mean * (d / s.d_mean) * (d / s.d_mean));
     }
-    eng.finalize();
-    return eng;
+    return g;
+}
+
+PipeEngine<LinearSpringDashpot, CoulombShear> build_pipe(const PipeSpec& s) {
+    const LinearSpringDashpot law = pipe_law(s.k_N, s.e_N, s.m_mean);
+    return build_pipe(s, law, CoulombShear{s.mu, s.friction_normal}, pipe_time_step(s, law));
 }
 
 } // namespace granrepro

@@ -2,7 +2,9 @@
 // a triangular lattice at the requested area fraction, random start velocities. Shared by the
 // bistable-pipe experiment and `granrepro bench soft`.
 #pragma once
+#include <cstddef>
 #include <cstdint>
+#include <vector>
 
 #include "engines/soft/pipe_engine.hpp"
 #include "models/coulomb_shear.hpp"
@@ -31,10 +33,28 @@ struct PipeSpec {
 // at k_N = 2000 N/m and m = 1 mg).
 LinearSpringDashpot pipe_law(double k_N, double e_N, double m_mean);
 
-// Triangular lattice between the wall crests, N sites chosen at random; diameters uniform in
-// d_mean (1 ± polydispersity), masses ∝ d^2 (uniform areal density) with m(d_mean) = m_mean.
-// dt = pipe_time_step(s, pipe_law(s.k_N, s.e_N, s.m_mean)): t_col / steps_per_contact of the
-// stiffest (lightest free-free) pair under that law, Eq. (5) [s].
+// The grains of the start: a triangular lattice between the wall crests, N sites chosen at
+// random; diameters uniform in d_mean (1 ± polydispersity), masses ∝ d^2 (uniform areal density)
+// with m(d_mean) = m_mean; random velocities of rms `agitation` about a mean -v0 along the pipe.
+// In the order they are added to the engine [m, m/s, kg].
+struct PipeStart {
+    std::vector<double> x, y, vx, vy, radius, mass;
+};
+PipeStart pipe_start(const PipeSpec& s);
+
+// The pipe with any contact laws (a normal law and a shear law, src/models/) and time step dt [s].
+template <class NormalLaw, class ShearLaw>
+PipeEngine<NormalLaw, ShearLaw> build_pipe(const PipeSpec& s, const NormalLaw& normal, const ShearLaw& shear, double dt) {
+    PipeEngine<NormalLaw, ShearLaw> eng(normal, shear, s.geo, dt, s.skin);
+    const PipeStart g = pipe_start(s);
+    for (std::size_t i = 0; i < g.x.size(); ++i) eng.add_grain(g.x[i], g.y[i], g.vx[i], g.vy[i], g.radius[i], g.mass[i]);
+    eng.finalize();
+    return eng;
+}
+
+// The paper's pipe: Eq. (1)'s linear law from (k_N, e_N) and Coulomb's Eq. (2) in the reading of
+// the spec, at dt = pipe_time_step(s, pipe_law(s.k_N, s.e_N, s.m_mean)): t_col / steps_per_contact
+// of the stiffest (lightest free-free) pair under that law, Eq. (5) [s].
 PipeEngine<LinearSpringDashpot, CoulombShear> build_pipe(const PipeSpec& s);
 double pipe_time_step(const PipeSpec& s, const LinearSpringDashpot& law);
 
