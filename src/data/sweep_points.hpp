@@ -45,6 +45,7 @@ struct PointRerun {
     long point = 0;
     bool aggregate = false;
     std::map<long, nlohmann::json> stored; // the other points' outcomes, for aggregate
+    std::vector<std::string> fingerprint_without; // parameters left out of `inputs` (added since the results)
     // Filled by the sweep:
     bool computed = false;
     long count = 0;          // points in the sweep

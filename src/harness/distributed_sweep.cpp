@@ -141,7 +141,7 @@ SweepResult rerun_point(const RunContext& ctx, const std::string& label, long n,
         throw InputError("--point " + std::to_string(v.point) + ": the sweep " + label + " now has " + std::to_string(n) +
                          " points (0 to " + std::to_string(n - 1) + ")");
     v.count = n;
-    v.inputs = sweep_point_inputs_hash(ctx, label, v.point, n);
+    v.inputs = sweep_point_inputs_hash(ctx, label, v.point, n, v.fingerprint_without);
     auto [value, cost] = timed(compute, v.point);
     v.outcome = nlohmann::json::parse(value.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace));
     v.cost = cost;

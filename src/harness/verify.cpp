@@ -69,10 +69,15 @@ void compare(const json& a, const json& b, const std::string& path, Comparison& 
             if (!b.contains(it.key())) c.diffs.push_back({p, shown(it.value()), "(absent)"});
             else compare(it.value(), b[it.key()], p, c);
         }
-        // A field the outcome gained after the results were made is new output, not a changed
-        // value: named, not counted as a difference (every stored value is still compared).
-        for (auto it = b.begin(); it != b.end(); ++it)
-            if (!a.contains(it.key()) && !is_timing_name(it.key())) c.added.push_back(path + "/" + it.key());
+        // A field the outcome gained after the results were made, left empty because the option
+        // that fills it is off (e.g. cooling's velocity_correlation), is named, not counted as a
+        // difference; one that holds anything is a difference as before.
+        for (auto it = b.begin(); it != b.end(); ++it) {
+            if (a.contains(it.key()) || is_timing_name(it.key())) continue;
+            const bool empty = it.value().is_null() || ((it.value().is_array() || it.value().is_object()) && it.value().empty());
+            if (empty) c.added.push_back(path + "/" + it.key());
+            else c.diffs.push_back({path + "/" + it.key(), "(absent)", shown(it.value())});
+        }
         return;
     }
     if (a.is_array() && b.is_array()) {
@@ -92,25 +97,22 @@ std::string number(double x, const char* format = "%.4g") {
     return b;
 }
 
+// The distinct last components of JSON paths ("/snapshots[3]/vc_n" -> "vc_n"), in first-seen order.
+std::vector<std::string> leaf_names(const std::vector<std::string>& paths) {
+    std::vector<std::string> names;
+    for (const auto& t : paths) {
+        const std::string leaf = t.substr(t.rfind('/') + 1);
+        if (std::find(names.begin(), names.end(), leaf) == names.end()) names.push_back(leaf);
+    }
+    return names;
+}
+
 // Prints the outcome of one comparison; returns true if identical.
 bool report(const std::string& what, const Comparison& c, bool same_version) {
     std::string timing;
-    if (!c.timing.empty()) {
-        std::vector<std::string> names;
-        for (const auto& t : c.timing) {
-            const std::string leaf = t.substr(t.rfind('/') + 1);
-            if (std::find(names.begin(), names.end(), leaf) == names.end()) names.push_back(leaf);
-        }
-        timing = "; not compared (timings, resume counts): " + joined(names);
-    }
-    if (!c.added.empty()) {
-        std::vector<std::string> names;
-        for (const auto& t : c.added) {
-            const std::string leaf = t.substr(t.rfind('/') + 1);
-            if (std::find(names.begin(), names.end(), leaf) == names.end()) names.push_back(leaf);
-        }
-        timing += "; new since the results were made (not stored, not compared): " + joined(names);
-    }
+    if (!c.timing.empty()) timing = "; not compared (timings, resume counts): " + joined(leaf_names(c.timing));
+    if (!c.added.empty())
+        timing += "; new since the results were made, empty (its option is off): " + joined(leaf_names(c.added));
     if (c.diffs.empty()) {
         std::printf("  %s: %ld values %s%s\n", what.c_str(), c.compared,
                     same_version ? "bit for bit identical" : "identical, value by value", timing.c_str());
@@ -146,13 +148,14 @@ struct TempDir {
 // (parameters added after the results were made), as TOML text, and their names. An added
 // parameter takes today's default: a new option that changes nothing unless asked for leaves the
 // point as it was, and one that changes it shows as a moved value.
-std::pair<std::string, std::string> added_parameters(const std::string& name, const fs::path& recorded) {
+std::pair<std::string, std::vector<std::string>> added_parameters(const std::string& name, const fs::path& recorded) {
     const fs::path today = project_root() / "experiments" / (name + ".toml");
     const toml::value had = parse_toml_file(recorded, "recorded experiment file");
     const toml::value now = parse_toml_file(today, "experiment file");
     const auto& had_params = toml::find(had, "parameters").as_table();
     std::ifstream in(today);
-    std::string text, names, line;
+    std::string text, line;
+    std::vector<std::string> names;
     bool copying = false;
     while (std::getline(in, line)) {
         if (!line.empty() && line[0] == '[') {
@@ -160,22 +163,11 @@ std::pair<std::string, std::string> added_parameters(const std::string& name, co
             const std::string header = line.substr(1, close == std::string::npos ? 0 : close - 1);
             const std::string key = header.rfind("parameters.", 0) == 0 ? header.substr(11) : "";
             copying = !key.empty() && toml::find(now, "parameters").as_table().count(key) && !had_params.count(key);
-            if (copying) names += (names.empty() ? "" : ", ") + key;
+            if (copying) names.push_back(key);
         }
         if (copying) text += line + "\n";
     }
     return {text, names};
-}
-
-// "a, b" -> {"a", "b"}.
-std::vector<std::string> split_names(const std::string& list) {
-    std::vector<std::string> out;
-    for (std::size_t at = 0; at < list.size();) {
-        const std::size_t comma = std::min(list.find(", ", at), list.size());
-        out.push_back(list.substr(at, comma - at));
-        at = comma + 2;
-    }
-    return out;
 }
 
 // The parameters as the run resolved them: the experiments/<name>.toml text stored in data.h5,
@@ -191,9 +183,9 @@ ParameterSet recorded_parameters(const Experiment& exp, const fs::path& h5, cons
     }
     if (const auto [text, names] = added_parameters(exp.name, file); !text.empty()) {
         std::ofstream(file, std::ios::app) << "\n" << text;
-        added = split_names(names);
+        added = names;
         std::fprintf(stderr, "granrepro: verify %s: parameters added since the results were made take today's defaults: %s\n",
-                     exp.name.c_str(), names.c_str());
+                     exp.name.c_str(), joined(names).c_str());
     }
     ParameterSet params = ParameterSet::load(file, scale);
     const json sets = summary.value("overridden_parameters", json::object());
@@ -337,12 +329,9 @@ PointRerun point_rerun(const Verification& v, const json& rec) {
 }
 
 // Compares the rerun point (and the scalars rebuilt with it) with what the results store.
-bool compare_point(const Verification& v, const RunContext& ctx, PointRerun& rerun, const json& rec,
+bool compare_point(const Verification& v, const PointRerun& rerun, const json& rec,
                    const std::optional<Result>& result) {
     bool same = true;
-    // Parameters added since the results were made are left out of the fingerprint: the recorded
-    // one could not hold them.
-    if (!v.added.empty()) rerun.inputs = sweep_point_inputs_hash(ctx, rerun.sweep, rerun.point, rerun.count, v.added);
     if (rerun.inputs == rec.value("inputs", "")) {
         std::printf("  inputs: fingerprint %s as recorded%s\n", rerun.inputs.c_str(),
                     v.added.empty() ? "" : (" (without the parameters added since: " + joined(v.added) + ")").c_str());
@@ -410,6 +399,9 @@ int verify_experiment(const VerifyOptions& opt) {
 
     const json& rec = chosen_point(v);
     PointRerun rerun = point_rerun(v, rec);
+    // Parameters added since the results were made are left out of the point's fingerprint: the
+    // recorded one could not hold them.
+    rerun.fingerprint_without = v.added;
     ctx.sweep.mode = SweepPlan::Mode::Verify;
     ctx.sweep.rerun = &rerun;
     const double recorded_cpu = rec["cost"].value("cpu_s", -1.0);
@@ -424,7 +416,7 @@ int verify_experiment(const VerifyOptions& opt) {
     } catch (const PointRerunDone&) {
     }
     if (!rerun.computed) throw std::runtime_error("verify " + name + ": the experiment ran no sweep point");
-    const bool same = compare_point(v, ctx, rerun, rec, result);
+    const bool same = compare_point(v, rerun, rec, result);
     std::printf("verify %s: point %ld %s\n", name.c_str(), rerun.point,
                 same ? (v.same_version ? "reproduced bit for bit" : "reproduced, value by value") : "differs");
     return same ? 0 : 1;
