@@ -2,10 +2,10 @@
 // crossings, the near-wall area fraction, the estimates below Eq. (9) and the time series.
 #include <algorithm>
 #include <cmath>
-#include <numeric>
 #include <string>
 
 #include "analysis/curve_analysis.hpp"
+#include "analysis/seed_stats.hpp"
 #include "data/parameter_set.hpp"
 #include "experiments/bistable_pipe/spec.hpp"
 
@@ -122,12 +122,10 @@ void report_branch_k(Result& r, const std::vector<double>& es, const std::string
     if (fast_branch) {
         // The fast branch's speed against 1/|ln e_N| ∝ 1/gamma_N: how much of its braking is the
         // dashpot's speed-independent friction impulse (brake-failure's high_v_plateau).
-        double mean = 0, sd = 0;
-        for (double x : v_ln_e) mean += x / double(v_ln_e.size());
-        for (double x : v_ln_e) sd += (x - mean) * (x - mean) / double(std::max<std::size_t>(1, v_ln_e.size() - 1));
-        r.scalar("fast_branch_v_ln_eN_" + kt, v_ln_e.empty() ? NAN : mean, "m/s",
+        const MeanSd vl = mean_sd(v_ln_e);
+        r.scalar("fast_branch_v_ln_eN_" + kt, vl.mean, "m/s",
                  "mean of v |ln e_N| over the fast branch's states (constant if v ∝ 1/gamma_N)");
-        r.scalar("fast_branch_v_ln_eN_cv_" + kt, v_ln_e.size() > 1 ? std::sqrt(sd) / mean : NAN, "1",
+        r.scalar("fast_branch_v_ln_eN_cv_" + kt, vl.sd / vl.mean, "1",
                  "its coefficient of variation over the states");
     }
     r.scalar(name + "_branch_states_" + kt, nc, "1", "steady states on the " + name + " branch (either start)");
@@ -172,7 +170,7 @@ void report_near_wall_phi(Result& r, const std::vector<RunResult>& results) {
     for (const RunResult& rr : results)
         if (rr.outcome == kSteady && std::isfinite(rr.phi_wall)) pw.push_back(rr.phi_wall);
     const auto [lo, hi] = std::minmax_element(pw.begin(), pw.end());
-    const double mean = pw.empty() ? NAN : std::accumulate(pw.begin(), pw.end(), 0.0) / double(pw.size());
+    const double mean = mean_sd(pw).mean;
     r.scalar("near_wall_phi_mean", mean, "1", "mean area fraction of the layer one diameter inside the wall crests, steady states");
     r.scalar("near_wall_phi_spread", pw.size() >= 2 ? (*hi - *lo) / mean : NAN, "1",
              "(largest - smallest) / mean of that near-wall area fraction over the steady states");

@@ -6,6 +6,7 @@
 #include <string>
 #include <tuple>
 
+#include "analysis/seed_stats.hpp"
 #include "data/parameter_set.hpp"
 #include "experiments/cluster_growth/spec.hpp"
 
@@ -14,7 +15,7 @@ namespace granrepro::experiments::cluster_growth_detail {
 namespace {
 
 RateHistogram histogram(const std::vector<double>& rate, double window, const ClusterSpec& s) {
-    const double mean = gsl_stats_mean(rate.data(), 1, rate.size());
+    const double mean = mean_sd(rate).mean;
     if (mean * window <= 30) {
         const double mx = *std::max_element(rate.begin(), rate.end());
         return RateHistogram::per_count(rate, window, int(std::ceil(mx * window)));
@@ -123,8 +124,9 @@ Instant make_instant(InstantRecord rec, const ClusterSpec& s) {
     std::size_t tail = 0;
     for (double r : in.rate)
         if (r > s.tail_rate) ++tail;
-    in.mean_rate = gsl_stats_mean(in.rate.data(), 1, n);
-    in.sd_rate = gsl_stats_sd(in.rate.data(), 1, n);
+    const MeanSd rate = mean_sd(in.rate);
+    in.mean_rate = rate.mean;
+    in.sd_rate = rate.sd;
     in.tail_fraction = double(tail) / double(n);
     in.hist = histogram(in.rate, in.window, s);
     in.poisson = fit(in.hist, CollisionRateFit::Model::Poisson);

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "analysis/seed_stats.hpp"
 #include "core/rng_stream.hpp"
 #include "experiments/cooling/spec.hpp"
 
@@ -31,21 +32,11 @@ double min_over(const std::vector<double>& v, const std::vector<double>& x, doub
     return std::accumulate(in.begin(), in.end(), HUGE_VAL, [](double a, double b) { return std::min(a, b); });
 }
 
-// Mean and sample standard deviation.
-std::array<double, 2> mean_sd(const std::vector<double>& v) {
-    double m = 0;
-    for (double x : v) m += x;
-    m /= double(v.size());
-    double s = 0;
-    for (double x : v) s += (x - m) * (x - m);
-    return {m, v.size() > 1 ? std::sqrt(s / double(v.size() - 1)) : NAN};
-}
-
 // The mean over seeds of v as `name`, and its seed standard deviation as name_sd.
 void add_mean_sd(Result& res, const std::string& name, const std::vector<double>& v, const std::string& what) {
-    const auto ms = mean_sd(v);
-    res.scalar(name, ms[0], "1", what);
-    res.scalar(name + "_sd", ms[1], "1", "its seed standard deviation");
+    const MeanSd ms = mean_sd(v, NonFinite::censored);
+    res.scalar(name, ms.mean, "1", what);
+    res.scalar(name + "_sd", ms.sd, "1", "its seed standard deviation");
 }
 
 namespace {

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "analysis/curve_analysis.hpp"
+#include "analysis/seed_stats.hpp"
 #include "experiments/cooling/spec.hpp"
 
 namespace granrepro::experiments::cooling_detail {
@@ -197,11 +198,11 @@ void add_loss_per_collision(Result& res, const CoolingSpec& c, const std::vector
             if (std::isfinite(q)) per_seed.push_back(q);
         }
         if (per_seed.empty()) continue;
-        const auto ms = mean_sd(per_seed);
+        const MeanSd ms = mean_sd(per_seed);
         lo.push_back(edges[w]);
         hi.push_back(edges[w + 1]);
-        ratio.push_back(ms[0]);
-        sd.push_back(ms[1]);
+        ratio.push_back(ms.mean);
+        sd.push_back(ms.sd);
     }
     Table& t = res.table("loss_per_collision", "energy lost per collision, DSMC over ED, windows of t/t0 (mean over seeds)");
     t.add({{"t_over_t0_begin", "1", lo}, {"t_over_t0_end", "1", hi}, {"dsmc_over_ed", "1", ratio}, {"dsmc_over_ed_sd", "1", sd}});

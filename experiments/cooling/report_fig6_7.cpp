@@ -108,7 +108,7 @@ void add_velocity_correlation(Result& res, const CoolingSpec& c, const std::vect
         std::vector<double> cn, ct, ca;
         for (const Trace& tr : trs)
             cn.push_back(tr.snaps[i].vc_n.front()), ct.push_back(tr.snaps[i].vc_t.front()), ca.push_back(tr.snaps[i].vc_a.front());
-        const MeanSd mn = granrepro::mean_sd(cn), mt = granrepro::mean_sd(ct), ma = granrepro::mean_sd(ca);
+        const MeanSd mn = mean_sd(cn), mt = mean_sd(ct), ma = mean_sd(ca);
         const std::string at = "_t" + number_text(snaps[i]);
         res.scalar(std::string(name) + "_vcorr_n_contact" + at, mn.mean, "1",
                    "C_n of pairs at d <= r < 1.1 d, mean over seeds (molecular chaos: 0)");
@@ -162,15 +162,15 @@ void add_ed_sk(Result& res, const std::vector<Trace>& eds, const std::vector<dou
         lns.push_back(std::log(growth.back()));
     }
     const Trace& ed = eds.front();
-    res.scalar("ed_Sk_growth_over_equilibrium", mean_sd(growth)[0], "1",
+    res.scalar("ed_Sk_growth_over_equilibrium", mean_sd(growth, NonFinite::censored).mean, "1",
                "mean S(1 <= k <= sk_k_max) at the last snapshot over the equilibrium S(0), ED, mean over seeds");
-    res.scalar("ed_Sk_t0_over_equilibrium", mean_sd(lattice)[0], "1",
+    res.scalar("ed_Sk_t0_over_equilibrium", mean_sd(lattice, NonFinite::censored).mean, "1",
                "the same at t = 0: below 1 where the long waves have not forgotten the lattice start");
     res.scalar("ed_Sk_small_k_growth", small_k_S(ed, ed.snaps.back(), k_small) / small_k_S(ed, ed.snaps.front(), k_small), "1",
                "mean S(k <= sk_k_max) at the last snapshot over that at t = 0 (lattice leftover), ED, first seed");
     add_mean_sd(res, "ed_Sk_change_after_20s", change,
                 "relative change of mean S(k <= sk_k_max) from t = 20 s to the last snapshot, ED, mean over seeds");
-    res.scalar("ed_Sk_log_seed_sd", mean_sd(lns)[1], "1",
+    res.scalar("ed_Sk_log_seed_sd", mean_sd(lns, NonFinite::censored).sd, "1",
                "seed standard deviation of ln(mean S_ED(k <= sk_k_max)) at the last snapshot: the run-to-run scatter of one run");
 }
 
@@ -196,9 +196,9 @@ void add_sk_agreement(Result& res, const std::vector<Trace>& eds, const std::vec
     t.add({{"seed_index", "1", idx}, {"S_ed_20s", "1", e20}, {"S_ed_last", "1", elast}, {"S_dsmc_20s", "1", d20},
            {"S_dsmc_last", "1", dlast}, {"mean_ln_ratio_last", "1", m_last}});
     add_mean_sd(res, "Sk_dsmc_over_ed_log", m_last, "ln(S_DSMC/S_ED) averaged over 1 <= k <= sk_k_max at the last snapshot, mean over seeds");
-    res.scalar("Sk_dsmc_over_ed_factor", std::exp(mean_sd(m_last)[0]), "1", "exp of Sk_dsmc_over_ed_log: DSMC's S(k <= sk_k_max) in units of ED's");
+    res.scalar("Sk_dsmc_over_ed_factor", std::exp(mean_sd(m_last, NonFinite::censored).mean), "1", "exp of Sk_dsmc_over_ed_log: DSMC's S(k <= sk_k_max) in units of ED's");
     if (!m_20.empty()) add_mean_sd(res, "Sk_dsmc_over_ed_log_20s", m_20, "the same at t = 20 s");
-    res.scalar("Sk_ed_dsmc_mean_abs_log_ratio", mean_sd(abs_last)[0], "1",
+    res.scalar("Sk_ed_dsmc_mean_abs_log_ratio", mean_sd(abs_last, NonFinite::censored).mean, "1",
                "mean |ln(S_ED/S_DSMC)| over 1 <= k <= sk_k_max at the last snapshot, mean over seeds");
     add_mean_sd(res, "dsmc_Sk_change_after_20s", d_change,
                 "relative change of mean S(k <= sk_k_max) from t = 20 s to the last snapshot, DSMC, mean over seeds");
@@ -219,9 +219,9 @@ void add_cell_imprint(Result& res, const CoolingSpec& c, const Setup& s, const s
     }
     res.scalar("dsmc_cells_per_side", cells, "1", "DSMC cells per box side");
     res.scalar("dsmc_cell_shell", kc, "1", "the S(k) shell of the cell lattice (box/cell, aliased into 1..M/2)");
-    res.scalar("dsmc_Sk_cell_imprint", mean_sd(imprint)[0], "1",
+    res.scalar("dsmc_Sk_cell_imprint", mean_sd(imprint, NonFinite::censored).mean, "1",
                "S at the cell shell over the geometric mean of the flanks at 0.75 and 1.25 of it, last snapshot, DSMC, mean over seeds");
-    res.scalar("ed_Sk_cell_imprint_control", mean_sd(imprint_ed)[0], "1", "the same measure on ED's S(k) (no cells)");
-    res.scalar("dsmc_Sk_cell_imprint_over_ed", mean_sd(imprint)[0] / mean_sd(imprint_ed)[0], "1", "DSMC's contrast at the cell shell over ED's there (1: no imprint)");
+    res.scalar("ed_Sk_cell_imprint_control", mean_sd(imprint_ed, NonFinite::censored).mean, "1", "the same measure on ED's S(k) (no cells)");
+    res.scalar("dsmc_Sk_cell_imprint_over_ed", mean_sd(imprint, NonFinite::censored).mean / mean_sd(imprint_ed, NonFinite::censored).mean, "1", "DSMC's contrast at the cell shell over ED's there (1: no imprint)");
 }
 } // namespace granrepro::experiments::cooling_detail

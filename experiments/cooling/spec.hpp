@@ -168,7 +168,6 @@ Result report_dsmc_only(const CoolingSpec& c, const std::vector<Trace>& dss);
 double mean_over(const std::vector<double>& v, const std::vector<double>& x, double lo, double hi);
 double max_over(const std::vector<double>& v, const std::vector<double>& x, double lo, double hi);
 double min_over(const std::vector<double>& v, const std::vector<double>& x, double lo, double hi);
-std::array<double, 2> mean_sd(const std::vector<double>& v);
 void add_mean_sd(Result& res, const std::string& name, const std::vector<double>& v, const std::string& what);
 
 // report_fig2.cpp: K(t) against Eq. (18), a2, DSMC against ED.

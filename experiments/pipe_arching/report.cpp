@@ -28,22 +28,6 @@ double fraction_below(const std::vector<double>& v, double x) {
         if (!std::isnan(y) && y <= x + 1e-12) ++k;
     return k / double(v.size());
 }
-// Over the finite values, from running sums (seed_stats' two-pass mean_sd differs in the last bits).
-struct MeanSem {
-    double mean = NAN, sd = NAN, sem = NAN, n = 0;
-};
-MeanSem mean_sem(const std::vector<double>& v) {
-    MeanSem m;
-    double s = 0, s2 = 0;
-    for (double x : v)
-        if (std::isfinite(x)) { s += x; s2 += x * x; m.n += 1; }
-    if (m.n < 1) return m;
-    m.mean = s / m.n;
-    if (m.n < 2) return m;
-    m.sd = std::sqrt(std::max(0.0, (s2 - m.n * m.mean * m.mean) / (m.n - 1)));
-    m.sem = m.sd / std::sqrt(m.n);
-    return m;
-}
 // Share of the finite values for which pred holds (NaN if none is finite).
 template <class Pred> double share_finite(const std::vector<double>& v, Pred pred) {
     double k = 0, n = 0;
@@ -109,7 +93,7 @@ void report_fig14_fits(Result& res, const PipeArchingSpec& s, const std::vector<
                "fraction of seeds with B/A <= 14, the paper's value (its percentile in our distribution)");
     res.scalar("B_fraction_below_paper", share_finite(Bs, [](double y) { return y <= 14.0e3; }), "1",
                "fraction of seeds with B <= 14e3 1/s (the paper's B in reading 1)");
-    const MeanSem a = mean_sem(As), b = mean_sem(Bs), ba = mean_sem(BA);
+    const MeanSd a = mean_sd(As), b = mean_sd(Bs), ba = mean_sd(BA);
     res.scalar("A_fit_seed_sem", a.sem, "1/s", "standard error of the mean of A over seeds");
     res.scalar("B_fit_seed_sem", b.sem, "1/s", "standard error of the mean of B over seeds");
     res.scalar("B_over_A_seed_sem", ba.sem, "1", "standard error of the mean of B/A over seeds");
@@ -265,8 +249,8 @@ void report_section(Result& res, const std::vector<SeedRun>& runs) {
                "crack course at the initiating disk's wall minus the disk's height, at the crack's first frame, median");
     // Disks at the walls slow down (Sec. 5): v_y(wall) - v_y(inside) in the plug at the arch,
     // against the same at the window's start; the mean difference over seeds and its z-score.
-    const MeanSem ws = mean_sem(per_seed(runs, &SeedRun::wall_slowdown_arch));
-    const MeanSem dd = mean_sem(per_seed(runs, [](const SeedRun& r) { return r.wall_slowdown_arch - r.wall_slowdown_before; }));
+    const MeanSd ws = mean_sd(per_seed(runs, &SeedRun::wall_slowdown_arch));
+    const MeanSd dd = mean_sd(per_seed(runs, [](const SeedRun& r) { return r.wall_slowdown_arch - r.wall_slowdown_before; }));
     res.scalar("wall_slowdown_arch_mean", ws.mean, "m/s", "v_y(wall disks) - v_y(inner disks) of the plug at the arch, mean over seeds (> 0: wall disks slower)");
     res.scalar("wall_slowdown_gain_mean", dd.mean, "m/s", "the same minus its value arch_window before the arch, mean over seeds");
     res.scalar("wall_slowdown_gain_z", dd.sem > 0 ? dd.mean / dd.sem : NAN, "1", "that mean over its standard error (seed scatter)");

@@ -1,7 +1,7 @@
 // Statistics of a sample (over seeds, states or repeated timings): median, quantile, and mean,
 // standard deviation and standard error of the mean.
 //
-// NaN policy, an argument of median and quantile (mean_sd always skips):
+// NaN policy, an argument of median, quantile and mean_sd:
 //   NonFinite::skip (the default): NaN and +-inf are dropped first; what remains is the sample
 //     (a value that could not be measured does not enter). Nothing left: the statistic is NaN.
 //   NonFinite::censored: NaN means "did not happen before the end" and counts as +inf (so it
@@ -47,11 +47,14 @@ inline double quantile(std::vector<double> v, double q, NonFinite policy = NonFi
     return a + (pos - double(lo)) * (b - a);
 }
 
-// n, mean, sample sd (1/(n - 1)) and sem = sd / sqrt(n), from GSL's two-pass gsl_stats_mean and
-// gsl_stats_sd, over the finite values (a censored sample has no mean).
+// n, mean, sample sd (1/(n - 1)) and sem = sd / sqrt(n), from GSL's gsl_stats_mean and
+// gsl_stats_sd. `skip`: over the finite values. `censored`: a sample holding a non-finite value
+// (a time that did not happen before the end) has no mean, so all but n are NaN.
 struct MeanSd { double n = 0, mean = NAN, sd = NAN, sem = NAN; };
-inline MeanSd mean_sd(std::vector<double> v) {
-    std::erase_if(v, [](double x) { return !std::isfinite(x); });
+inline MeanSd mean_sd(std::vector<double> v, NonFinite policy = NonFinite::skip) {
+    const auto non_finite = [](double x) { return !std::isfinite(x); };
+    if (policy == NonFinite::censored && std::any_of(v.begin(), v.end(), non_finite)) return {double(v.size())};
+    std::erase_if(v, non_finite);
     MeanSd m{double(v.size())};
     if (v.size() >= 1) m.mean = gsl_stats_mean(v.data(), 1, v.size());
     if (v.size() >= 2) m.sd = gsl_stats_sd(v.data(), 1, v.size()), m.sem = m.sd / std::sqrt(m.n);

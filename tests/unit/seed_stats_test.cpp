@@ -76,4 +76,16 @@ TEST(SeedStats, MeanSdSmallAndNonFinite) {
     EXPECT_DOUBLE_EQ(skipped.sem, 1);
 }
 
+// A censored sample (a departure that never happened) has no mean; a complete one is unaffected.
+TEST(SeedStats, MeanSdCensoredHasNoMeanWithAMissingValue) {
+    const MeanSd censored = mean_sd({1, nan, 3}, NonFinite::censored);
+    EXPECT_EQ(censored.n, 3);
+    EXPECT_TRUE(std::isnan(censored.mean));
+    EXPECT_TRUE(std::isnan(censored.sd));
+    EXPECT_TRUE(std::isnan(mean_sd({1, inf}, NonFinite::censored).mean));
+    const MeanSd complete = mean_sd({1, 2, 6}, NonFinite::censored);
+    EXPECT_DOUBLE_EQ(complete.mean, 3);
+    EXPECT_DOUBLE_EQ(complete.sd, std::sqrt(7.0));
+}
+
 } // namespace
