@@ -4,10 +4,12 @@
 #include <cmath>
 #include <gsl/gsl_fit.h>
 #include <numeric>
+#include <optional>
 
 #include "analysis/curve_analysis.hpp"
 #include "engines/soft/pipe_engine.hpp"
 #include "experiments/bistable_pipe/spec.hpp"
+#include "harness/sampled_run.hpp"
 #include "models/coulomb_shear.hpp"
 #include "models/linear_spring_dashpot.hpp"
 #include "scenarios/impact_shot.hpp"
@@ -128,6 +130,22 @@ double stable_crossing(const std::vector<double>& grid, const std::vector<double
     return std::isfinite(best) ? best : NAN;
 }
 
+// The pipe engine takes steps; SampledRun asks for run_until. Like a step loop that tests the
+// budget before each step, and ends a stretch at the first step that comes within half a step of
+// t; the observer sees every step.
+struct BudgetedSteps {
+    Engine& eng;
+    double budget; // [s]
+    template <class OnStep>
+    void run_until(double t, OnStep&& on_step) {
+        while (eng.time() < budget) {
+            eng.step();
+            on_step();
+            if (eng.time() + 0.5 * eng.dt() >= t) return;
+        }
+    }
+};
+
 } // namespace
 
 // Runs one start until it is steady, falls freely, passes v_abort or exhausts its budget. Steady:
@@ -148,10 +166,8 @@ RunResult run_pipe(const PipeSpec& s, double t_budget, double eq9_window, double
     // diameter inward from the wall grains' crests; a grain counts whole when its centre is inside.
     const double layer_in = s.geo.wall_radius + s.d_mean, layer_area = 2 * s.d_mean * s.geo.length;
     double xi = 0; // largest overlap ratio since the last sample
-    while (eng.time() < t_budget) {
-        eng.step();
-        xi = std::max(xi, eng.max_overlap_ratio());
-        if (eng.time() + 0.5 * eng.dt() < next) continue;
+    auto sample = [&](long, double) {
+        if (eng.time() + 0.5 * eng.dt() < next) return true; // the budget ran out first
         r.xq.push_back(xi);
         r.xi_max = std::max(r.xi_max, xi);
         xi = 0;
@@ -168,14 +184,14 @@ RunResult run_pipe(const PipeSpec& s, double t_budget, double eq9_window, double
         r.v.push_back(v / double(n));
         r.sx.push_back(std::sqrt(sx / double(n)));
         walls.take(eng);
-        if (std::abs(r.v.back()) > s.v_abort) break;
+        if (std::abs(r.v.back()) > s.v_abort) return true;
         const std::size_t m = r.t.size();
-        if (m <= per_window) continue;
+        if (m <= per_window) return false;
         const double drift = slope(r.t, r.v, m - per_window);
         // A plug in free fall: accelerating at g and not one wall impact over the window.
         if (std::abs(drift + s.geo.gravity) < s.drift_tol && walls.sum(m - per_window, m).impacts == 0) {
             free_fall = true;
-            break;
+            return true;
         }
         if (std::isnan(steady_since)) {
             if (std::abs(drift) < s.drift_tol) {
@@ -188,10 +204,14 @@ RunResult run_pipe(const PipeSpec& s, double t_budget, double eq9_window, double
             // Confirm over the averaging window itself: a plateau that happened to fill the
             // detection window but keeps drifting afterwards is not a steady state; search on.
             const std::size_t from = sample_after(r.t, steady_since);
-            if (m - from >= 3 && std::abs(slope(r.t, r.v, from)) < s.drift_tol) break;
+            if (m - from >= 3 && std::abs(slope(r.t, r.v, from)) < s.drift_tol) return true;
             steady_since = NAN;
         }
-    }
+        return false;
+    };
+    BudgetedSteps steps{eng, t_budget};
+    SampledRun<>().run(steps, [&](long) { return std::optional(next); }, [&] { xi = std::max(xi, eng.max_overlap_ratio()); },
+                       sample, t_budget);
     const std::size_t m = r.t.size();
     r.steps = eng.steps();
     r.list_builds = eng.list_builds();

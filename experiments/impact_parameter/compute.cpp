@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -13,6 +14,7 @@
 #include "engines/ed/ed_engine.hpp"
 #include "engines/ed/ed_initial_states.hpp"
 #include "experiments/impact_parameter/spec.hpp"
+#include "harness/sampled_run.hpp"
 #include "observables/impact_parameter_histogram.hpp"
 #include "scenarios/ed_gas.hpp"
 #include "scenarios/hard_sphere_lattice.hpp"
@@ -150,9 +152,11 @@ PointResult cooling_run(const ImpactSpec& s, EdEngine& e, double l, bool figure_
     PointResult out;
     out.k0 = e.kinetic_energy().kx + e.kinetic_energy().ky;
     const std::vector<double> mass(static_cast<std::size_t>(s.N), s.m);
+    stops.push_back(t0 + t_end); // the end, not sampled
     std::size_t next_snap = 0;
-    for (double ts : stops) {
-        e.run_until(ts, observe);
+    auto stop_at = [&](long i) { return std::size_t(i) < stops.size() ? std::optional(stops[std::size_t(i)]) : std::nullopt; };
+    SampledRun<>().run(e, stop_at, observe, [&](long i, double ts) {
+        if (std::size_t(i) + 1 == stops.size()) return true;
         if (next_snap < snaps.size() && ts == snaps[next_snap]) {
             stress.add_snapshot(e.positions(), e.velocities(), mass);
             ++next_snap;
@@ -161,8 +165,8 @@ PointResult cooling_run(const ImpactSpec& s, EdEngine& e, double l, bool figure_
             out.k_t.push_back(ts - t0);
             out.k_val.push_back(k.kx + k.ky);
         }
-    }
-    e.run_until(t0 + t_end, observe);
+        return false;
+    }, t0 + t_end);
     for (std::size_t w = 0; w < s.n_windows(); ++w) out.counts.push_back(hist.window(w).counts);
     out.pair_collisions = e.total_collisions() - c_before;
     out.elastic_by_tc = e.elastic_collisions() - el_before;

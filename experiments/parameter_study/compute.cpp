@@ -2,12 +2,14 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 
 #include "core/rng_stream.hpp"
 #include "engines/ed/ed_engine.hpp"
 #include "engines/ed/ed_initial_states.hpp"
 #include "experiments/parameter_study/spec.hpp"
+#include "harness/sampled_run.hpp"
 #include "scenarios/ed_gas.hpp"
 
 namespace granrepro::experiments::parameter_study_detail {
@@ -22,6 +24,11 @@ Trace run_point(const ParameterStudySpec& s, const Point& pt, std::uint64_t seed
         equilibrated_lattice_gas(L, maxwellian_velocities(mass, s.vbar, rng), rad, mass, s.vbar, s.equilibration);
     EdEngine eng(rough_disk_box(L, pt.r, s.mu, pt.t_c), gas.pos, gas.vel, rad, mass); // t = 0: dissipation switched on
 
+    // The sampling loop's clock here is the count of pair collisions.
+    struct CollisionClock {
+        EdEngine& eng;
+        void run_until(double count, NoCollisionObserver) { eng.run_collisions(std::uint64_t(count) - eng.total_collisions()); }
+    } collisions{eng};
     Trace tr;
     auto sample = [&] {
         const EdKineticEnergy k = eng.kinetic_energy();
@@ -36,13 +43,14 @@ Trace run_point(const ParameterStudySpec& s, const Point& pt, std::uint64_t seed
     const auto target = std::uint64_t(std::ceil(s.cn_end * double(n) / 2.0));
     // Samples every 0.2 collisions per particle early (Fig. 8(a) is linear in C/N) and every 1 %
     // of the collisions later (Fig. 9(b) is logarithmic in C/N): ~500 samples per run.
+    auto next_count = [&](long) -> std::optional<double> {
+        const std::uint64_t done = eng.total_collisions();
+        if (done >= target) return std::nullopt;
+        const std::uint64_t chunk = std::max<std::uint64_t>({1, n / 10, done / 100});
+        return double(done + std::min(chunk, target - done)); // exact: counts stay far below 2^53
+    };
     try {
-        while (eng.total_collisions() < target) {
-            const std::uint64_t done = eng.total_collisions();
-            const std::uint64_t chunk = std::max<std::uint64_t>({1, n / 10, done / 100});
-            eng.run_collisions(std::min(chunk, target - done));
-            sample();
-        }
+        SampledRun<>().run(collisions, next_count, NoCollisionObserver{}, [&](long, double) { sample(); return false; }, NAN);
     } catch (const std::runtime_error& e) {
         // The collapse guard: keep what was measured and report the reason.
         tr.error = e.what();

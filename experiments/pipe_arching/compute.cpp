@@ -3,13 +3,14 @@
 #include <chrono>
 #include <cmath>
 #include <numeric>
+#include <optional>
 
 #include "analysis/disjoint_sets.hpp"
 #include "core/rng_stream.hpp"
 #include "engines/ed/ed_engine.hpp"
 #include "engines/ed/ed_initial_states.hpp"
 #include "experiments/pipe_arching/spec.hpp"
-#include "harness/progress.hpp"
+#include "harness/sampled_run.hpp"
 #include "observables/collision_counter.hpp"
 
 namespace granrepro::experiments::pipe_arching_detail {
@@ -74,14 +75,15 @@ EdEngine build_column(const Pipe& s, const std::vector<Vec2>& lat, std::uint64_t
 constexpr int kRelaxSamples = 60;
 Relaxation relax(EdEngine& eng, double t_r) {
     Relaxation rel;
-    for (int k = 0; k <= kRelaxSamples; ++k) {
-        eng.run_until(-t_r + t_r * k / kRelaxSamples);
+    auto at = [&](long k) { return k <= kRelaxSamples ? std::optional(-t_r + t_r * double(k) / kRelaxSamples) : std::nullopt; };
+    SampledRun<>().run(eng, at, NoCollisionObserver{}, [&](long, double) {
         const std::vector<Vec2> vel = eng.velocities();
         double s = 0;
         for (const Vec2& v : vel) s += norm2(v);
         rel.t.push_back(eng.time());
         rel.vbar.push_back(std::sqrt(s / double(vel.size())));
-    }
+        return false;
+    }, 0.0);
     return rel;
 }
 
@@ -176,13 +178,12 @@ Fall fall(EdEngine& eng, const Pipe& s) {
             hits.push_back({k.t, k.ri.y, -1 - k.j});
         }
     };
-    for (long f = 1; f <= s.n_frames; ++f) {
-        const double t = s.t(f);
+    // Frame f's sums start when the previous frame is taken (frame 0: the release).
+    auto frame_at = [&](long i) { return i < s.n_frames ? std::optional(s.t(i + 1)) : std::nullopt; };
+    SampledRun<>().run(eng, frame_at, obs, [&](long i, double t) {
+        const long f = i + 1;
         Frame& fr = fl.frames[std::size_t(f)];
         fr.t = t;
-        std::fill(wall_jy.begin(), wall_jy.end(), 0.0);
-        eng.run_until(t, obs);
-        report_engine_time(t, s.t_end);
         fr.rate = counter.rates(t, fdt);
         fr.pos = eng.positions();
         const std::vector<Vec2> v = eng.velocities();
@@ -198,7 +199,9 @@ Fall fall(EdEngine& eng, const Pipe& s) {
         for (const Vec2& x : v) fr.vy += x.y;
         fr.vy /= double(n);
         fr.wall_rate = double(hits.size()) / fdt / double(n);
-    }
+        std::fill(wall_jy.begin(), wall_jy.end(), 0.0);
+        return false;
+    }, s.t_end);
     return fl;
 }
 

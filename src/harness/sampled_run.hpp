@@ -15,8 +15,14 @@
 //   if (run.resume(saved, trace)) engine.restore_state(saved);
 //   run.run(engine, trace, [&](long i) { return i < n ? std::optional(times[i]) : std::nullopt; },
 //           observer, [&](long i, double t) { ...record...; return false; /* true: stop */ });
+//
+// A run short enough to redo whole (a sweep point is the unit of resumption) uses the same loop
+// without a checkpoint: SampledRun<> run; run.run(engine, trigger, observer, sample, t_end).
+// Any engine with run_until(t, observer) fits; a time-stepped engine is given one by an adapter.
 #pragma once
 #include <chrono>
+#include <cmath>
+#include <concepts>
 #include <optional>
 #include <string>
 #include <utility>
@@ -28,11 +34,18 @@
 
 namespace granrepro {
 
-template <HasFields Carry>
+// The carry of a run without a checkpoint.
+struct NoCarry {
+    template <class V>
+    void fields(V&&) {}
+};
+
+template <HasFields Carry = NoCarry>
 class SampledRun {
 public:
+    SampledRun() requires std::same_as<Carry, NoCarry> : start_(std::chrono::steady_clock::now()) {}
     SampledRun(RunCheckpoint& checkpoint, std::string schema, long version)
-        : checkpoint_(checkpoint), schema_(std::move(schema)), version_(version), start_(std::chrono::steady_clock::now()) {}
+        : checkpoint_(&checkpoint), schema_(std::move(schema)), version_(version), start_(std::chrono::steady_clock::now()) {}
 
     // Loads the checkpoint, if there is one, into `engine_state` and `carry` and returns true.
     // Reads into temporaries first: a file that fails half-way leaves the fresh start intact.
@@ -42,7 +55,7 @@ public:
         Carry saved;
         long next = 0;
         double wall = 0;
-        const bool resumed = checkpoint_.load([&](const H5Object& root) {
+        const bool resumed = checkpoint_->load([&](const H5Object& root) {
             root.require_schema(schema_, version_);
             next = root.read_long_attr("next_sample");
             wall = root.read_double_attr("wall_seconds");
@@ -58,7 +71,8 @@ public:
     }
 
     // Samples at trigger(i) for i = next_sample(), next_sample() + 1, ... until the trigger gives
-    // no time or sample(i, t) returns true. observer sees every collision on the way.
+    // no time or sample(i, t) returns true. observer sees every collision on the way. The progress
+    // line shows t of t_report_end [s]; NaN when the trigger counts something else (collisions).
     template <class Engine, class Trigger, class Observer, class Sample>
     void run(Engine& engine, Carry& carry, Trigger&& trigger, Observer&& observer, Sample&& sample,
              double t_report_end) {
@@ -66,12 +80,21 @@ public:
             const std::optional<double> t = trigger(i);
             if (!t) break;
             engine.run_until(*t, observer);
-            report_engine_time(*t, t_report_end);
+            if (!std::isnan(t_report_end)) report_engine_time(*t, t_report_end);
             const bool stop = sample(i, *t);
             next_ = i + 1;
             if (stop) break;
-            if (checkpoint_.due()) save(engine, carry);
+            if constexpr (!std::same_as<Carry, NoCarry>)
+                if (checkpoint_->due()) save(engine, carry);
         }
+    }
+
+    template <class Engine, class Trigger, class Observer, class Sample>
+    void run(Engine& engine, Trigger&& trigger, Observer&& observer, Sample&& sample, double t_report_end)
+        requires std::same_as<Carry, NoCarry>
+    {
+        NoCarry none;
+        run(engine, none, trigger, observer, sample, t_report_end);
     }
 
     long next_sample() const { return next_; }
@@ -83,7 +106,7 @@ public:
 private:
     template <class Engine>
     void save(const Engine& engine, const Carry& carry) {
-        checkpoint_.save([&](const H5Object& root) {
+        checkpoint_->save([&](const H5Object& root) {
             root.stamp_schema(schema_, version_);
             root.attr("next_sample", next_);
             root.attr("wall_seconds", wall_seconds());
@@ -92,9 +115,9 @@ private:
         });
     }
 
-    RunCheckpoint& checkpoint_;
+    RunCheckpoint* checkpoint_ = nullptr;
     std::string schema_;
-    long version_;
+    long version_ = 0;
     long next_ = 0;
     double wall_before_ = 0;
     std::chrono::steady_clock::time_point start_;

@@ -176,3 +176,26 @@ void expect_resume_is_bit_identical(Make make) {
 
 TEST(SampledRun, KilledAndResumedEqualsUninterruptedEd) { expect_resume_is_bit_identical(small_ed_gas); }
 TEST(SampledRun, KilledAndResumedEqualsUninterruptedDsmc) { expect_resume_is_bit_identical(small_dsmc_gas); }
+
+// Without a checkpoint the same loop serves a run redone whole: it advances the engine to each
+// trigger time before sampling there, and stops at the trigger's end or when the sample asks.
+TEST(SampledRun, WithoutCheckpointSamplesAtEachTriggerUntilTheEndOrAStop) {
+    struct Clock {
+        double t = 0;
+        std::vector<double> stops;
+        void run_until(double to, NoCollisionObserver) { stops.push_back(t = to); }
+    };
+    Clock clock;
+    std::vector<double> seen;
+    auto at = [](long i) { return i < 4 ? std::optional(0.5 * double(i + 1)) : std::nullopt; };
+    auto record = [&](long, double t) { seen.push_back(clock.t - t); return false; };
+    SampledRun<>().run(clock, at, NoCollisionObserver{}, record, 2.0);
+    EXPECT_EQ(clock.stops, (std::vector<double>{0.5, 1.0, 1.5, 2.0}));
+    EXPECT_EQ(seen, std::vector<double>(4, 0.0)); // each sample sees the engine at its time
+
+    Clock stopped;
+    long samples = 0;
+    SampledRun<>().run(stopped, at, NoCollisionObserver{}, [&](long i, double) { ++samples; return i == 1; }, NAN);
+    EXPECT_EQ(samples, 2);
+    EXPECT_EQ(stopped.stops.size(), 2u);
+}
