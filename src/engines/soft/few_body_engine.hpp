@@ -12,7 +12,10 @@
 //
 // Template parameters: NormalLaw has normal_force(xi, xi_dot, m_red) -> NormalForce; ShearLaw has
 // applied_normal(NormalForce) and shear_force(NormalForce, v_S). Both are small value structs in
-// src/models/.
+// src/models/. A shear law with history (models/stateful_shear.hpp, e.g. Luding's tangential
+// spring, Eq. 13) gets its per-contact state from the engine: created at 0 when a contact begins,
+// integrated as d(state)/dt = v_S by the same RK4 stages as the grains, held by the law after
+// every (sub)step, and removed when the contact ends.
 #pragma once
 #include <algorithm>
 #include <cmath>
@@ -25,6 +28,7 @@
 #include "engines/soft/hermite_crossing.hpp"
 #include "engines/soft/soft_grain.hpp"
 #include "models/normal_force.hpp"
+#include "models/stateful_shear.hpp"
 
 namespace granrepro {
 
@@ -78,7 +82,7 @@ public:
             if (pass > 1000) throw std::runtime_error("few-body engine: contact switching did not settle");
             collect_candidates(remaining);
             trial_ = grains_;
-            rk4(trial_, remaining);
+            rk4(trial_, remaining, state_trial_);
             ++substeps_;
             double first = remaining;
             int which = -1;
@@ -97,12 +101,14 @@ public:
             if (which < 0) {
                 book_impulses(remaining); // the stage accelerations are still the trial's
                 std::swap(grains_, trial_);
+                commit_state();
                 t_ += remaining;
                 remaining = 0.0;
                 break;
             }
-            rk4(grains_, first);
+            rk4(grains_, first, state_trial_);
             book_impulses(first);
+            commit_state();
             t_ += first;
             remaining -= first;
             toggle(candidates_[which]);
@@ -119,10 +125,10 @@ public:
     // (Used by tests; the integrator calls the same code through accelerations().)
     Vec2 contact_force_on(int i) const {
         Vec2 f{};
-        for (const auto& p : active_) {
-            if (p.i == i) f += pair_force(grains_, p);
-            else if (p.partner.kind == Partner::Kind::Free && p.partner.index == i)
-                f -= pair_force(grains_, p);
+        for (std::size_t c = 0; c < active_.size(); ++c) {
+            const auto [fn, fs] = pair_forces(grains_, c, state_.data());
+            if (active_[c].i == i) f += fn + fs;
+            else if (active_[c].partner.kind == Partner::Kind::Free && active_[c].partner.index == i) f -= fn + fs;
         }
         return f;
     }
@@ -172,25 +178,33 @@ private:
         return {n, a.radius + partner_radius(p.partner) - dist, -dot(vrel, n), dot(vrel, perp(n)), m_red};
     }
 
-    // Normal and shear force on grain i of the pair [N].
-    std::pair<Vec2, Vec2> pair_forces(const std::vector<SoftGrain>& g, const Pair& p) const {
-        const Geometry geo = geometry(g, p);
+    static constexpr bool kStateful = StatefulShear<ShearLaw>;
+
+    // Normal and shear force on grain i of active contact c [N], for the contacts' shear states
+    // `state` (stateful laws only); the contact's v_S goes to *v_s when asked.
+    std::pair<Vec2, Vec2> pair_forces(const std::vector<SoftGrain>& g, std::size_t c, const double* state,
+                                      double* v_s = nullptr) const {
+        const Geometry geo = geometry(g, active_[c]);
         const NormalForce f = normal_.normal_force(geo.xi, geo.xi_dot, geo.m_red);
         const double fn = shear_.applied_normal(f);
-        const double fs = shear_.shear_force(f, geo.v_s);
+        double fs;
+        if constexpr (kStateful) fs = shear_.shear_force(f, geo.v_s, state[c]);
+        else fs = shear_.shear_force(f, geo.v_s);
+        if (v_s) *v_s = geo.v_s;
         return {geo.n * fn, perp(geo.n) * fs};
     }
-    Vec2 pair_force(const std::vector<SoftGrain>& g, const Pair& p) const {
-        const auto [fn, fs] = pair_forces(g, p);
-        return fn + fs;
-    }
 
-    // Accelerations of all free grains; the shear part alone goes to shear_acc as well.
-    void accelerations(const std::vector<SoftGrain>& g, std::vector<Vec2>& acc, std::vector<Vec2>& shear_acc) const {
+    // Accelerations of all free grains; the shear part alone goes to shear_acc as well. For a
+    // stateful shear law, `state` is the contacts' shear state at this stage and rate receives
+    // its time derivative v_S.
+    void accelerations(const std::vector<SoftGrain>& g, std::vector<Vec2>& acc, std::vector<Vec2>& shear_acc,
+                       const std::vector<double>& state, std::vector<double>& rate) const {
         acc.assign(g.size(), gravity_);
         shear_acc.assign(g.size(), Vec2{});
-        for (const auto& p : active_) {
-            const auto [fn, fs] = pair_forces(g, p);
+        if constexpr (kStateful) rate.resize(active_.size());
+        for (std::size_t c = 0; c < active_.size(); ++c) {
+            const Pair& p = active_[c];
+            const auto [fn, fs] = pair_forces(g, c, state.data(), kStateful ? &rate[c] : nullptr);
             const Vec2 f = fn + fs;
             acc[p.i] += f / g[p.i].mass;
             shear_acc[p.i] += fs / g[p.i].mass;
@@ -201,28 +215,55 @@ private:
         }
     }
 
-    // Classical RK4 for x' = v, v' = a(x, v) with the active contact set frozen. The stage
-    // buffers are members so that a step allocates nothing.
-    void rk4(std::vector<SoftGrain>& g, double h) {
+    // Classical RK4 for x' = v, v' = a(x, v) (and state' = v_S for a stateful shear law, into
+    // state_out) with the active contact set frozen. The stage buffers are members so that a step
+    // allocates nothing.
+    void rk4(std::vector<SoftGrain>& g, double h, std::vector<double>& state_out) {
         const std::size_t n = g.size();
         g0_ = g;
         s_ = g;
         v2_.resize(n);
         v3_.resize(n);
         v4_.resize(n);
-        accelerations(s_, a1_, b1_);
+        // The contacts' shear state at a stage: state + c * h * rate (stateful laws only).
+        const auto stage_state = [&](double c, const std::vector<double>& rate) {
+            if constexpr (kStateful)
+                for (std::size_t k = 0; k < state_.size(); ++k) stage_[k] = state_[k] + c * h * rate[k];
+        };
+        stage_ = state_;
+        accelerations(s_, a1_, b1_, stage_, r1_);
         for (std::size_t i = 0; i < n; ++i) { s_[i].r = g0_[i].r + 0.5 * h * g0_[i].v; s_[i].v = g0_[i].v + 0.5 * h * a1_[i]; }
         for (std::size_t i = 0; i < n; ++i) v2_[i] = s_[i].v;
-        accelerations(s_, a2_, b2_);
+        stage_state(0.5, r1_);
+        accelerations(s_, a2_, b2_, stage_, r2_);
         for (std::size_t i = 0; i < n; ++i) { s_[i].r = g0_[i].r + 0.5 * h * v2_[i]; s_[i].v = g0_[i].v + 0.5 * h * a2_[i]; }
         for (std::size_t i = 0; i < n; ++i) v3_[i] = s_[i].v;
-        accelerations(s_, a3_, b3_);
+        stage_state(0.5, r2_);
+        accelerations(s_, a3_, b3_, stage_, r3_);
         for (std::size_t i = 0; i < n; ++i) { s_[i].r = g0_[i].r + h * v3_[i]; s_[i].v = g0_[i].v + h * a3_[i]; }
         for (std::size_t i = 0; i < n; ++i) v4_[i] = s_[i].v;
-        accelerations(s_, a4_, b4_);
+        stage_state(1.0, r3_);
+        accelerations(s_, a4_, b4_, stage_, r4_);
         for (std::size_t i = 0; i < n; ++i) {
             g[i].r = g0_[i].r + (h / 6.0) * (g0_[i].v + 2.0 * v2_[i] + 2.0 * v3_[i] + v4_[i]);
             g[i].v = g0_[i].v + (h / 6.0) * (a1_[i] + 2.0 * a2_[i] + 2.0 * a3_[i] + a4_[i]);
+        }
+        if constexpr (kStateful) {
+            state_out.resize(state_.size());
+            for (std::size_t k = 0; k < state_.size(); ++k)
+                state_out[k] = state_[k] + (h / 6.0) * (r1_[k] + 2.0 * r2_[k] + 2.0 * r3_[k] + r4_[k]);
+        }
+    }
+
+    // Takes the shear state of the last rk4() call (its grains are now grains_), held by the law:
+    // Eq. (13)'s spring is kept at most mu f_n / k_t long.
+    void commit_state() {
+        if constexpr (kStateful) {
+            state_.swap(state_trial_);
+            for (std::size_t c = 0; c < active_.size(); ++c) {
+                const Geometry geo = geometry(grains_, active_[c]);
+                state_[c] = shear_.hold(normal_.normal_force(geo.xi, geo.xi_dot, geo.m_red), state_[c]);
+            }
         }
     }
 
@@ -247,8 +288,13 @@ private:
         const auto it = std::find(active_.begin(), active_.end(), p);
         const Geometry geo = geometry(grains_, p);
         const bool begins = it == active_.end();
-        if (begins) active_.push_back(p);
-        else active_.erase(it);
+        if (begins) {
+            active_.push_back(p);
+            if constexpr (kStateful) state_.push_back(0.0); // the spring is put in at length 0
+        } else {
+            if constexpr (kStateful) state_.erase(state_.begin() + (it - active_.begin())); // and removed
+            active_.erase(it);
+        }
         events_.push_back({t_, p.i, p.partner, begins, geo.xi_dot});
     }
 
@@ -300,6 +346,9 @@ private:
     std::vector<SoftGrain> trial_, g0_, s_;   // scratch of step() and rk4()
     std::vector<Vec2> a1_, a2_, a3_, a4_, b1_, b2_, b3_, b4_, v2_, v3_, v4_;
     std::vector<Vec2> shear_dv_, normal_dv_;
+    // Shear state per active contact (same order as active_; stateful shear laws only), its value
+    // after the last rk4() call, and RK4's stage values and rates.
+    std::vector<double> state_, state_trial_, stage_, r1_, r2_, r3_, r4_;
 };
 
 } // namespace granrepro
