@@ -772,7 +772,7 @@ private:
     }
 
     // The wall-impact meter's share of this thread's step (count false: finalize()'s force
-    // evaluation), then the near marks cleared for the next step.
+    // evaluation); it clears the near marks for the next step.
     void meter_walls(int tid, bool count) {
         const Scratch& s = scratch_[std::size_t(tid)];
         const int* near = s.near.data();
@@ -782,7 +782,6 @@ private:
             // the velocities after this step's closing half kick (applied by the next drift)
             return WallImpactMeter::Velocity{vx_[i] + h * accel_x(i), vy_[i] + h * accel_y(i)};
         });
-        for (std::size_t a = 0; a < nn; ++a) near_mark_[std::size_t(near[a])] = 0;
     }
 
     bool wall_row(std::size_t i, double xw, double shift, double& fx_sum, double& fy_sum, double& worst) {

@@ -64,11 +64,12 @@ public:
     // One thread's step, after its forces. near[0, count) are its slots near a wall; mark[i] is 2
     // for a slot that touched a wall grain this step, 1 for one near a wall only, 0 for one not
     // near. Only those and the slots touching after the last step can change state, so the rest
-    // of the grains cost nothing. velocity_at_touch(i) is slot i's velocity after this step's
+    // of the grains cost nothing. The meter is the marks' last reader: it sets them back to 0 for
+    // the engine's next step (in its own last pass, saving the engine one). velocity_at_touch(i) is slot i's velocity after this step's
     // closing half kick; id[i] and inv_mass[i] are slot i's id and 1/m. With count false (the
     // engine's first force evaluation) no impact begins or ends: only the touching slots are noted.
     template <class VelocityAtTouch>
-    void step(int tid, bool count, const int* near, std::size_t near_count, const unsigned char* mark, const int* id,
+    void step(int tid, bool count, const int* near, std::size_t near_count, unsigned char* mark, const int* id,
               const double* inv_mass, VelocityAtTouch&& velocity_at_touch) {
         Thread& t = threads_[std::size_t(tid)];
         t.impacts = 0;
@@ -92,8 +93,11 @@ public:
             for (std::size_t a = 0; a < near_count; ++a) track(std::size_t(near[a]), mark[std::size_t(near[a])] == 2);
         }
         t.touching.clear();
-        for (std::size_t a = 0; a < near_count; ++a)
-            if (mark[std::size_t(near[a])] == 2) t.touching.push_back(near[a]);
+        for (std::size_t a = 0; a < near_count; ++a) {
+            const std::size_t i = std::size_t(near[a]);
+            if (mark[i] == 2) t.touching.push_back(int(i));
+            mark[i] = 0;
+        }
     }
 
     // After every thread's step (one thread, the others waiting): the step's impacts, and the
