@@ -19,7 +19,8 @@
 // the grains near a wall; (2) contact test of each listed pair, once per pair (by both threads
 // if its grains belong to two), listing the entries of the pairs in contact (pipe_detect.hpp);
 // (3) forces of those entries, grain by grain in list order; (4) the wall rows, for the
-// grains near a wall; (5) wall-impact bookkeeping of the grains that touch or touched a wall.
+// grains near a wall; (5) the wall-impact meter (wall_impact_meter.hpp) notes the grains that
+// touch or touched a wall.
 // (1) runs several grains per instruction (pipe_drift.hpp); contacts and wall grains are the
 // only scalar work per grain.
 //
@@ -51,6 +52,7 @@
 #include "engines/soft/pipe_detect.hpp"
 #include "engines/soft/pipe_drift.hpp"
 #include "engines/soft/spin_team.hpp"
+#include "engines/soft/wall_impact_meter.hpp"
 #include "models/normal_force.hpp"
 
 namespace granrepro {
@@ -62,16 +64,6 @@ struct PipeGeometry {
     double wall_spacing = 0.66e-3; // [m]
     double right_row_shift = 0.0;  // y offset of the right row's grains [m]
     double gravity = 10.0;     // [m/s^2], acting along -y
-};
-
-// Counts of what happened at the walls, accumulated until reset.
-struct WallImpactStats {
-    long impacts = 0;          // wall impacts begun (a grain starting to touch a wall after not touching any)
-    double sum_dvy = 0;        // sum over completed impacts of the wall impulse along +y per mass [m/s]
-    double sum_vy_in = 0;      // sum of |v_y| at the start of completed impacts [m/s]
-    double sum_vx_in = 0;      // sum of |v_x| at the start of completed impacts [m/s]
-    long completed = 0;
-    double time = 0;           // time over which impacts were counted [s]
 };
 
 template <class NormalLaw, class ShearLaw>
@@ -89,7 +81,7 @@ public:
         x_.push_back(x); y_.push_back(wrap(y)); vx_.push_back(vx); vy_.push_back(vy);
         fx_.push_back(0); fy_.push_back(0); rad_.push_back(radius); mass_.push_back(mass);
         inv_mass_.push_back(1.0 / mass);
-        wall_touch_.push_back(0); vy_at_touch_.push_back(0); vx_at_touch_.push_back(0); wall_impulse_y_.push_back(0);
+        wall_meter_.add_grain();
         need_build_ = true;
         ++version_;
     }
@@ -105,6 +97,7 @@ public:
         carried.kick_pending = scratch_[0].kick_pending;
         carried.cprev_x = scratch_[0].cprev_x, carried.cprev_y = scratch_[0].cprev_y;
         scratch_.assign(std::size_t(threads), carried);
+        wall_meter_.set_threads(threads);
         if (!need_build_) run_all([&](int tid) { thread_lists(tid, false); });
     }
     int threads() const { return threads_; }
@@ -132,13 +125,13 @@ public:
     const std::vector<double>& mass() const { return by_id(out_[5], [&](std::size_t i) { return mass_[i]; }); }
     const std::vector<double>& ax() const { return by_id(out_[6], [&](std::size_t i) { return accel_x(i); }); }
     const std::vector<double>& ay() const { return by_id(out_[7], [&](std::size_t i) { return accel_y(i); }); }
-    const WallImpactStats& wall_stats() const { return wall_; }
-    void reset_wall_stats() { wall_ = {}; }
+    const WallImpactStats& wall_stats() const { return wall_meter_.stats(); }
+    void reset_wall_stats() { wall_meter_.reset_stats(); }
     // Bytes held per grain by the engine's arrays and lists (capacity, not just size).
     double bytes_per_grain() const {
         std::size_t b = 0;
         for (const auto* v : {&x_, &y_, &vx_, &vy_, &vpx_, &vpy_, &rad_, &mass_, &inv_mass_, &dispx_,
-                              &dispy_, &vy_at_touch_, &vx_at_touch_, &wall_impulse_y_})
+                              &dispy_})
             b += v->capacity() * sizeof(double);
         for (const auto& v : spare_) b += v.capacity() * sizeof(double);
         b += (id_.capacity() + slot_of_id_.capacity() + spare_id_.capacity() + nb_start_.capacity() + nb_owner_.capacity() +
@@ -149,9 +142,8 @@ public:
             b += (s.low.capacity() + s.high.capacity() + s.found.capacity() + s.cell_count.capacity() +
                   s.owners.capacity() + s.pi.capacity() + s.pj.capacity() + s.pk.capacity() +
                   s.pm.capacity()) * sizeof(int) +
-                 (s.partners.capacity() + s.counts.capacity() + s.hits.capacity() + s.near.capacity() +
-                  s.touching.capacity()) * sizeof(int);
-        b += wall_touch_.capacity() + near_mark_.capacity();
+                 (s.partners.capacity() + s.counts.capacity() + s.hits.capacity() + s.near.capacity()) * sizeof(int);
+        b += wall_meter_.bytes() + near_mark_.capacity();
         b += (fx_.capacity() + fy_.capacity()) * sizeof(double);
         for (const auto& o : out_) b += o.second.capacity() * sizeof(double);
         return x_.empty() ? 0.0 : double(b) / double(x_.size());
@@ -216,7 +208,7 @@ public:
     // Must be called once after all grains are added (sizes the per-grain scratch arrays).
     void finalize() {
         const std::size_t n = x_.size();
-        wall_impulse_y_.assign(n, 0.0);
+        wall_meter_.clear_impulses();
         vpx_ = vx_;
         vpy_ = vy_;
         dispx_.assign(n, 0.0);
@@ -249,26 +241,24 @@ public:
         cell_y_.resize(n);
         nb_start_.resize(n + 1);
         for (auto& s : scratch_) s = Scratch{};
+        wall_meter_.set_threads(threads_);
         need_build_ = false;
         ++version_;
-        // The first list and forces, as a step would compute them, without kicks or wall-impact
-        // bookkeeping (the wall impulse of this evaluation is kept, as it always was).
+        // The first list and forces, as a step would compute them, without kicks or wall impacts
+        // begun or ended (the wall impulse of this evaluation is kept, as it always was).
         run_all([&](int tid) {
             rebuild(tid);
             find_near(tid);
             detect(tid);
-            forces(tid, false);
+            forces(tid);
+            meter_walls(tid, false);
         });
         finish_step_stats(false);
-        wall_ = {};
+        wall_meter_.reset_stats();
     }
 
 private:
     // ---- per-thread state --------------------------------------------------------------------
-    struct Completion {
-        int id;
-        double dvy, vy_in, vx_in;
-    };
     struct alignas(64) Scratch {
         double sum_x = 0, sum_y = 0, max_q = 0; // rebuild-test partials of this step
         double cprev_x = 0, cprev_y = 0;        // mean displacement of the last step
@@ -276,8 +266,6 @@ private:
         bool band_valid = false;                // band was made at the last build
         bool band_holds = false;                // near_from_band() is exact this step
         double worst = 0;
-        long impacts = 0;
-        std::vector<Completion> completed;
         std::vector<int> low, high, found; // list-build scratch
         std::vector<int> cell_count;       // grains per cell in this thread's share, then where they go
         std::vector<int> partners, owners, counts; // this thread's list entries (partner, owner slots) and the
@@ -291,7 +279,6 @@ private:
         std::vector<int> near;             // slots near a wall this step (near_count of them)
         std::vector<int> band;             // slots that can come near a wall before the next build
         std::size_t near_count = 0;
-        std::vector<int> touching;         // slots touching a wall (or holding wall impulse) after the last step
     };
 
     template <class Job>
@@ -341,12 +328,12 @@ private:
             find_near(tid);
         }
         detect(tid);
-        forces(tid, true);
+        forces(tid);
+        meter_walls(tid, true);
         sync();
         if (tid == 0) {
             finish_step_stats(true);
             t_ += dt_;
-            wall_.time += dt_;
             ++steps_;
         }
     }
@@ -618,11 +605,7 @@ private:
         for (std::size_t i = b; i < e; ++i)
             if (x_[i] < band || x_[i] > geo_.width - band) s.band.push_back(int(i));
         s.band_valid = at_build; // (the band is measured from the positions at the build)
-        s.touching.clear();
-        for (std::size_t i = b; i < e; ++i) {
-            const std::size_t g = std::size_t(id_[i]);
-            if (wall_touch_[g] || wall_impulse_y_[g] != 0) s.touching.push_back(int(i));
-        }
+        wall_meter_.relist(tid, b, e, id_.data());
     }
 
     // Lists the partners of this thread's grains into its scratch (partners, counts). The cells
@@ -727,9 +710,8 @@ private:
         std::sort(s.hits.begin(), s.hits.begin() + std::ptrdiff_t(s.nhits)); // list order
     }
 
-    // Force sums of this thread's grains, then (unless finalize() calls) the wall-impact
-    // bookkeeping.
-    void forces(int tid, bool track_walls) {
+    // Force sums of this thread's grains; near_mark_ tells meter_walls() which touched a wall.
+    void forces(int tid) {
         Scratch& s = scratch_[std::size_t(tid)];
         const int* __restrict hits = s.hits.data();
         const std::size_t nh = s.nhits;
@@ -787,41 +769,19 @@ private:
             near_mark_[i] = 1 + touched;
         }
         s.worst = worst;
+    }
 
-        // Wall impacts. A wall impact lasts from the first step a grain touches any wall grain
-        // to the first step it touches none. Its Δv_y, as in Eq. (9) and the impact studies, is
-        // the velocity change caused by the wall: the wall force's impulse along +y over the
-        // impact, divided by the mass (gravity and collisions with other free grains during the
-        // impact are not counted). Only grains near a wall now, or touching (or holding wall
-        // impulse) after the last step, can change state.
-        s.impacts = 0;
-        s.completed.clear();
+    // The wall-impact meter's share of this thread's step (count false: finalize()'s force
+    // evaluation); it clears the near marks for the next step.
+    void meter_walls(int tid, bool count) {
+        const Scratch& s = scratch_[std::size_t(tid)];
+        const int* near = s.near.data();
+        const std::size_t nn = s.near_count;
         const double h = 0.5 * dt_;
-        auto track = [&](std::size_t i, bool now) {
-            const std::size_t g = std::size_t(id[i]); // wall-impact state is kept by id
-            if (now && !wall_touch_[g]) {
-                ++s.impacts;
-                // the velocities after this step's closing half kick (applied by the next drift)
-                vy_at_touch_[g] = vy_[i] + h * accel_y(i);
-                vx_at_touch_[g] = vx_[i] + h * accel_x(i);
-            } else if (!now && wall_touch_[g]) {
-                s.completed.push_back({id[i], wall_impulse_y_[g] * inv_mass_[i], std::abs(vy_at_touch_[g]),
-                                       std::abs(vx_at_touch_[g])});
-            }
-            if (!now) wall_impulse_y_[g] = 0;
-            wall_touch_[g] = now;
-        };
-        if (track_walls) {
-            for (int i : s.touching)
-                if (!near_mark_[std::size_t(i)]) track(std::size_t(i), false);
-            for (std::size_t a = 0; a < nn; ++a) track(std::size_t(near[a]), near_mark_[std::size_t(near[a])] == 2);
-        }
-        s.touching.clear();
-        for (std::size_t a = 0; a < nn; ++a) {
-            const std::size_t i = std::size_t(near[a]);
-            if (near_mark_[i] == 2) s.touching.push_back(int(i));
-            near_mark_[i] = 0;
-        }
+        wall_meter_.step(tid, count, near, nn, near_mark_.data(), id_.data(), inv_mass_.data(), [&](std::size_t i) {
+            // the velocities after this step's closing half kick (applied by the next drift)
+            return WallImpactMeter::Velocity{vx_[i] + h * accel_x(i), vy_[i] + h * accel_y(i)};
+        });
     }
 
     bool wall_row(std::size_t i, double xw, double shift, double& fx_sum, double& fy_sum, double& worst) {
@@ -849,36 +809,19 @@ private:
             contact(dx / d, dy / d, xi, vpx_[i], vpy_[i], mass_[i], fx, fy);
             fx_sum += fx;
             fy_sum += fy;
-            wall_impulse_y_[std::size_t(id_[i])] += fy * dt_;
+            wall_meter_.add_impulse(std::size_t(id_[i]), fy * dt_);
             touched = true;
         }
         return touched;
     }
 
-    // After the forces of a step (thread 0): the largest overlap, and the wall impacts completed
-    // in this step, added in id order.
+    // After the forces of a step (thread 0): the largest overlap, and (count) the meter's step,
+    // which adds the wall impacts completed in it in id order.
     void finish_step_stats(bool count) {
         double worst = 0;
-        long impacts = 0;
-        std::size_t ncomp = 0;
-        for (const Scratch& s : scratch_) {
-            worst = std::max(worst, s.worst);
-            impacts += s.impacts;
-            ncomp += s.completed.size();
-        }
+        for (const Scratch& s : scratch_) worst = std::max(worst, s.worst);
         max_overlap_ = worst;
-        if (!count) return;
-        wall_.impacts += impacts;
-        if (ncomp == 0) return;
-        merged_.clear();
-        for (const Scratch& s : scratch_) merged_.insert(merged_.end(), s.completed.begin(), s.completed.end());
-        std::sort(merged_.begin(), merged_.end(), [](const Completion& a, const Completion& b) { return a.id < b.id; });
-        for (const Completion& c : merged_) {
-            ++wall_.completed;
-            wall_.sum_dvy += c.dvy;
-            wall_.sum_vy_in += c.vy_in;
-            wall_.sum_vx_in += c.vx_in;
-        }
+        if (count) wall_meter_.end_step(dt_);
     }
 
     // Per-grain double arrays moved by a re-sort (the force sums are zero at that point; the
@@ -897,8 +840,6 @@ private:
     int cells_x_ = 1, cells_y_ = 1;
     // Per grain, in memory (cell) order; id_ maps a slot to the grain's id, slot_of_id_ back.
     std::vector<double> x_, y_, vx_, vy_, vpx_, vpy_, rad_, mass_, inv_mass_, dispx_, dispy_;
-    std::vector<double> vy_at_touch_, vx_at_touch_, wall_impulse_y_; // by id
-    std::vector<char> wall_touch_;                                   // by id
     std::vector<int> id_, slot_of_id_;
     std::vector<double> spare_[kMoved];
     std::vector<int> spare_id_;
@@ -909,11 +850,10 @@ private:
     std::vector<int> nb_start_, nb_owner_, nb_j_, nb_mirror_;
     std::vector<double> fx_, fy_;        // force sums of the last force evaluation (cleared by drift)
     std::vector<unsigned char> near_mark_; // 1: near a wall this step, 2: and touching; else 0
-    WallImpactStats wall_;
+    WallImpactMeter wall_meter_;
     int threads_ = 1;
     std::unique_ptr<SpinTeam> team_;
     std::vector<Scratch> scratch_ = std::vector<Scratch>(1);
-    std::vector<Completion> merged_;
     long version_ = 0;
     unsigned long pause_count_ = 0; // step() calls, for the pause point
     mutable std::pair<long, std::vector<double>> out_[8];
