@@ -12,14 +12,15 @@
 // removes grazing re-collision loops.
 #pragma once
 #include "engines/ed/ed_cell_grid.hpp"
-#include "engines/ed/ed_config.hpp"
 #include "engines/ed/ed_particles.hpp"
+#include "engines/ed/ed_wall.hpp"
 #include "engines/ed/flight_roots.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <utility>
+#include <vector>
 
 namespace granrepro {
 
@@ -30,8 +31,8 @@ public:
     struct Pair { double dt; int j; bool replace; }; // partner j (-1 none) dt [s] after i's clock
     struct Event { double t; std::uint8_t kind, arg; }; // [s]; kind and arg as in EdParticles::Book
 
-    EdEventPredictor(const EdParticles& ps, const EdCellGrid& grid, const EdConfig& cfg)
-        : ps_(ps), grid_(grid), cfg_(cfg) {}
+    EdEventPredictor(const EdParticles& ps, const EdCellGrid& grid, const std::vector<EdWall>& walls)
+        : ps_(ps), grid_(grid), walls_(walls) {}
 
     // Best pair collision of i, scanning all neighbour cells at its own clock.
     Pair pair(int i) const {
@@ -62,8 +63,8 @@ public:
             const double t = h.tau + flight_roots::gap_closing_time(s * (c - at) - off, s * u, s * g);
             if (t < best) { best = t; kind = k; arg = static_cast<std::uint8_t>(a); }
         };
-        for (std::size_t w = 0; w < cfg_.walls.size(); ++w) {
-            const EdWall& wl = cfg_.walls[w];
+        for (std::size_t w = 0; w < walls_.size(); ++w) {
+            const EdWall& wl = walls_[w];
             if (wl.enabled) closes(wl.axis, wl.side, wl.position, h.rad, EdParticles::kWall, w);
         }
         grid_.for_faces(ps_.e[i].cell, [&](int dir, int axis, double face) {
@@ -98,7 +99,7 @@ public:
                     worst = std::max(worst, ps_.p[i].rad + ps_.p[j].rad - norm(d));
                 }
             });
-            for (const auto& wl : cfg_.walls) {
+            for (const auto& wl : walls_) {
                 if (!wl.enabled) continue;
                 const double c = wl.axis == 0 ? pi.x : pi.y;
                 worst = std::max(worst, ps_.p[i].rad - wl.side * (c - wl.position));
@@ -135,7 +136,7 @@ private:
 
     const EdParticles& ps_;
     const EdCellGrid& grid_;
-    const EdConfig& cfg_;
+    const std::vector<EdWall>& walls_;
 };
 
 } // namespace granrepro
