@@ -37,7 +37,8 @@ public:
     using CollisionType = Collision;
     using Config = BasicEdConfig<Collision>;
     using State = BasicEdState<Collision>;
-    using PairEvent = EdEventPredictor::PairEvent;
+    using Predictor = EdEventPredictor<Config>;
+    using PairEvent = typename Predictor::PairEvent;
 
     // pos [m], vel [m/s], radius [m], mass [kg], spin [1/s] (empty = 0), t0 [s].
     BasicEdEngine(const Config& cfg, const std::vector<Vec2>& pos, const std::vector<Vec2>& vel,
@@ -208,9 +209,9 @@ private:
         exec_.setup(cfg_);
     }
 
-    EdEventPredictor predictor() const { return {ps_, grid_, cfg_.walls}; }
+    Predictor predictor() const { return {ps_, grid_, cfg_}; }
     // Commits a predicted pair and queues i's earliest event.
-    void schedule(int i, const EdEventPredictor::Pair& pr) {
+    void schedule(int i, const typename Predictor::Pair& pr) {
         if (pr.replace) ps_.set_pair(i, pr.dt, pr.j);
         const auto ev = predictor().next_event(i);
         auto& b = ps_.e[i];

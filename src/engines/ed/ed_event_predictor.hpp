@@ -1,5 +1,6 @@
 // Event prediction of the ED engine from the flights in EdParticles (roots: flight_roots.hpp).
 // It only reads the state (the engine commits and queues), so tests and diagnostics can ask it too.
+// Of the configuration (a BasicEdConfig, whatever its operator) it reads the walls only.
 // One pending event per particle (Lubachevsky 1991): the earliest of its best pair collision,
 // wall contact and cell exit. A pair prediction remembers the partner's collision count; if the
 // partner collided in between, the event is stale. On entering a new cell only the newly
@@ -20,10 +21,10 @@
 #include <cmath>
 #include <cstdint>
 #include <utility>
-#include <vector>
 
 namespace granrepro {
 
+template <class Config>
 class EdEventPredictor {
 public:
     static constexpr double kInf = EdParticles::kInf;
@@ -31,8 +32,8 @@ public:
     struct Pair { double dt; int j; bool replace; }; // partner j (-1 none) dt [s] after i's clock
     struct Event { double t; std::uint8_t kind, arg; }; // [s]; kind and arg as in EdParticles::Book
 
-    EdEventPredictor(const EdParticles& ps, const EdCellGrid& grid, const std::vector<EdWall>& walls)
-        : ps_(ps), grid_(grid), walls_(walls) {}
+    EdEventPredictor(const EdParticles& ps, const EdCellGrid& grid, const Config& cfg)
+        : ps_(ps), grid_(grid), cfg_(cfg) {}
 
     // Best pair collision of i, scanning all neighbour cells at its own clock.
     Pair pair(int i) const {
@@ -63,8 +64,8 @@ public:
             const double t = h.tau + flight_roots::gap_closing_time(s * (c - at) - off, s * u, s * g);
             if (t < best) { best = t; kind = k; arg = static_cast<std::uint8_t>(a); }
         };
-        for (std::size_t w = 0; w < walls_.size(); ++w) {
-            const EdWall& wl = walls_[w];
+        for (std::size_t w = 0; w < cfg_.walls.size(); ++w) {
+            const EdWall& wl = cfg_.walls[w];
             if (wl.enabled) closes(wl.axis, wl.side, wl.position, h.rad, EdParticles::kWall, w);
         }
         grid_.for_faces(ps_.e[i].cell, [&](int dir, int axis, double face) {
@@ -99,7 +100,7 @@ public:
                     worst = std::max(worst, ps_.p[i].rad + ps_.p[j].rad - norm(d));
                 }
             });
-            for (const auto& wl : walls_) {
+            for (const auto& wl : cfg_.walls) {
                 if (!wl.enabled) continue;
                 const double c = wl.axis == 0 ? pi.x : pi.y;
                 worst = std::max(worst, ps_.p[i].rad - wl.side * (c - wl.position));
@@ -136,7 +137,7 @@ private:
 
     const EdParticles& ps_;
     const EdCellGrid& grid_;
-    const std::vector<EdWall>& walls_;
+    const Config& cfg_;
 };
 
 } // namespace granrepro
