@@ -22,7 +22,11 @@
 //     dE = -(1-r^2)/2 m12 v_c,n^2 - (1-beta^2)/2 m_t v_c,t^2 .
 // Smooth disks (mu = 0 or beta0 = -1) give dP_t = 0 exactly: (1+beta) is formed as a minimum of
 // non-negative terms, one of which is exactly zero, so no round-off spin appears.
+//
+// It is the ED engine's default operator (engines/ed/ed_collision_operator.hpp lists what the
+// engine asks of one): validate(), elastic_version() (TC, Eq. (7)) and against() (a wall) below.
 #pragma once
+#include "core/input_error.hpp"
 #include "core/vec2.hpp"
 #include <cmath>
 
@@ -47,6 +51,28 @@ struct RoughDiskCollision {
         double beta = -1.0;   // tangential restitution actually applied [-]
         bool sliding = false; // true when Coulomb's limit was active (beta = beta_1 < beta0)
     };
+
+    // Throws InputError unless 0 <= r <= 1, mu >= 0, -1 <= beta0 <= 1 and q > 0.
+    void validate() const {
+        if (!valid()) throw InputError("ED: need 0<=r<=1, mu>=0, -1<=beta0<=1, q>0");
+    }
+    // The operator of a collision the TC model (Luding Eq. (7)) makes elastic: r = 1, and unless
+    // keep_friction (EdConfig::tc_keep_friction) no tangential impulse (mu = 0, beta0 = -1), so
+    // that the collision conserves energy exactly.
+    RoughDiskCollision elastic_version(bool keep_friction) const {
+        RoughDiskCollision l = *this;
+        l.r = 1.0;
+        if (!keep_friction) { l.mu = 0.0; l.beta0 = -1.0; }
+        return l;
+    }
+    // The operator against a wall (EdWall: its own r_w, mu_w, beta0_w; this q); throws
+    // InputError when the wall's parameters are out of range.
+    template <class Wall>
+    RoughDiskCollision against(const Wall& w) const {
+        const RoughDiskCollision l{w.r, w.mu, w.beta0, q};
+        if (!l.valid()) throw InputError("ED: wall needs 0<=r<=1, mu>=0, -1<=beta0<=1");
+        return l;
+    }
 
     // True when the tangential impulse can be non-zero; the ED loop is instantiated separately
     // for the smooth case so that it skips the tangential algebra.
@@ -96,6 +122,9 @@ struct RoughDiskCollision {
             return out;
         }
     }
+
+private:
+    bool valid() const { return r >= 0.0 && r <= 1.0 && mu >= 0.0 && beta0 >= -1.0 && beta0 <= 1.0 && q > 0.0; }
 };
 
 } // namespace granrepro

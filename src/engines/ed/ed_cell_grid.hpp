@@ -6,7 +6,6 @@
 #pragma once
 #include "core/input_error.hpp"
 #include "core/vec2.hpp"
-#include "engines/ed/ed_config.hpp"
 #include "engines/ed/ed_particles.hpp"
 
 #include <algorithm>
@@ -17,7 +16,8 @@ namespace granrepro {
 
 class EdCellGrid {
 public:
-    void setup(const EdConfig& cfg, double max_rad) {
+    template <class Config> // a BasicEdConfig
+    void setup(const Config& cfg, double max_rad) {
         if (!(cfg.lx > 0.0) || !(cfg.ly > 0.0)) throw InputError("ED: box sizes must be > 0");
         if (!(cfg.cell_size_factor >= 1.0)) throw InputError("ED: cell_size_factor must be >= 1");
         nx_ = cells_along(cfg.lx, max_rad, cfg.cell_size_factor);
@@ -113,8 +113,10 @@ public:
     }
 
     std::size_t memory_bytes() const { return head_.capacity() * sizeof(std::int32_t); }
-    void save(EdState& s) const { s.cell_head.assign(head_.begin(), head_.end()); }
-    void restore(const EdState& s) {
+    template <class State> // a BasicEdState
+    void save(State& s) const { s.cell_head.assign(head_.begin(), head_.end()); }
+    template <class State>
+    void restore(const State& s) {
         if (s.cell_head.size() != cells()) throw InputError("ED: EdState cell grid does not match its configuration");
         head_.assign(s.cell_head.begin(), s.cell_head.end());
     }

@@ -4,18 +4,23 @@
 // runs Lubachevsky's event loop (the paper's Ref. [24]) over, DynamO-style, EdCellGrid (linked
 // cells), EdEventPredictor (next event of a particle) and EdEventExecutor (collisions).
 // The loop is a template on the operator's frictional/smooth form and on the observer, so an
-// unset observer costs nothing and smooth runs skip the tangential algebra.
+// unset observer costs nothing and smooth runs skip the tangential algebra. The operator is any
+// EdCollisionOperator (ed_collision_operator.hpp); its parameters are BasicEdConfig<C>::law.
 #pragma once
 #include "core/input_error.hpp"
 #include "core/interrupt.hpp"
 #include "engines/ed/calendar_queue.hpp"
 #include "engines/ed/dary_heap_queue.hpp"
 #include "engines/ed/ed_cell_grid.hpp"
+#include "engines/ed/ed_collision_operator.hpp"
+#include "engines/ed/ed_config.hpp"
 #include "engines/ed/ed_event_executor.hpp"
 #include "engines/ed/ed_event_predictor.hpp"
 #include "engines/ed/ed_kinetic_energy.hpp"
 #include "engines/ed/ed_particles.hpp"
+#include "engines/ed/ed_state.hpp"
 #include "engines/hard_particle_engine.hpp"
+#include "models/rough_disk_collision.hpp"
 
 #include <algorithm>
 #include <limits>
@@ -29,10 +34,14 @@ template <class Queue, EdCollisionOperator Collision = RoughDiskCollision>
 class BasicEdEngine {
 public:
     using QueueType = Queue;
-    using PairEvent = EdEventPredictor::PairEvent;
+    using CollisionType = Collision;
+    using Config = BasicEdConfig<Collision>;
+    using State = BasicEdState<Collision>;
+    using Predictor = EdEventPredictor<Config>;
+    using PairEvent = typename Predictor::PairEvent;
 
     // pos [m], vel [m/s], radius [m], mass [kg], spin [1/s] (empty = 0), t0 [s].
-    BasicEdEngine(const EdConfig& cfg, const std::vector<Vec2>& pos, const std::vector<Vec2>& vel,
+    BasicEdEngine(const Config& cfg, const std::vector<Vec2>& pos, const std::vector<Vec2>& vel,
                   const std::vector<double>& radius, const std::vector<double>& mass,
                   const std::vector<double>& spin = {}, double t0 = 0.0) {
         const std::size_t n = pos.size();
@@ -58,7 +67,7 @@ public:
         queue_.reset(n);
         predict_all();
     }
-    explicit BasicEdEngine(const EdState& s) { restore_state(s); }
+    explicit BasicEdEngine(const State& s) { restore_state(s); }
 
     // ---- running ----------------------------------------------------------------------------
     // Process every event with time <= t_end [s], reporting each collision to obs (any callable
@@ -70,7 +79,7 @@ public:
     void run_collisions(std::uint64_t n, Obs&& obs = {}) { run_impl(kInf, n, obs); }
 
     // ---- run-time changes ---------------------------------------------------------------------
-    void set_law(const RoughDiskCollision& law) { cfg_.law = law; exec_.setup(cfg_); }
+    void set_law(const Collision& law) { cfg_.law = law; exec_.setup(cfg_); }
     void set_tc(double t_c) { cfg_.t_c = t_c; exec_.setup(cfg_); }
     void set_wall_law(std::size_t w, double r, double mu, double beta0) {
         auto& wl = cfg_.walls.at(w);
@@ -84,7 +93,7 @@ public:
         synchronize();
         predict_all();
     }
-    const EdConfig& config() const { return cfg_; }
+    const Config& config() const { return cfg_; }
 
     // ---- state access -----------------------------------------------------------------------
     // Advance every particle to time() (positions/velocities stored at a common time).
@@ -154,8 +163,8 @@ public:
     }
 
     // ---- checkpoint -------------------------------------------------------------------------
-    EdState save_state() const {
-        EdState s;
+    State save_state() const {
+        State s;
         s.config = cfg_;
         s.time = t_now_;
         ps_.save(s);
@@ -164,7 +173,7 @@ public:
         s.events = events_; s.crossings = crossings_; s.stale_events = stale_;
         return s;
     }
-    void restore_state(const EdState& s) {
+    void restore_state(const State& s) {
         if (!ps_.restore(s)) throw InputError("ED: inconsistent EdState array sizes");
         cfg_ = s.config;
         t_now_ = s.time;
@@ -200,9 +209,9 @@ private:
         exec_.setup(cfg_);
     }
 
-    EdEventPredictor predictor() const { return {ps_, grid_, cfg_}; }
+    Predictor predictor() const { return {ps_, grid_, cfg_}; }
     // Commits a predicted pair and queues i's earliest event.
-    void schedule(int i, const EdEventPredictor::Pair& pr) {
+    void schedule(int i, const typename Predictor::Pair& pr) {
         if (pr.replace) ps_.set_pair(i, pr.dt, pr.j);
         const auto ev = predictor().next_event(i);
         auto& b = ps_.e[i];
@@ -286,7 +295,7 @@ private:
         throw std::runtime_error(os.str());
     }
 
-    EdConfig cfg_;
+    Config cfg_;
     double t_now_ = 0.0;
     EdParticles ps_;
     EdCellGrid grid_;

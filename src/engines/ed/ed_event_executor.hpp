@@ -7,14 +7,14 @@
 #include "core/collision_record.hpp"
 #include "core/input_error.hpp"
 #include "engines/ed/ed_cell_grid.hpp"
+#include "engines/ed/ed_collision_operator.hpp"
 #include "engines/ed/ed_config.hpp"
 #include "engines/ed/ed_particles.hpp"
+#include "engines/ed/ed_state.hpp"
 #include "engines/hard_particle_engine.hpp"
-#include "models/rough_disk_collision.hpp"
 
 #include <algorithm>
 #include <cmath>
-#include <concepts>
 #include <sstream>
 #include <stdexcept>
 #include <type_traits>
@@ -22,43 +22,28 @@
 
 namespace granrepro {
 
-// A collision operator the ED engine can use: a value type built from the Walton-Braun
-// parameters it is configured with (EdConfig::law, the walls' r, mu, beta0), with
-// collide<kFrictional>(v1, w1, m1, a1, v2, w2, m2, a2, n) -> {dP, dw1, dw2} as documented in
-// RoughDiskCollision (m2 = infinity for a wall) and frictional() = "the tangential part can act".
-template <class C>
-concept EdCollisionOperator = std::default_initializable<C> && std::constructible_from<C, RoughDiskCollision> &&
-    requires(const C& c, Vec2 v, double x) {
-        { c.frictional() } -> std::convertible_to<bool>;
-        { c.template collide<true>(v, x, x, x, v, x, x, x, v).dP } -> std::convertible_to<Vec2>;
-        { c.template collide<false>(v, x, x, x, v, x, x, x, v).dw2 } -> std::convertible_to<double>;
-    };
-
+// The operator (an EdCollisionOperator) is used through its concept only.
 template <EdCollisionOperator Collision>
 class EdEventExecutor {
 public:
-    // Validates the parameters and builds the operators (the TC ones with r = 1).
-    void setup(const EdConfig& cfg) {
-        auto valid = [](const RoughDiskCollision& l) {
-            return l.r >= 0.0 && l.r <= 1.0 && l.mu >= 0.0 && l.beta0 >= -1.0 && l.beta0 <= 1.0 && l.q > 0.0;
-        };
-        if (!valid(cfg.law)) throw InputError("ED: need 0<=r<=1, mu>=0, -1<=beta0<=1, q>0");
+    // Validates the parameters and builds the operators (the TC ones: law.elastic_version()).
+    void setup(const BasicEdConfig<Collision>& cfg) {
+        cfg.law.validate();
         if (!(cfg.t_c >= 0.0)) throw InputError("ED: t_c must be >= 0");
         t_c_ = cfg.t_c;
         tc_both_ = cfg.tc_both;
         collapse_limit_ = cfg.collapse_limit;
-        law_ = Collision(cfg.law);
-        law_tc_ = Collision(elastic_version(cfg.law, cfg.tc_keep_friction));
+        law_ = cfg.law;
+        law_tc_ = cfg.law.elastic_version(cfg.tc_keep_friction);
         rough_ = law_.frictional() || law_tc_.frictional();
         wlaw_.clear();
         wlaw_tc_.clear();
         for (const auto& wl : cfg.walls) {
             if ((wl.axis != 0 && wl.axis != 1) || (wl.side != 1 && wl.side != -1))
                 throw InputError("ED: wall axis must be 0/1 and side +1/-1");
-            const RoughDiskCollision l{wl.r, wl.mu, wl.beta0, cfg.law.q};
-            if (!valid(l)) throw InputError("ED: wall needs 0<=r<=1, mu>=0, -1<=beta0<=1");
-            wlaw_.emplace_back(l);
-            wlaw_tc_.emplace_back(elastic_version(l, cfg.tc_keep_friction));
+            const Collision l = cfg.law.against(wl);
+            wlaw_.push_back(l);
+            wlaw_tc_.push_back(l.elastic_version(cfg.tc_keep_friction));
             rough_ = rough_ || wlaw_.back().frictional() || wlaw_tc_.back().frictional();
         }
     }
@@ -126,22 +111,16 @@ public:
     std::uint64_t wall_collisions() const { return wall_collisions_; }
     std::uint64_t elastic_collisions() const { return elastic_; }
     double max_overlap() const { return max_overlap_; }
-    void save(EdState& s) const {
+    void save(BasicEdState<Collision>& s) const {
         s.pair_collisions = pair_collisions_; s.wall_collisions = wall_collisions_;
         s.elastic_collisions = elastic_; s.max_overlap = max_overlap_;
     }
-    void restore(const EdState& s) {
+    void restore(const BasicEdState<Collision>& s) {
         pair_collisions_ = s.pair_collisions; wall_collisions_ = s.wall_collisions;
         elastic_ = s.elastic_collisions; max_overlap_ = s.max_overlap;
     }
 
 private:
-    // What TC's "elastic" means for rough disks: EdConfig::tc_keep_friction.
-    static RoughDiskCollision elastic_version(RoughDiskCollision l, bool keep_friction) {
-        l.r = 1.0;
-        if (!keep_friction) { l.mu = 0.0; l.beta0 = -1.0; }
-        return l;
-    }
     // Luding Eq. (7): i's previous collision happened at most t_c ago.
     bool tc_elastic(const EdParticles& ps, double t, int i) const { return t_c_ > 0.0 && t - ps.e[i].last_t <= t_c_; }
     // Applies i's share dP [kg m/s], dw [1/s] of a collision at t and feeds the collapse guard.

@@ -1,5 +1,6 @@
 // Event prediction of the ED engine from the flights in EdParticles (roots: flight_roots.hpp).
 // It only reads the state (the engine commits and queues), so tests and diagnostics can ask it too.
+// Of the configuration (a BasicEdConfig, whatever its operator) it reads the walls only.
 // One pending event per particle (Lubachevsky 1991): the earliest of its best pair collision,
 // wall contact and cell exit. A pair prediction remembers the partner's collision count; if the
 // partner collided in between, the event is stale. On entering a new cell only the newly
@@ -12,8 +13,8 @@
 // removes grazing re-collision loops.
 #pragma once
 #include "engines/ed/ed_cell_grid.hpp"
-#include "engines/ed/ed_config.hpp"
 #include "engines/ed/ed_particles.hpp"
+#include "engines/ed/ed_wall.hpp"
 #include "engines/ed/flight_roots.hpp"
 
 #include <algorithm>
@@ -23,6 +24,7 @@
 
 namespace granrepro {
 
+template <class Config>
 class EdEventPredictor {
 public:
     static constexpr double kInf = EdParticles::kInf;
@@ -30,7 +32,7 @@ public:
     struct Pair { double dt; int j; bool replace; }; // partner j (-1 none) dt [s] after i's clock
     struct Event { double t; std::uint8_t kind, arg; }; // [s]; kind and arg as in EdParticles::Book
 
-    EdEventPredictor(const EdParticles& ps, const EdCellGrid& grid, const EdConfig& cfg)
+    EdEventPredictor(const EdParticles& ps, const EdCellGrid& grid, const Config& cfg)
         : ps_(ps), grid_(grid), cfg_(cfg) {}
 
     // Best pair collision of i, scanning all neighbour cells at its own clock.
@@ -135,7 +137,7 @@ private:
 
     const EdParticles& ps_;
     const EdCellGrid& grid_;
-    const EdConfig& cfg_;
+    const Config& cfg_;
 };
 
 } // namespace granrepro

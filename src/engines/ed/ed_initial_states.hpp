@@ -34,17 +34,14 @@ std::vector<Vec2> uniform_velocities(std::size_t n, double v0, RngStream& rng);
 // Remove the centre-of-mass velocity and rescale to sqrt(2K/(N mbar)) = vbar [m/s].
 void zero_momentum_and_scale(std::vector<Vec2>& vel, const std::vector<double>& mass, double vbar);
 
-// Run with perfectly elastic smooth particles and walls (r = r_w = 1, mu = mu_w = 0, t_c = 0)
-// until the mean number of collisions per particle, sum_i count_i / N, grew by
-// collisions_per_particle; then restore the laws. Observers are not called.
+// Run with perfectly elastic smooth particles (the law's elastic_version(false), for
+// RoughDiskCollision r = 1, mu = 0) and walls (r_w = 1, mu_w = 0), t_c = 0, until the mean
+// number of collisions per particle, sum_i count_i / N, grew by collisions_per_particle; then
+// restore the laws. Observers are not called.
 template <class Queue, class Collision>
 void equilibrate(BasicEdEngine<Queue, Collision>& engine, double collisions_per_particle) {
-    const EdConfig saved = engine.config();
-    RoughDiskCollision elastic = saved.law;
-    elastic.r = 1.0;
-    elastic.mu = 0.0;
-    elastic.beta0 = -1.0;
-    engine.set_law(elastic);
+    const auto saved = engine.config();
+    engine.set_law(saved.law.elastic_version(false));
     engine.set_tc(0.0);
     for (std::size_t w = 0; w < saved.walls.size(); ++w) engine.set_wall_law(w, 1.0, 0.0, -1.0);
     const auto pairs = static_cast<std::uint64_t>(collisions_per_particle * static_cast<double>(engine.size()) / 2.0 + 0.5);

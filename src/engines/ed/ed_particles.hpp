@@ -6,7 +6,6 @@
 // random particle, i.e. ~15 cache misses instead of 2-3.
 #pragma once
 #include "core/vec2.hpp"
-#include "engines/ed/ed_state.hpp"
 #include "engines/ed/huge_page_allocator.hpp"
 
 #include <cstdint>
@@ -111,11 +110,13 @@ struct EdParticles {
         f(s.cell_prev, ps.e, &Book::prev); f(s.burst_count, ps.e, &Book::burst_n); f(s.event_kind, ps.e, &Book::kind);
         f(s.event_arg, ps.e, &Book::arg); f(s.mass, ps.mw, &Mw::m); f(s.spin, ps.mw, &Mw::w);
     }
-    void save(EdState& s) const {
+    template <class State> // a BasicEdState
+    void save(State& s) const {
         fields(*this, s, [](auto& v, const auto& a, auto m) { v = gather(a, m); });
     }
     // Returns false when the arrays of s differ in size.
-    bool restore(const EdState& s) {
+    template <class State>
+    bool restore(const State& s) {
         const std::size_t n = s.x.size();
         bool same = true;
         fields(*this, s, [&](const auto& v, auto&, auto) { same = same && v.size() == n; });

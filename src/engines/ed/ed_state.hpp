@@ -1,6 +1,7 @@
 // Complete, plain-data snapshot of an ED engine: restoring it and running on reproduces an
 // uninterrupted run bit for bit (the event queue is rebuilt from predicted_time, and its pop
 // order is a total order on (time, id)). The engine has no random numbers, so no RNG state.
+// EdState: the default operator, RoughDiskCollision.
 #pragma once
 #include "engines/ed/ed_config.hpp"
 #include <cstdint>
@@ -8,8 +9,9 @@
 
 namespace granrepro {
 
-struct EdState {
-    EdConfig config;
+template <EdCollisionOperator Collision>
+struct BasicEdState {
+    BasicEdConfig<Collision> config;
     double time = 0.0; // global simulated time [s]
 
     // Per particle (size N). Positions/velocities are at each particle's own local_time.
@@ -58,5 +60,7 @@ struct EdState {
         v("stale_events", stale_events), v("max_overlap", max_overlap);
     }
 };
+
+using EdState = BasicEdState<RoughDiskCollision>;
 
 } // namespace granrepro
