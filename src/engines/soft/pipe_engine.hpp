@@ -54,6 +54,7 @@
 #include "engines/soft/spin_team.hpp"
 #include "engines/soft/wall_impact_meter.hpp"
 #include "models/normal_force.hpp"
+#include "models/stateful_shear.hpp"
 
 namespace granrepro {
 
@@ -68,6 +69,9 @@ struct PipeGeometry {
 
 template <class NormalLaw, class ShearLaw>
 class PipeEngine {
+    static_assert(!StatefulShear<ShearLaw>,
+                  "PipeEngine does not carry per-contact shear state (yet): use FewBodyEngine");
+
 public:
     PipeEngine(NormalLaw normal, ShearLaw shear, PipeGeometry geo, double dt, double skin)
         : normal_(normal), shear_(shear), geo_(geo), dt_(dt), skin_(skin) {
