@@ -93,8 +93,7 @@ void add_velocity_correlation(Result& res, const CoolingSpec& c, const std::vect
     const VelocityCorrelation grid = velocity_correlation(c.box(), c.d);
     Table& t = res.table(std::string("vcorr_") + name,
                          std::string("pair velocity correlations C_n, C_t (mean over seeds) at the snapshot times, ") + name);
-    std::vector<double> r;
-    for (double x : grid.centres()) r.push_back(x / c.d);
+    const std::vector<double> r = column(grid.centres(), [&](double x) { return x / c.d; });
     t.add("r_over_d", "1").values = r;
     for (std::size_t i = 0; i < snaps.size(); ++i)
         for (const auto& [col, member] :

@@ -100,14 +100,10 @@ std::vector<FigureTable> figure_tables(const Pipe& s, const Fall& fl, const Rela
     std::vector<FigureTable> F{{"relaxation", "v̄ = sqrt(<v^2>) during the elastic relaxation, run 0"}};
     F[0].add("t", "s", rel.t);
     F[0].add("vbar", "m/s", rel.vbar);
-    std::vector<const Frame*> snaps;
+    std::vector<std::reference_wrapper<const Frame>> snaps;
     for (long f = 1; f <= s.n_frames; ++f)
-        if (s.at(s.snapshot_times, f)) add_snapshot(F, s, *snaps.emplace_back(&fl.at(f)));
-    auto per_snap = [&](auto x) {
-        std::vector<double> v;
-        for (const Frame* fr : snaps) v.push_back(x(*fr));
-        return v;
-    };
+        if (s.at(s.snapshot_times, f)) add_snapshot(F, s, snaps.emplace_back(fl.at(f)));
+    auto per_snap = [&](auto x) { return column(snaps, x); };
     auto arch_y = [](const Frame& fr) { return fr.arch.found ? fr.arch.y : NAN; };
     auto opening = [&](const Frame& fr) { return fr.crack.course_x.empty() ? NAN : fr.crack.opening / s.d; };
     auto initiator = [&](const Frame& fr) { return i_prec >= 0 ? fr.pos[std::size_t(i_prec)] : Vec2{NAN, NAN}; };
