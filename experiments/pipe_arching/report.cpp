@@ -15,10 +15,8 @@ namespace granrepro::experiments::pipe_arching_detail {
 namespace {
 
 double fraction_below(const std::vector<double>& v, double x) {
-    double k = 0;
-    for (double y : v)
-        if (!std::isnan(y) && y <= x + 1e-12) ++k;
-    return k / double(v.size());
+    const auto k = std::ranges::count_if(v, [x](double y) { return !std::isnan(y) && y <= x + 1e-12; });
+    return double(k) / double(v.size());
 }
 // Share of the finite values for which pred holds (NaN if none is finite).
 template <class Pred> double share_finite(const std::vector<double>& v, Pred pred) {
