@@ -297,11 +297,10 @@ void fig11(Result& res, const std::vector<Instant>& instants, const ClusterSpec&
                 lo = std::min(lo, v);
                 hi = std::max(hi, v);
             }
-    std::vector<double> mt, mc, top, ratio, xi;
+    const std::vector<double> mt = column(shown, &Instant::t), mc = column(shown, &Instant::cn);
+    std::vector<double> top, ratio, xi;
     for (const Instant* in : shown) {
-        mt.push_back(in->t);
-        mc.push_back(in->cn);
-        Table& sn = res.table("snapshot_" + std::to_string(mt.size() - 1),
+        Table& sn = res.table("snapshot_" + std::to_string(top.size()),
                               "positions and N_c over the last t/2 at t = " + number_text(in->t) + " s");
         const auto x = column(in->pos, [&](const Vec2& q) { return q.x / s.d; });
         const auto y = column(in->pos, [&](const Vec2& q) { return q.y / s.d; });
