@@ -16,7 +16,6 @@
 // against σ_vx and ṅ Δv_y against Δv_y (the crude estimates below Eq. 9).
 #include <algorithm>
 #include <cmath>
-#include <numeric>
 #include <string>
 #include <tuple>
 
@@ -111,8 +110,7 @@ struct BistablePipe {
     // likely long ones first (fast starts, then nearly elastic grains, then longer pipes), so that
     // the last point to start is a short one.
     static std::vector<long> points(const Spec&, const std::vector<Task>& tasks) {
-        std::vector<long> order(tasks.size());
-        std::iota(order.begin(), order.end(), 0L);
+        std::vector<long> order = index_order(tasks.size());
         auto key = [&](long i) {
             const Task& t = tasks[std::size_t(i)];
             return std::make_tuple(t.fast, t.length, t.e, t.k);

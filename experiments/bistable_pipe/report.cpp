@@ -268,9 +268,7 @@ void report_series(Result& r, const BistablePipeSpec& b, const std::vector<Task>
                                  (tasks[i].fast ? "_fast" : "_slow") + (length_check ? "_length_check" : "");
         Table& ts = r.table(name, "mean velocity and rms v_x against time");
         ts.add("t", "s").values = results[i].t;
-        std::vector<double> speed(results[i].v.size());
-        for (std::size_t j = 0; j < speed.size(); ++j) speed[j] = -results[i].v[j];
-        ts.add({{"v_down", "m/s", speed}, {"sigma_vx", "m/s", results[i].sx}});
+        ts.add({{"v_down", "m/s", column(results[i].v, std::negate<>())}, {"sigma_vx", "m/s", results[i].sx}});
     }
 }
 } // namespace granrepro::experiments::bistable_pipe_detail

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "data/result.hpp"
+#include "experiments/common/columns.hpp"
 #include "scenarios/pipe_setup.hpp"
 
 namespace granrepro::experiments::bistable_pipe_detail {

@@ -4,7 +4,6 @@
 // dt/100, the √β collapse of k' = β k_N, and the Hertz-Kuwabara-Kono normal force.
 #include <algorithm>
 #include <cmath>
-#include <numeric>
 #include <string>
 
 #include "experiments/brake_failure/spec.hpp"
@@ -91,11 +90,7 @@ struct BrakeFailure {
         return {law, law.collision_time(s.m_free) / s.steps_per_contact, log_space(s.vy_min, s.vy_max, s.n_vy),
                 log_space(s.vy_min, 10 * s.vy_max, s.n_vy), HertzKuwabaraKono::matched_at(law.k_N, law.gamma_N, s.hkk_xi_ref)};
     }
-    static std::vector<long> points(const Spec& s, const Sweep&) {
-        std::vector<long> order(kFirstBeta + s.betas.size());
-        std::iota(order.begin(), order.end(), 0L);
-        return order;
-    }
+    static std::vector<long> points(const Spec& s, const Sweep&) { return index_order(kFirstBeta + s.betas.size()); }
     static Curve compute(const Spec& s, const Sweep& w, long c, const PointContext&) {
         Curve curve;
         for (std::size_t i = 0; i < w.vy.size(); ++i) {

@@ -180,18 +180,14 @@ void report_high_velocity(Result& r, const BrakeFailureSpec& s, const Sweep& w, 
 // The √β collapse of k' = beta k_N onto Fig. 3 (text below Fig. 3); pk is Fig. 3's maximum.
 void report_collapse(Result& r, const BrakeFailureSpec& s, const Sweep& w, const std::vector<Curve>& curves,
                      const Peak& pk) {
-    const std::size_t n = w.vy.size();
     for (std::size_t b = 0; b < s.betas.size(); ++b) {
         const double sb = std::sqrt(s.betas[b]);
         const Curve& c = curves[kFirstBeta + b];
         const std::string label = "beta" + number_text(s.betas[b]);
         Table& t = r.table("collapse_" + label, "k' = beta k_N: raw and √β-scaled Δv_y (gamma scaled to keep e_N)");
-        std::vector<double> v_raw(n), dvy_scaled(n), dvx_scaled(n);
-        for (std::size_t i = 0; i < n; ++i) {
-            v_raw[i] = w.vy[i] * sb;
-            dvy_scaled[i] = c.dvy[i] / sb;
-            dvx_scaled[i] = c.dvx[i] / sb;
-        }
+        const auto over_sb = [sb](double x) { return x / sb; };
+        const auto v_raw = column(w.vy, [sb](double x) { return x * sb; });
+        const auto dvy_scaled = column(c.dvy, over_sb), dvx_scaled = column(c.dvx, over_sb);
         t.add({{"vy_i", "m/s", v_raw}, {"dvy", "m/s", c.dvy}, {"vy_i_scaled", "m/s", w.vy},
                {"dvy_scaled", "m/s", dvy_scaled}, {"dvx_scaled", "m/s", dvx_scaled}});
         r.scalar("collapse_max_rel_diff_" + label, max_relative_difference(dvy_scaled, curves[kFig3].dvy), "1",

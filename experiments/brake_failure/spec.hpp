@@ -6,6 +6,7 @@
 
 #include "analysis/curve_analysis.hpp"
 #include "data/result.hpp"
+#include "experiments/common/columns.hpp"
 #include "models/hertz_kuwabara_kono.hpp"
 #include "models/linear_spring_dashpot.hpp"
 #include "scenarios/impact_shot.hpp"

@@ -62,12 +62,7 @@ struct ClusterGrowth {
     };
     static void validate(const ParameterSet& p) {
         const auto s = read_spec<ClusterSpec>(p);
-        if (s.box_over_d / double(s.n_side) < 1.0000001)
-            p.reject(std::vector<std::string>{"box_over_d", "n_side"},
-                     "box_over_d too small for a square-lattice start of n_side^2 disks (lattice spacing below d)");
-        // The linked-cell grid of the ED engine has ~(box_over_d)^2 cells of one diameter.
-        p.limit_work({"box_over_d"}, s.box_over_d * s.box_over_d, 1e8, "cells of the linked-cell grid");
-        if (s.box_over_d < 3.0) p.reject("box_over_d", "must be at least 3 (three cells for the minimum image)");
+        validate_lattice_box(p, s.box_over_d, s.n_side);
         if (s.t_max <= s.t_base) p.reject("t_max", "must exceed t_base");
         if (s.paper_cn.empty()) p.reject("paper_cn", "needs at least one value");
         // The main run to C/N = cn_end (or t_max), the other pair rule beside it, the

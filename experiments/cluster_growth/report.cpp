@@ -297,17 +297,13 @@ void fig11(Result& res, const std::vector<Instant>& instants, const ClusterSpec&
                 lo = std::min(lo, v);
                 hi = std::max(hi, v);
             }
-    std::vector<double> mt, mc, top, ratio, xi;
+    const std::vector<double> mt = column(shown, &Instant::t), mc = column(shown, &Instant::cn);
+    std::vector<double> top, ratio, xi;
     for (const Instant* in : shown) {
-        mt.push_back(in->t);
-        mc.push_back(in->cn);
-        Table& sn = res.table("snapshot_" + std::to_string(mt.size() - 1),
+        Table& sn = res.table("snapshot_" + std::to_string(top.size()),
                               "positions and N_c over the last t/2 at t = " + number_text(in->t) + " s");
-        std::vector<double> x, y;
-        for (const Vec2& q : in->pos) {
-            x.push_back(q.x / s.d);
-            y.push_back(q.y / s.d);
-        }
+        const auto x = column(in->pos, [&](const Vec2& q) { return q.x / s.d; });
+        const auto y = column(in->pos, [&](const Vec2& q) { return q.y / s.d; });
         sn.add({{"x_over_d", "1", x}, {"y_over_d", "1", y}, {"N_c", "1/s", in->rate}});
         const auto g = rate_by_density(*in, s.L(), s.cluster_cell * s.d, 10);
         top.push_back(double(std::max_element(g.begin(), g.end()) - g.begin() + 1));

@@ -150,10 +150,7 @@ Instant make_instant(InstantRecord rec, const ClusterSpec& s) {
 void fig12_instants_table(Result& res, const std::vector<Instant>& instants) {
     Table& t = res.table("instants", "per instant t = t_base 2^k: C/N, N_c statistics and the fits of Eqs. (20)-(22)");
     using I = Instant;
-    auto col = [&](const char* name, const char* unit, auto get) {
-        auto& c = t.add(name, unit);
-        for (const auto& in : instants) c.values.push_back(std::invoke(get, in));
-    };
+    auto col = [&](const char* name, const char* unit, auto get) { t.add(name, unit).values = column(instants, get); };
     const std::vector<std::tuple<const char*, const char*, double I::*>> plain = {
         {"t", "s", &I::t}, {"window", "s", &I::window}, {"C_over_N", "1", &I::cn},
         {"elastic_C_over_N", "1", &I::elastic_cn}, {"mean_Nc", "1/s", &I::mean_rate}, {"sd_Nc", "1/s", &I::sd_rate},

@@ -7,6 +7,7 @@
 
 #include "core/vec2.hpp"
 #include "data/result.hpp"
+#include "experiments/common/columns.hpp"
 #include "harness/experiment.hpp"
 #include "harness/progress.hpp"
 #include "observables/collision_rate_fit.hpp"

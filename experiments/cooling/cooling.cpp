@@ -14,12 +14,12 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
-#include <numeric>
 #include <string>
 #include <vector>
 
 #include "data/spec.hpp"
 #include "engines/dsmc/dsmc_rules.hpp"
+#include "experiments/common/columns.hpp"
 #include "experiments/cooling/spec.hpp"
 #include "experiments/work_limits.hpp"
 #include "harness/protocol.hpp"
@@ -90,9 +90,7 @@ struct Cooling {
     static Setups prepare(const Spec& c, const RunContext& ctx) { return Setups(c, ctx.seed); }
     static long n_ed(const Spec& c) { return c.run_ed ? c.seeds : 0; }
     static std::vector<long> points(const Spec& c, const Setups&) {
-        std::vector<long> order(std::size_t(n_ed(c) + (c.run_dsmc ? c.seeds : 0)));
-        std::iota(order.begin(), order.end(), 0L);
-        return order;
+        return index_order(std::size_t(n_ed(c) + (c.run_dsmc ? c.seeds : 0)));
     }
     static Trace compute(const Spec& c, const Setups& setups, long i, const PointContext& ctx) {
         const long k = i < n_ed(c) ? i : i - n_ed(c);

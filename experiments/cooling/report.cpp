@@ -43,9 +43,8 @@ namespace {
 
 // Wall time of a method's runs, summed over seeds [s].
 double wall_seconds(const std::vector<Trace>& trs) {
-    double wall = 0;
-    for (const Trace& tr : trs) wall += tr.wall_seconds;
-    return wall;
+    const std::vector<double> wall = column(trs, &Trace::wall_seconds);
+    return std::accumulate(wall.begin(), wall.end(), 0.0);
 }
 
 // Per-seed S(k) at every snapshot and K/K0 of one method, for studies that compare runs made

@@ -44,9 +44,7 @@ namespace {
 
 // Eq. (18) at the sample times of a trace.
 std::vector<double> eq18_curve(const Trace& tr, double t0) {
-    std::vector<double> out;
-    for (double t : tr.t) out.push_back(eq18(t, t0));
-    return out;
+    return column(tr.t, [t0](double t) { return eq18(t, t0); });
 }
 
 // First t/t0 at which |k/ref - 1| exceeds level, interpolated linearly in ln t between the
@@ -116,9 +114,7 @@ void add_energy_table(Result& res, const Trace& tr, double t0, const char* name)
     Table& t = res.table(std::string("energy_") + name, std::string("K/K0 and a2 against t/t0, ") + name);
     const double k0 = tr.kx.front() + tr.ky.front() + tr.krot.front();
     const auto over_by = [](const std::vector<double>& v, double by) {
-        std::vector<double> out;
-        for (double x : v) out.push_back(x / by);
-        return out;
+        return column(v, [by](double x) { return x / by; });
     };
     t.add({{"t", "s", tr.t}, {"t_over_t0", "1", over_by(tr.t, t0)}, {"K_over_K0", "1", k_ratio(tr)},
            {"Kx_over_K0", "1", over_by(tr.kx, k0)}, {"Ky_over_K0", "1", over_by(tr.ky, k0)},

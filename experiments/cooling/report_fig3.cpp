@@ -7,8 +7,10 @@
 
 namespace granrepro::experiments::cooling_detail {
 
+using Window = ImpactParameterHistogram::Window;
+
 // Grazing over central collisions: mean P(b/d) over b/d > 0.8 against b/d < 0.2.
-double grazing_ratio(const ImpactParameterHistogram::Window& w, const std::vector<double>& centres) {
+double grazing_ratio(const Window& w, const std::vector<double>& centres) {
     return mean_over(w.p, centres, 0.8, 1.0) / mean_over(w.p, centres, 0.0, 0.2);
 }
 
@@ -32,9 +34,8 @@ void add_grazing_trend(Result& res, const Trace& ed) {
         err.push_back(r * std::sqrt(1 / hi + 1 / lo));
     }
     Table& t = res.table("impact_parameter_grazing", "grazing ratio P(b/d>0.8)/P(b/d<0.2) of the ED run per window, with its counting error");
-    std::vector<double> b;
-    for (const auto& w : ed.pbd) b.push_back(w.t_begin);
-    t.add({{"t_begin", "s", b}, {"grazing_ratio", "1", ratio}, {"grazing_ratio_err", "1", err}});
+    t.add({{"t_begin", "s", column(ed.pbd, &Window::t_begin)}, {"grazing_ratio", "1", ratio},
+           {"grazing_ratio_err", "1", err}});
     int pairs = 0, rising = 0;
     double min_z = NAN;
     for (std::size_t k = 1; k < ratio.size(); ++k) {
@@ -64,12 +65,7 @@ void add_impact_parameter(Result& res, const Trace& ed) {
             t.add({{"P_t" + number_text(w.t_begin), "1", w.p}, {"err_t" + number_text(w.t_begin), "1", w.error}});
     }
     Table& wt = res.table("impact_parameter_windows", "time windows of P(b/d): [t_begin, t_end)");
-    std::vector<double> b, e;
-    for (const auto& w : ed.pbd) {
-        b.push_back(w.t_begin);
-        e.push_back(w.t_end);
-    }
-    wt.add({{"t_begin", "s", b}, {"t_end", "s", e}});
+    wt.add({{"t_begin", "s", column(ed.pbd, &Window::t_begin)}, {"t_end", "s", column(ed.pbd, &Window::t_end)}});
     res.scalar("pbd_grazing_ratio_first", grazing_ratio(ed.pbd.front(), ed.pbd_centres), "1", "P(b/d>0.8)/P(b/d<0.2), first window, ED");
     res.scalar("pbd_grazing_ratio_last", grazing_ratio(ed.pbd.back(), ed.pbd_centres), "1", "P(b/d>0.8)/P(b/d<0.2), last window, ED");
     res.scalar("pbd_collisions_first", double(ed.pbd.front().total), "1", "collisions in the first window");

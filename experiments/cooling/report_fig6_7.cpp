@@ -4,6 +4,7 @@
 #include <cmath>
 #include <optional>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "analysis/seed_stats.hpp"
@@ -93,8 +94,7 @@ void add_velocity_correlation(Result& res, const CoolingSpec& c, const std::vect
     const VelocityCorrelation grid = velocity_correlation(c.box(), c.d);
     Table& t = res.table(std::string("vcorr_") + name,
                          std::string("pair velocity correlations C_n, C_t (mean over seeds) at the snapshot times, ") + name);
-    std::vector<double> r;
-    for (double x : grid.centres()) r.push_back(x / c.d);
+    const std::vector<double> r = column(grid.centres(), [&](double x) { return x / c.d; });
     t.add("r_over_d", "1").values = r;
     for (std::size_t i = 0; i < snaps.size(); ++i)
         for (const auto& [col, member] :
@@ -105,19 +105,17 @@ void add_velocity_correlation(Result& res, const CoolingSpec& c, const std::vect
             t.add(col + number_text(snaps[i]), "1").values = mean;
         }
     for (std::size_t i = 0; i < snaps.size(); ++i) {
-        std::vector<double> cn, ct, ca;
-        for (const Trace& tr : trs)
-            cn.push_back(tr.snaps[i].vc_n.front()), ct.push_back(tr.snaps[i].vc_t.front()), ca.push_back(tr.snaps[i].vc_a.front());
-        const MeanSd mn = mean_sd(cn), mt = mean_sd(ct), ma = mean_sd(ca);
         const std::string at = "_t" + number_text(snaps[i]);
-        res.scalar(std::string(name) + "_vcorr_n_contact" + at, mn.mean, "1",
-                   "C_n of pairs at d <= r < 1.1 d, mean over seeds (molecular chaos: 0)");
-        res.scalar(std::string(name) + "_vcorr_n_contact_err" + at, mn.sem, "1", "its standard error over seeds");
-        res.scalar(std::string(name) + "_vcorr_t_contact" + at, mt.mean, "1", "C_t of pairs at d <= r < 1.1 d, mean over seeds");
-        res.scalar(std::string(name) + "_vcorr_t_contact_err" + at, mt.sem, "1", "its standard error over seeds");
-        res.scalar(std::string(name) + "_vcorr_approach_contact" + at, ma.mean, "1",
-                   "<g_n^2 | approaching> / (2 T1) of pairs at d <= r < 1.1 d, mean over seeds (molecular chaos: 1)");
-        res.scalar(std::string(name) + "_vcorr_approach_contact_err" + at, ma.sem, "1", "its standard error over seeds");
+        for (const auto& [what, member, desc] :
+             {std::tuple{"n", &Snapshot::vc_n, "C_n of pairs at d <= r < 1.1 d, mean over seeds (molecular chaos: 0)"},
+              std::tuple{"t", &Snapshot::vc_t, "C_t of pairs at d <= r < 1.1 d, mean over seeds"},
+              std::tuple{"approach", &Snapshot::vc_a, "<g_n^2 | approaching> / (2 T1) of pairs at d <= r < 1.1 d, "
+                                                      "mean over seeds (molecular chaos: 1)"}}) {
+            const MeanSd m = mean_sd(column(trs, [&](const Trace& tr) { return (tr.snaps[i].*member).front(); }));
+            const std::string q = std::string(name) + "_vcorr_" + what + "_contact";
+            res.scalar(q + at, m.mean, "1", desc);
+            res.scalar(q + "_err" + at, m.sem, "1", "its standard error over seeds");
+        }
     }
 }
 

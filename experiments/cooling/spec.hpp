@@ -13,6 +13,7 @@
 #include "core/vec2.hpp"
 #include "data/result.hpp"
 #include "engines/dsmc/dsmc_config.hpp"
+#include "experiments/common/columns.hpp"
 #include "harness/experiment.hpp"
 #include "observables/impact_parameter_histogram.hpp"
 #include "observables/velocity_correlation.hpp"

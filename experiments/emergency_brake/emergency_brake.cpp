@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <numeric>
 #include <optional>
 #include <string>
 #include <utility>
@@ -14,6 +13,7 @@
 #include "scenarios/impact_shot.hpp"
 #include "harness/protocol.hpp"
 #include "data/spec.hpp"
+#include "experiments/common/columns.hpp"
 #include "models/hertz_kuwabara_kono.hpp"
 #include "models/linear_spring_dashpot.hpp"
 
@@ -161,14 +161,10 @@ void report_series(Result& r, const std::vector<double>& vy, const Series& se, c
     const std::size_t n = vy.size();
     const std::string& tag = se.tag;
     Table& t = r.table("impacts_" + tag, se.what);
-    const auto column = [&](double Point::*field) {
-        std::vector<double> c;
-        for (const Point& q : pts) c.push_back(q.*field);
-        return c;
-    };
-    const auto dvy = column(&Point::dvy), cont = column(&Point::contacts), back = column(&Point::vx_return);
-    t.add({{"vy_i", "m/s", vy}, {"dvy", "m/s", dvy}, {"dvy_sem", "m/s", column(&Point::dvy_sem)},
-           {"contacts", "1", cont}, {"multi_fraction", "1", column(&Point::multi_fraction)}, {"vx_return", "1", back}});
+    const auto dvy = column(pts, &Point::dvy), cont = column(pts, &Point::contacts);
+    const auto back = column(pts, &Point::vx_return), sem = column(pts, &Point::dvy_sem);
+    t.add({{"vy_i", "m/s", vy}, {"dvy", "m/s", dvy}, {"dvy_sem", "m/s", sem}, {"contacts", "1", cont},
+           {"multi_fraction", "1", column(pts, &Point::multi_fraction)}, {"vx_return", "1", back}});
 
     const Peak pk = first_maximum(vy, dvy);
     std::size_t imin = std::size_t(std::max(pk.index, 0));
@@ -182,7 +178,6 @@ void report_series(Result& r, const std::vector<double>& vy, const Series& se, c
     // The paper says only that Δv_y "must ultimately increase again" (text before Fig. 4), so a
     // rise is judged against the sampling error of the 10-position mean at both ends: each point's
     // standard error over the start positions, independent between the two v_y^i.
-    const auto sem = column(&Point::dvy_sem);
     r.scalar("rise_z_" + tag, (dvy.back() - dvy[imin]) / std::hypot(sem.back(), sem[imin]), "1",
              "rise of Δv_y from its minimum after the peak to vy_max in units of its standard error");
     // Fig. 5 plots the mean number of contacts; the multiple-contact regime starts where it reaches 2.
@@ -224,11 +219,7 @@ struct EmergencyBrake {
         const LinearSpringDashpot law = s.law();
         return {law, log_space(s.vy_min, s.vy_max, s.n_vy), all_series(s, law)};
     }
-    static std::vector<long> points(const Spec&, const Shared& sh) {
-        std::vector<long> order(sh.series.size());
-        std::iota(order.begin(), order.end(), 0L);
-        return order;
-    }
+    static std::vector<long> points(const Spec&, const Shared& sh) { return index_order(sh.series.size()); }
     static Outcome compute(const Spec& s, const Shared& sh, long si, const PointContext&) {
         SeriesPoints out;
         for (double vy : sh.vy) out.points.push_back(mean_impact(s, sh.series[std::size_t(si)], vy));

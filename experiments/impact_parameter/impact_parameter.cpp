@@ -9,7 +9,6 @@
 // freedom, and the grazing-to-central ratio P(b/d > 0.8) / P(b/d < 0.2) with its z-score.
 #include <algorithm>
 #include <cmath>
-#include <numeric>
 #include <string>
 #include <vector>
 
@@ -70,8 +69,7 @@ void validate(const ParameterSet& p) {
 // Costliest first, as measured at quick scale: the 3D points (every event moves all spheres), the
 // cooling runs (mostly eddy shuffles), the elastic 2D runs; each group dilute first.
 std::vector<long> cost_order(const ImpactSpec& s) {
-    std::vector<long> order(s.n_2d() + s.elastic3d_packing.size());
-    std::iota(order.begin(), order.end(), 0L);
+    std::vector<long> order = index_order(s.n_2d() + s.elastic3d_packing.size());
     auto cost_rank = [&](long i) {
         const auto u = static_cast<std::size_t>(i), k = u % s.per_seed();
         if (u >= s.n_2d()) return std::pair{0, s.elastic3d_packing[u - s.n_2d()]};

@@ -165,9 +165,7 @@ void fig4_elastic_3d(Result& res, const ImpactSpec& s, const std::vector<PointRe
     const int nb = s.n_bins;
     Table& t3 = res.table("fig4_elastic_3d", "P(b/d) of elastic smooth hard spheres in 3D (periodic cube), per packing fraction, and 2 b/d");
     t3.add("b_over_d", "1").values = centres;
-    std::vector<double> two_x;
-    for (double x : centres) two_x.push_back(2 * x);
-    t3.add("P_2bd", "1").values = two_x;
+    t3.add("P_2bd", "1").values = column(centres, [](double x) { return 2 * x; });
     for (std::size_t k = 0; k < s.elastic3d_packing.size(); ++k) {
         const std::string lb = label("eta", s.elastic3d_packing[k], "%g");
         const auto& c3 = pts[s.n_2d() + k].counts[0];

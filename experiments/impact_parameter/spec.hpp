@@ -7,6 +7,7 @@
 
 #include "core/vec2.hpp"
 #include "data/result.hpp"
+#include "experiments/common/columns.hpp"
 #include "observables/collisional_stress.hpp"
 
 // Not granrepro::experiments::impact_parameter: that name is the experiment's function (registry.cpp).

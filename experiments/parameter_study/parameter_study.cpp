@@ -15,7 +15,6 @@
 // normal-relative energy share. The paper writes exp(-C/N), i.e. up to this constant.
 #include <chrono>
 #include <cmath>
-#include <numeric>
 #include <string>
 
 #include "analysis/curve_analysis.hpp"
@@ -54,12 +53,7 @@ struct ParameterStudy {
     using Shared = Sweep;
     static void validate(const ParameterSet& p) {
         const auto s = read_spec<ParameterStudySpec>(p);
-        if (s.box_over_d / double(s.n_side) < 1.0000001)
-            p.reject(std::vector<std::string>{"box_over_d", "n_side"},
-                     "box_over_d too small for a square-lattice start of n_side^2 disks (lattice spacing below d)");
-        // The linked-cell grid of the ED engine has ~(box_over_d)^2 cells of one diameter.
-        p.limit_work({"box_over_d"}, s.box_over_d * s.box_over_d, 1e8, "cells of the linked-cell grid");
-        if (s.box_over_d < 3.0) p.reject("box_over_d", "must be at least 3 (three cells for the minimum image)");
+        validate_lattice_box(p, s.box_over_d, s.n_side);
         // Every run goes to C/N = cn_end: cn_end = 1e308 ended in "cannot create std::vector larger
         // than max_size()".
         const double n = double(s.n_side) * double(s.n_side);
@@ -73,9 +67,7 @@ struct ParameterStudy {
     }
     static Sweep prepare(const Spec& s, const RunContext&) { return make_sweep(s); }
     static std::vector<long> points(const Spec& s, const Sweep& sw) {
-        std::vector<long> order(sw.points.size() * std::size_t(s.seeds));
-        std::iota(order.begin(), order.end(), 0L);
-        return order;
+        return index_order(sw.points.size() * std::size_t(s.seeds));
     }
     static Trace compute(const Spec& s, const Sweep& sw, long i, const PointContext& ctx) {
         return run_point(s, sw.points[std::size_t(i / s.seeds)], ctx.seed, std::uint64_t(i));

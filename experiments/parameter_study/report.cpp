@@ -139,8 +139,7 @@ void report_points(Result& res, Sweep& sw, const std::vector<double>& cn_grid) {
 void report_cn_jumps(Result& res, const ParameterStudySpec& s, const Sweep& sw) {
     std::vector<double> pr, ptc, mean, sem;
     for (std::size_t p = 0; p < sw.points.size(); ++p) {
-        std::vector<double> f;
-        for (const Trace& tr : sw.traces[p]) f.push_back(cn_jump_factor(tr));
+        const std::vector<double> f = column(sw.traces[p], cn_jump_factor);
         pr.push_back(sw.points[p].r);
         ptc.push_back(sw.points[p].t_c);
         mean.push_back(mean_sd(f).mean);

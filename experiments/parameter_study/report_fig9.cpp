@@ -14,9 +14,7 @@ namespace granrepro::experiments::parameter_study_detail {
 namespace {
 
 PowerLawFit fit_zeta(const std::vector<double>& x, const std::vector<double>& log10k, double lo, double hi) {
-    std::vector<double> y;
-    for (double l : log10k) y.push_back(std::pow(10.0, l));
-    return fit_power_law(x, y, lo, hi);
+    return fit_power_law(x, column(log10k, [](double l) { return std::pow(10.0, l); }), lo, hi);
 }
 
 // Seed-mean log10(K/K0) of curve m at x, interpolated linearly in log x, with its standard error.

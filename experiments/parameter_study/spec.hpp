@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "data/result.hpp"
+#include "experiments/common/columns.hpp"
 
 // Not granrepro::experiments::parameter_study: that name is the experiment's function (registry.cpp).
 namespace granrepro::experiments::parameter_study_detail {
@@ -54,13 +55,6 @@ struct MeanCurve {
 };
 MeanCurve mean_curve(const std::vector<Trace>& seeds, const std::vector<double>& grid, double (*lnk)(const Trace&, double));
 double ln_k_at_cn(const Trace& tr, double x); // ln(K/K0) at C/N = x (report.cpp)
-
-template <class Row>
-std::vector<double> column(const std::vector<Row>& rows, double Row::*field) {
-    std::vector<double> v;
-    for (const Row& row : rows) v.push_back(row.*field);
-    return v;
-}
 
 // The sweep: Fig. 8's r values at fig8_t_c, then Fig. 9's t_c values at fig9_r, sharing the point
 // (fig9_r, fig8_t_c) when both figures contain it; every point with `seeds` initial states.

@@ -161,8 +161,7 @@ void detect(Fall& fl, const Pipe& s, long f, const std::vector<WallHit>& hits) {
 // Sec. 5), the side walls' collisions and impulses, and N_c over dist_dt at the Fig. 14 times.
 Fall fall(EdEngine& eng, const Pipe& s) {
     const std::vector<Vec2> r0 = eng.positions();
-    std::vector<double> y0;
-    for (const Vec2& r : r0) y0.push_back((r.y - s.y_floor) / s.d);
+    const std::vector<double> y0 = column(r0, [&](const Vec2& r) { return (r.y - s.y_floor) / s.d; });
     Fall fl{.pos0 = r0, .y0 = y0, .frames = std::vector<Frame>(std::size_t(s.n_frames) + 1),
             .bands = ColumnBands(y0, 1.0, s.wall_reach * s.d, s.L)};
     const std::size_t n = fl.y0.size();

@@ -24,27 +24,18 @@ std::optional<CollisionRateFit> try_fit(const RateHistogram& h, CollisionRateFit
 // A Fig. 13 snapshot (run 0): the disks, the frame's arch and the crack.
 void add_snapshot(std::vector<FigureTable>& F, const Pipe& s, const Frame& fr) {
     const double d = s.d;
-    std::vector<double> x, y, in_arch, side, cx, cy;
-    for (std::size_t i = 0; i < fr.pos.size(); ++i) {
-        x.push_back(fr.pos[i].x / d);
-        y.push_back((fr.pos[i].y - s.y_floor) / d);
-        in_arch.push_back(std::find(fr.arch.members.begin(), fr.arch.members.end(), int(i)) != fr.arch.members.end() ? 1 : 0);
-        side.push_back(fr.crack.side.empty() ? 0 : fr.crack.side[i]);
-    }
-    for (std::size_t j = 0; j < fr.crack.course_x.size(); ++j) {
-        cx.push_back(fr.crack.course_x[j] / d);
-        cy.push_back((fr.crack.course_y[j] - s.y_floor) / d);
-    }
+    const auto &arch = fr.arch.members, &side = fr.crack.side;
+    const std::vector<long> disks = index_order(fr.pos.size());
     FigureTable& t = F.emplace_back(FigureTable{"snapshot_" + tlabel(fr.t),
         "disk centres (x, y above the removed floor), N_c over the last frame_dt, member of the frame's arch, side of the crack (-1 below, +1 above, 0 loose), run 0"});
-    t.add("x", "d", x);
-    t.add("y", "d", y);
+    t.add("x", "d", column(fr.pos, [&](const Vec2& r) { return r.x / d; }));
+    t.add("y", "d", column(fr.pos, [&](const Vec2& r) { return (r.y - s.y_floor) / d; }));
     t.add("Nc", "1/s", fr.rate);
-    t.add("arch", "1", in_arch);
-    t.add("crack_side", "1", side);
+    t.add("arch", "1", column(disks, [&](long i) { return std::ranges::find(arch, int(i)) != arch.end() ? 1 : 0; }));
+    t.add("crack_side", "1", column(disks, [&](long i) { return side.empty() ? 0 : side[std::size_t(i)]; }));
     FigureTable& c = F.emplace_back(FigureTable{"crack_" + tlabel(fr.t), "course of the widest wall-to-wall crack (mid-height per slice of one diameter), run 0"});
-    c.add("x", "d", cx);
-    c.add("y", "d", cy);
+    c.add("x", "d", column(fr.crack.course_x, [&](double x) { return x / d; }));
+    c.add("y", "d", column(fr.crack.course_y, [&](double y) { return (y - s.y_floor) / d; }));
 }
 
 } // namespace
@@ -100,14 +91,10 @@ std::vector<FigureTable> figure_tables(const Pipe& s, const Fall& fl, const Rela
     std::vector<FigureTable> F{{"relaxation", "v̄ = sqrt(<v^2>) during the elastic relaxation, run 0"}};
     F[0].add("t", "s", rel.t);
     F[0].add("vbar", "m/s", rel.vbar);
-    std::vector<const Frame*> snaps;
+    std::vector<std::reference_wrapper<const Frame>> snaps;
     for (long f = 1; f <= s.n_frames; ++f)
-        if (s.at(s.snapshot_times, f)) add_snapshot(F, s, *snaps.emplace_back(&fl.at(f)));
-    auto per_snap = [&](auto x) {
-        std::vector<double> v;
-        for (const Frame* fr : snaps) v.push_back(x(*fr));
-        return v;
-    };
+        if (s.at(s.snapshot_times, f)) add_snapshot(F, s, snaps.emplace_back(fl.at(f)));
+    auto per_snap = [&](auto x) { return column(snaps, x); };
     auto arch_y = [](const Frame& fr) { return fr.arch.found ? fr.arch.y : NAN; };
     auto opening = [&](const Frame& fr) { return fr.crack.course_x.empty() ? NAN : fr.crack.opening / s.d; };
     auto initiator = [&](const Frame& fr) { return i_prec >= 0 ? fr.pos[std::size_t(i_prec)] : Vec2{NAN, NAN}; };

@@ -22,7 +22,6 @@
 // Momentum balance of the falling column (exact for hard disks: pair impulses cancel):
 //   P_y(t) - P_y(0) = -M g t + J_y,  J_y = sum of the side walls' impulses (friction) since t = 0.
 #include <cmath>
-#include <numeric>
 #include <string>
 #include <utility>
 
@@ -71,11 +70,7 @@ struct PipeArching {
             p.reject("crack_min_above", "crack_min_particles + crack_min_above must be below n_particles");
     }
     static Pipe prepare(const Spec& spec, const RunContext&) { return Pipe(spec); }
-    static std::vector<long> points(const Spec&, const Pipe& s) {
-        std::vector<long> order(static_cast<std::size_t>(s.n_seeds));
-        std::iota(order.begin(), order.end(), 0L);
-        return order;
-    }
+    static std::vector<long> points(const Spec&, const Pipe& s) { return index_order(std::size_t(s.n_seeds)); }
     // Seed run k draws RngStream(seed, k) whatever n_seeds, rank or shard: any split of the seeds
     // (ranks, --points shards) reproduces the single run.
     static SeedRun compute(const Spec&, const Pipe& s, long k, const PointContext& ctx) { return run_seed(s, ctx.seed, k, k == 0); }

@@ -3,7 +3,6 @@
 #include <cmath>
 #include <functional>
 #include <iterator>
-#include <numeric>
 #include <string>
 #include <tuple>
 #include <utility>
@@ -15,18 +14,9 @@ namespace granrepro::experiments::pipe_arching_detail {
 
 namespace {
 
-// f (a field or a function of a SeedRun) of every run.
-template <class F> std::vector<double> per_seed(const std::vector<SeedRun>& runs, F f) {
-    std::vector<double> v;
-    for (const auto& r : runs) v.push_back(std::invoke(f, r));
-    return v;
-}
-
 double fraction_below(const std::vector<double>& v, double x) {
-    double k = 0;
-    for (double y : v)
-        if (!std::isnan(y) && y <= x + 1e-12) ++k;
-    return k / double(v.size());
+    const auto k = std::ranges::count_if(v, [x](double y) { return !std::isnan(y) && y <= x + 1e-12; });
+    return double(k) / double(v.size());
 }
 // Share of the finite values for which pred holds (NaN if none is finite).
 template <class Pred> double share_finite(const std::vector<double>& v, Pred pred) {
@@ -38,7 +28,7 @@ template <class Pred> double share_finite(const std::vector<double>& v, Pred pre
 
 // v̄ at t = 0 over seeds, after the elastic relaxation.
 void report_relaxation(Result& res, const std::vector<SeedRun>& runs) {
-    const std::vector<double> v0s = per_seed(runs, &SeedRun::vbar0), vlate = per_seed(runs, &SeedRun::vbar_relax_late);
+    const std::vector<double> v0s = column(runs, &SeedRun::vbar0), vlate = column(runs, &SeedRun::vbar_relax_late);
     res.scalar("vbar_t0", median(v0s), "m/s", "v̄ = sqrt(<v^2>) at t = 0, median over seeds");
     res.scalar("vbar_t0_run0", runs.front().vbar0, "m/s", "v̄ at t = 0, run 0");
     res.scalar("vbar_relax_drift", median(v0s) / median(vlate) - 1, "1",
@@ -56,7 +46,7 @@ void report_fig14_times(Result& res, const PipeArchingSpec& s, const std::vector
         tt.push_back(t);
         v0.push_back(f0.per_time[k].value);
         e0.push_back(f0.per_time[k].error);
-        med.push_back(median(per_seed(runs, [&](const SeedRun& r) { return r.per_time.at(k).value; })));
+        med.push_back(median(column(runs, [&](const SeedRun& r) { return r.per_time.at(k).value; })));
         const std::string what = k < n_before ? "A_" : "B_", eq = k < n_before ? "Eq. (21)" : "Eq. (22)";
         res.scalar(what + tlabel(t), v0.back(), "1/s", eq + " fit at this time alone, run 0");
         res.scalar(what + "err_" + tlabel(t), e0.back(), "1/s", "its standard error");
@@ -78,13 +68,13 @@ void report_fig14_fits(Result& res, const PipeArchingSpec& s, const std::vector<
     res.scalar("B_fit_chi2_reduced", f0.B_chi2, "1", "Pearson chi^2/dof of that fit");
     res.scalar("A_fit_per_window", f0.A * ddt, "1", "A in collisions per dist_dt window");
     res.scalar("mean_Nc_before", f0.mean_rate_early, "1/s", "mean N_c at the Fig. 14(a) times, run 0");
-    const std::vector<double> As = per_seed(runs, &SeedRun::A), Bs = per_seed(runs, &SeedRun::B);
-    const auto BA = per_seed(runs, [](const SeedRun& r) { return r.B / r.A; });
+    const std::vector<double> As = column(runs, &SeedRun::A), Bs = column(runs, &SeedRun::B);
+    const auto BA = column(runs, [](const SeedRun& r) { return r.B / r.A; });
     // Deviance of the exponential over that of the power law: < 1 where Eq. (21) fits better.
-    const auto ratio_early = per_seed(runs, [](const SeedRun& r) { return r.dev_exp_early / r.dev_pow_early; });
-    const auto ratio_late = per_seed(runs, [](const SeedRun& r) { return r.dev_exp_late / r.dev_pow_late; });
-    res.scalar("fig14_times_before_median", median(per_seed(runs, &SeedRun::times_before)), "1", "Fig. 14(a) times before the run's first arch, pooled into A, median over seeds");
-    res.scalar("fig14_times_after_median", median(per_seed(runs, &SeedRun::times_after)), "1", "Fig. 14(b) times after the run's first arch, pooled into B, median over seeds");
+    const auto ratio_early = column(runs, [](const SeedRun& r) { return r.dev_exp_early / r.dev_pow_early; });
+    const auto ratio_late = column(runs, [](const SeedRun& r) { return r.dev_exp_late / r.dev_pow_late; });
+    res.scalar("fig14_times_before_median", median(column(runs, &SeedRun::times_before)), "1", "Fig. 14(a) times before the run's first arch, pooled into A, median over seeds");
+    res.scalar("fig14_times_after_median", median(column(runs, &SeedRun::times_after)), "1", "Fig. 14(b) times after the run's first arch, pooled into B, median over seeds");
     res.scalar("A_fit_median_seeds", median(As), "1/s", "Eq. (21) A, median over seeds");
     res.scalar("B_fit_median_seeds", median(Bs), "1/s", "Eq. (22) B, median over seeds");
     res.scalar("B_over_A_median_seeds", median(BA), "1", "B/A per seed, median (unit-free)");
@@ -118,9 +108,7 @@ void report_fig14_fits(Result& res, const PipeArchingSpec& s, const std::vector<
 
 void report_seed_table(Result& res, const std::vector<SeedRun>& runs) {
     Table& st = res.table("seeds", "per seed: first hot wall disk, first arch (time, lab and initial height), its precursor, first crack (NaN: none before t_end)");
-    std::vector<double> index(runs.size());
-    std::iota(index.begin(), index.end(), 0.0);
-    st.add("seed_index", "1").values = index;
+    st.add("seed_index", "1").values = column(index_order(runs.size()), std::identity{});
     using S = SeedRun;
     const std::vector<std::tuple<const char*, const char*, std::function<double(const SeedRun&)>>> cols = {
         {"t_hot_wall", "s", &S::t_hot_wall}, {"t_precursor", "s", &S::t_precursor}, {"t_arch", "s", &S::t_arch},
@@ -135,17 +123,17 @@ void report_seed_table(Result& res, const std::vector<SeedRun>& runs) {
         {"wave_steps_up", "1", &S::wave_steps_up}, {"wave_stronger", "1", &S::wave_stronger},
         {"friction_share", "1", &S::friction_share}, {"A", "1/s", &S::A},
         {"B", "1/s", &S::B}, {"wall_seconds", "s", &S::wall_seconds}};
-    for (const auto& [name, unit, f] : cols) st.add(name, unit).values = per_seed(runs, f);
+    for (const auto& [name, unit, f] : cols) st.add(name, unit).values = column(runs, f);
 }
 
 // First arch, its first hot wall disk and first crack over seeds: when (censored at t_end),
 // where, and where the paper's single run falls in that distribution.
 void report_arch_times(Result& res, const std::vector<SeedRun>& runs) {
-    const std::vector<double> ta = per_seed(runs, &SeedRun::t_arch), tp = per_seed(runs, &SeedRun::t_precursor);
-    const std::vector<double> tw = per_seed(runs, &SeedRun::t_hot_wall), tc = per_seed(runs, &SeedRun::t_crack);
-    const auto crack_after_arch = per_seed(runs, [](const SeedRun& r) { return r.t_crack - r.t_arch; });
-    const auto crack_near_arch = per_seed(runs, [](const SeedRun& r) { return std::abs(r.y0_crack - r.y0_arch); });
-    const auto precursor_lead = per_seed(runs, [](const SeedRun& r) { return r.t_arch - r.t_precursor; });
+    const std::vector<double> ta = column(runs, &SeedRun::t_arch), tp = column(runs, &SeedRun::t_precursor);
+    const std::vector<double> tw = column(runs, &SeedRun::t_hot_wall), tc = column(runs, &SeedRun::t_crack);
+    const auto crack_after_arch = column(runs, [](const SeedRun& r) { return r.t_crack - r.t_arch; });
+    const auto crack_near_arch = column(runs, [](const SeedRun& r) { return std::abs(r.y0_crack - r.y0_arch); });
+    const auto precursor_lead = column(runs, [](const SeedRun& r) { return r.t_arch - r.t_precursor; });
     // Empirical distribution of the first-arch time over all seeds (those without an arch never count).
     std::vector<double> tt, fr;
     std::copy_if(ta.begin(), ta.end(), std::back_inserter(tt), [](double x) { return std::isfinite(x); });
@@ -176,9 +164,9 @@ void report_arch_times(Result& res, const std::vector<SeedRun>& runs) {
     // Section 5 takes P(N_c) at 0.02-0.05 s as "before the first arch (or crack) occurs".
     res.scalar("arch_by_0.05_fraction", fraction_below(ta, 0.05), "1",
                "fraction of seeds whose first arch formed by 0.05 s, the last Fig. 14(a) time");
-    res.scalar("arch_height_median", median(per_seed(runs, &SeedRun::y_arch)), "d", "lab height of the first arch above the removed floor, median");
-    res.scalar("arch_initial_height_median", median(per_seed(runs, &SeedRun::y0_arch)), "d", "initial (t = 0) height of the first arch's disks, median");
-    res.scalar("crack_initial_height_median", median(per_seed(runs, &SeedRun::y0_crack)), "d", "initial height of the disks bounding the first crack, median");
+    res.scalar("arch_height_median", median(column(runs, &SeedRun::y_arch)), "d", "lab height of the first arch above the removed floor, median");
+    res.scalar("arch_initial_height_median", median(column(runs, &SeedRun::y0_arch)), "d", "initial (t = 0) height of the first arch's disks, median");
+    res.scalar("crack_initial_height_median", median(column(runs, &SeedRun::y0_crack)), "d", "initial height of the disks bounding the first crack, median");
     res.scalar("precursor_lead_median", median(precursor_lead), "s", "first arch minus its first hot wall disk, median (paper: 0.008 s)");
     res.scalar("crack_after_arch_median", median(crack_after_arch), "s", "first crack minus first arch, median over seeds with both (paper: ~0.004 s)");
     res.scalar("crack_arch_height_offset_median", median(crack_near_arch), "d",
@@ -193,26 +181,26 @@ void report_arch_times(Result& res, const std::vector<SeedRun>& runs) {
 
 // The section's other statements (Sec. 5), per seed, then over seeds.
 void report_section(Result& res, const std::vector<SeedRun>& runs) {
-    auto med = [&](double SeedRun::*f) { return median(per_seed(runs, f)); };
+    auto med = [&](double SeedRun::*f) { return median(column(runs, f)); };
     res.scalar("fluid_layers_median", med(&SeedRun::fluid_layers), "1",
                "top rows at t = 0 in which at least half of the disks lost a lattice neighbour, median");
     double broken = 0;
-    for (double x : per_seed(runs, &SeedRun::lattice_broken_below)) broken = std::max(broken, x);
+    for (double x : column(runs, &SeedRun::lattice_broken_below)) broken = std::max(broken, x);
     res.scalar("lattice_broken_below_max", broken, "1", "share of the disks below those rows that lost a lattice neighbour, largest over seeds");
     res.scalar("react_lag_median", med(&SeedRun::react_lag), "s",
                "first frame with half of the initiating disk's neighbours hot, minus its first hot frame, median (paper: 0.004 s)");
     res.scalar("arch_left_4ms_median", med(&SeedRun::arch_left_4ms), "1",
                "share of the first arch's disks still hot 4 ms after it spanned the width, median");
     // Later arches above and below are 0 or 1, and NaN together (no frame 4 ms after the first).
-    const auto above = per_seed(runs, &SeedRun::arch_above_later), below = per_seed(runs, &SeedRun::arch_below_later);
-    const auto both = per_seed(runs, [](const SeedRun& r) { return r.arch_above_later * r.arch_below_later; });
+    const auto above = column(runs, &SeedRun::arch_above_later), below = column(runs, &SeedRun::arch_below_later);
+    const auto both = column(runs, [](const SeedRun& r) { return r.arch_above_later * r.arch_below_later; });
     auto one = [](double y) { return y == 1.0; };
     res.scalar("arch_above_later_fraction", share_finite(above, one), "1", "seeds with a later arch (after the first + 4 ms) more than arch_separation above the first");
     res.scalar("arch_below_later_fraction", share_finite(below, one), "1", "the same below");
     res.scalar("arch_above_and_below_fraction", share_finite(both, one), "1", "seeds with later arches both above and below");
     res.scalar("plug_wall_load_median", med(&SeedRun::plug_wall_load), "1",
                "wall impulse on the arch's plug within 4 ms of the arch over the plug's weight times that time, median (1: the walls hold the plug)");
-    const auto rel = per_seed(runs, [](const SeedRun& r) { return r.plug_wall_load / r.friction_share; });
+    const auto rel = column(runs, [](const SeedRun& r) { return r.plug_wall_load / r.friction_share; });
     res.scalar("plug_wall_load_over_mean_median", median(rel), "1",
                "plug_wall_load over the column's wall share over the whole fall, per seed, median (> 1: the walls hold the plug harder than the column)");
     res.scalar("arch_brake_median", med(&SeedRun::arch_brake), "m/s",
@@ -227,7 +215,7 @@ void report_section(Result& res, const std::vector<SeedRun>& runs) {
                "widest wall-to-wall crack at any frame from t_detect_min on, median over seeds");
     // The distribution of the widest gap, not only crack yes/no (issue 27).
     for (const auto& [name, f] : {std::pair{"opening_max_all", &SeedRun::opening_max_all}, std::pair{"opening_max_after", &SeedRun::opening_max_after}}) {
-        std::vector<double> v = per_seed(runs, f);
+        std::vector<double> v = column(runs, f);
         std::erase_if(v, [](double x) { return !std::isfinite(x); });
         res.scalar(std::string(name) + "_q25", v.empty() ? NAN : quantile(v, 0.25, NonFinite::censored), "d", "its lower quartile over seeds");
         res.scalar(std::string(name) + "_q75", v.empty() ? NAN : quantile(v, 0.75, NonFinite::censored), "d", "its upper quartile over seeds");
@@ -241,7 +229,7 @@ void report_section(Result& res, const std::vector<SeedRun>& runs) {
     res.scalar("wave_steps_total", steps, "1", "steps between successive distinct arches, summed over seeds");
     res.scalar("wave_ascend_share", steps > 0 ? up / steps : NAN, "1",
                "share of those steps in which the new wave starts higher than the previous one");
-    res.scalar("wave_stronger_fraction", share_finite(per_seed(runs, &SeedRun::wave_stronger), [](double y) { return y == 1.0; }), "1",
+    res.scalar("wave_stronger_fraction", share_finite(column(runs, &SeedRun::wave_stronger), [](double y) { return y == 1.0; }), "1",
                "seeds in which a later wave (arch more than arch_separation from the first, after its first 4 ms) had more hot disks than the first arch, among seeds with an arch");
     res.scalar("crack_below_arch_median", med(&SeedRun::crack_below_arch), "d",
                "initial height of the first arch minus that of the first crack, median (> 0: crack below)");
@@ -249,8 +237,8 @@ void report_section(Result& res, const std::vector<SeedRun>& runs) {
                "crack course at the initiating disk's wall minus the disk's height, at the crack's first frame, median");
     // Disks at the walls slow down (Sec. 5): v_y(wall) - v_y(inside) in the plug at the arch,
     // against the same at the window's start; the mean difference over seeds and its z-score.
-    const MeanSd ws = mean_sd(per_seed(runs, &SeedRun::wall_slowdown_arch));
-    const MeanSd dd = mean_sd(per_seed(runs, [](const SeedRun& r) { return r.wall_slowdown_arch - r.wall_slowdown_before; }));
+    const MeanSd ws = mean_sd(column(runs, &SeedRun::wall_slowdown_arch));
+    const MeanSd dd = mean_sd(column(runs, [](const SeedRun& r) { return r.wall_slowdown_arch - r.wall_slowdown_before; }));
     res.scalar("wall_slowdown_arch_mean", ws.mean, "m/s", "v_y(wall disks) - v_y(inner disks) of the plug at the arch, mean over seeds (> 0: wall disks slower)");
     res.scalar("wall_slowdown_gain_mean", dd.mean, "m/s", "the same minus its value arch_window before the arch, mean over seeds");
     res.scalar("wall_slowdown_gain_z", dd.sem > 0 ? dd.mean / dd.sem : NAN, "1", "that mean over its standard error (seed scatter)");
@@ -260,13 +248,13 @@ void report_section(Result& res, const std::vector<SeedRun>& runs) {
 
 // Momentum balance and costs.
 void report_costs(Result& res, const std::vector<SeedRun>& runs) {
-    const auto resid = per_seed(runs, [](const SeedRun& r) { return std::abs(r.momentum_residual); });
+    const auto resid = column(runs, [](const SeedRun& r) { return std::abs(r.momentum_residual); });
     res.scalar("momentum_balance_residual_max", *std::max_element(resid.begin(), resid.end()), "1",
                "max over seeds of |dP_y - (-M g t + J_wall)| / (M g t) over the fall");
-    res.scalar("wall_friction_share", median(per_seed(runs, &SeedRun::friction_share)), "1", "side-wall impulse over M g t_end, median (0: free fall)");
-    res.scalar("seconds_per_seed_median", median(per_seed(runs, &SeedRun::wall_seconds)), "s", "wall time of one seed (relaxation + fall)");
-    res.scalar("collisions_per_seed_median", median(per_seed(runs, &SeedRun::collisions)), "1", "pair collisions during the fall, median");
-    res.scalar("tc_elastic_share_median", median(per_seed(runs, &SeedRun::elastic_share)), "1", "share of the fall's pair collisions made elastic by TC");
+    res.scalar("wall_friction_share", median(column(runs, &SeedRun::friction_share)), "1", "side-wall impulse over M g t_end, median (0: free fall)");
+    res.scalar("seconds_per_seed_median", median(column(runs, &SeedRun::wall_seconds)), "s", "wall time of one seed (relaxation + fall)");
+    res.scalar("collisions_per_seed_median", median(column(runs, &SeedRun::collisions)), "1", "pair collisions during the fall, median");
+    res.scalar("tc_elastic_share_median", median(column(runs, &SeedRun::elastic_share)), "1", "share of the fall's pair collisions made elastic by TC");
 }
 
 } // namespace

@@ -3,13 +3,14 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
-#include <functional>
+#include <span>
 #include <string>
 #include <vector>
 
 #include "analysis/crack_detector.hpp"
 #include "core/vec2.hpp"
 #include "data/result.hpp"
+#include "experiments/common/columns.hpp"
 #include "observables/column_bands.hpp"
 #include "observables/rate_histogram.hpp"
 
@@ -186,9 +187,7 @@ struct Fall {
     double jy = 0; // side-wall impulse on the column since t = 0 [kg m/s]
     const Frame& at(long f) const { return frames[std::size_t(f)]; }
     template <class F> std::vector<double> per_frame(F x) const { // frames 1 .. n_frames
-        std::vector<double> v;
-        for (std::size_t f = 1; f < frames.size(); ++f) v.push_back(std::invoke(x, frames[f]));
-        return v;
+        return column(std::span(frames).subspan(1), x);
     }
 };
 
