@@ -109,17 +109,6 @@ Parameter::Kind kind_of(const toml::value& v) {
     throw InputError("unsupported parameter type");
 }
 
-// " (line N)": where v is in its file, for messages.
-std::string at_line(const toml::value& v) { return " (line " + std::to_string(v.location().line()) + ")"; }
-
-// Refuses a key of `table` that is not in `allowed` (`listed` in the message).
-void refuse_unknown_keys(const toml::value& table, const std::vector<std::string>& allowed, const std::string& where,
-                         const std::string& listed) {
-    for (const auto& [key, v] : table.as_table())
-        if (std::find(allowed.begin(), allowed.end(), key) == allowed.end())
-            throw InputError(where + at_line(v) + ": unknown key '" + key + "'; allowed: " + listed);
-}
-
 // The parameters behind a refusal: those the user changed with --set (they are the likely cause),
 // or all of them when none was changed.
 std::string named_values(const ParameterSet& set, const std::vector<std::string>& names) {
@@ -170,8 +159,11 @@ ParameterSet ParameterSet::load(const std::filesystem::path& file, Scale scale) 
     ParameterSet set;
     set.file_ = where;
     if (!root.is_table()) throw InputError(where + ": not a table of keys");
-    refuse_unknown_keys(root, {"name", "paper", "description", "figure", "parameters", "outputs"}, where,
-                        "name, paper, description, [[figure]], [parameters.<name>], [outputs]");
+    for (const auto& [key, v] : root.as_table())
+        if (key != "name" && key != "paper" && key != "description" && key != "figure" && key != "parameters" &&
+            key != "outputs")
+            throw InputError(where + " (line " + std::to_string(v.location().line()) + "): unknown key '" + key +
+                             "'; allowed: name, paper, description, [[figure]], [parameters.<name>], [outputs]");
     if (!root.contains("parameters") || !root.at("parameters").is_table())
         throw InputError(where + ": missing [parameters] table");
     std::vector<std::pair<std::uint_least32_t, Parameter>> ordered;
@@ -181,13 +173,17 @@ ParameterSet ParameterSet::load(const std::filesystem::path& file, Scale scale) 
         const std::string ctx = where + ": parameter " + name;
         if (!spec.is_table()) throw InputError(ctx + ": must be a table");
         const auto& t = spec.as_table();
-        const std::vector<std::string> keys = {"unit", "source", "help", "range", "choices", "value", "quick", "paper"};
-        refuse_unknown_keys(spec, keys, ctx, joined(keys));
+        for (const auto& [key, v] : t)
+            if (key != "unit" && key != "source" && key != "help" && key != "range" && key != "choices" &&
+                key != "value" && key != "quick" && key != "paper")
+                throw InputError(ctx + " (line " + std::to_string(v.location().line()) + "): unknown key '" + key +
+                                 "'; allowed: unit, source, help, range, choices, value, quick, paper");
         auto str = [&](const char* key) -> std::string {
             const auto it = t.find(key);
             if (it == t.end()) return {};
             if (!it->second.is_string())
-                throw InputError(ctx + at_line(it->second) + ": '" + key + "' must be a string");
+                throw InputError(ctx + " (line " + std::to_string(it->second.location().line()) + "): '" + key +
+                                 "' must be a string");
             return it->second.as_string().str;
         };
         p.unit = str("unit");
@@ -196,12 +192,13 @@ ParameterSet ParameterSet::load(const std::filesystem::path& file, Scale scale) 
         if (p.unit.empty() || p.source.empty())
             throw InputError(ctx + ": every parameter needs a unit and a source");
         const std::string range = str("range");
+        auto line_of = [&](const char* key) { return " (line " + std::to_string(t.at(key).location().line()) + ")"; };
         if (!range.empty()) {
             p.has_range = true;
             try {
                 p.range = Interval::parse(range);
             } catch (const InputError& e) {
-                throw InputError(ctx + at_line(t.at("range")) + ": " + e.what());
+                throw InputError(ctx + line_of("range") + ": " + e.what());
             }
         }
         if (t.count("choices")) {
@@ -233,7 +230,7 @@ ParameterSet ParameterSet::load(const std::filesystem::path& file, Scale scale) 
                                       return e.is_floating() || e.is_integer();
                                   }));
             if (p.has_range && !numeric)
-                throw InputError(ctx + at_line(*v) + ": value " + toml_text(*v) +
+                throw InputError(ctx + " (line " + std::to_string(v->location().line()) + "): value " + toml_text(*v) +
                                  " must be a number or a list of numbers (it has range " + p.range.text + ")");
         }
         p.quick_text = toml_text(*quick);
