@@ -34,38 +34,26 @@ double run_for(double budget, Step step) {
     return used;
 }
 
-template <class Queue>
-HardDiskBenchResult ed_bench(std::size_t n, double density, double budget, double csf) {
+} // namespace
+
+HardDiskBenchResult run_ed_benchmark(std::size_t n, double density, double seconds_budget) {
     if (n < 16 || !(density > 0.0) || !(density < 0.78)) throw InputError("bench ed: need N >= 16 and 0 < density < 0.78");
     const double l = box_side(n, density);
     EdConfig cfg;
     cfg.lx = cfg.ly = l;
-    cfg.cell_size_factor = csf;
     const std::vector<double> rad(n, 0.5 * kDiameter), mass(n, kMass);
     RngStream rng(12345, 0);
     const auto pos = square_lattice_positions(n, l, l);
     const auto vel = maxwellian_velocities(mass, 1.0, rng);
-    BasicEdEngine<Queue> eng(cfg, pos, vel, rad, mass);
+    EdEngine eng(cfg, pos, vel, rad, mass);
     equilibrate(eng, 2.0); // leave the lattice before timing
 
     const std::uint64_t e0 = eng.events_processed(), c0 = eng.total_collisions();
     const std::uint64_t chunk = std::max<std::uint64_t>(20000, n / 4);
-    const double used = run_for(budget, [&] { eng.run_collisions(chunk); });
+    const double used = run_for(seconds_budget, [&] { eng.run_collisions(chunk); });
     return {static_cast<double>(eng.events_processed() - e0) / used,
             static_cast<double>(eng.total_collisions() - c0) / used,
             static_cast<double>(eng.memory_bytes()) / static_cast<double>(n)};
-}
-
-} // namespace
-
-HardDiskBenchResult run_ed_benchmark(std::size_t n, double density, double seconds_budget, int queue,
-                                     double cell_size_factor) {
-    switch (queue) {
-    case 1: return ed_bench<CalendarQueue>(n, density, seconds_budget, cell_size_factor);
-    case 2: return ed_bench<BinaryHeapQueue>(n, density, seconds_budget, cell_size_factor);
-    case 4: return ed_bench<QuaternaryHeapQueue>(n, density, seconds_budget, cell_size_factor);
-    default: return ed_bench<EdEngine::QueueType>(n, density, seconds_budget, cell_size_factor);
-    }
 }
 
 HardDiskBenchResult run_dsmc_benchmark(std::size_t n, double density, double seconds_budget) {

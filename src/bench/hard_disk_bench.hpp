@@ -14,10 +14,7 @@ struct HardDiskBenchResult {
     double bytes_per_particle = 0.0;    // engine memory / N [B]
 };
 
-// queue: 0 = engine default (EdEngine), 1 = CalendarQueue, 2 = BinaryHeapQueue, 4 = QuaternaryHeapQueue.
-// cell_size_factor: linked-cell edge in units of the diameter (>= 1; EdConfig::cell_size_factor).
-HardDiskBenchResult run_ed_benchmark(std::size_t n, double density, double seconds_budget, int queue = 0,
-                                     double cell_size_factor = 1.0);
+HardDiskBenchResult run_ed_benchmark(std::size_t n, double density, double seconds_budget);
 HardDiskBenchResult run_dsmc_benchmark(std::size_t n, double density, double seconds_budget);
 
 } // namespace granrepro

@@ -44,11 +44,8 @@ double load_average() {
     return getloadavg(l, 1) == 1 ? l[0] : NAN;
 }
 
-double cpu_now() {
-    timespec t{};
-    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
-    return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
-}
+// Process CPU seconds, all threads (glibc's clock is CLOCK_PROCESS_CPUTIME_ID).
+double cpu_now() { return double(std::clock()) / CLOCKS_PER_SEC; }
 
 struct Timing {
     double wall = NAN, cpu = NAN; // [s]
@@ -66,10 +63,16 @@ Timing time_advance(Engine& eng, long steps) {
     const double c0 = cpu_now();
     const auto t0 = std::chrono::steady_clock::now();
     eng.advance(steps);
-    Timing t;
-    t.wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    t.cpu = cpu_now() - c0;
-    return t;
+    return {std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), cpu_now() - c0};
+}
+
+// Times `timed` steps after `warm` untimed ones; `builds`: the list builds per 1000 timed steps.
+Timing time_window(Engine& eng, long warm, long timed, double& builds) {
+    eng.advance(warm);
+    const long b0 = eng.list_builds();
+    const Timing tm = time_advance(eng, timed);
+    builds = double(eng.list_builds() - b0) * 1000.0 / double(timed);
+    return tm;
 }
 
 // FNV-1a over the bits of the state in id order.
@@ -237,6 +240,21 @@ double kinetic_energy(const std::vector<double>& m, const std::vector<double>& v
     return e;
 }
 
+// rms |r_a - r_b| / d_mean over the grains (minimum image along the periodic y).
+double rms_dr(const PipeSpec& spec, const std::vector<double>& xa, const std::vector<double>& ya,
+              const std::vector<double>& xb, const std::vector<double>& yb) {
+    double sum2 = 0;
+    for (std::size_t i = 0; i < xa.size(); ++i) {
+        double dy = ya[i] - yb[i];
+        dy -= spec.geo.length * std::round(dy / spec.geo.length);
+        sum2 += (xa[i] - xb[i]) * (xa[i] - xb[i]) + dy * dy;
+    }
+    return std::sqrt(sum2 / double(xa.size())) / spec.d_mean;
+}
+
+// The present grains of eng, to start a copy of it.
+PipeStart grains_of(const Engine& eng) { return {eng.x(), eng.y(), eng.vx(), eng.vy(), eng.radius(), eng.mass()}; }
+
 // The same 5000 steps in both codes from the same start: kinetic energy, mean velocity and the
 // grains' positions every 1000 steps; beside them, how far two granrepro runs drift apart when one
 // grain starts 1e-12 m (1e-9 diameters) away, which is what chaos alone does to such a comparison.
@@ -250,11 +268,9 @@ void trajectory_check(const Lammps& l, const std::filesystem::path& dir, const P
     const std::vector<Frame> frames = read_dump(dir / "traj.dump", n);
     const std::vector<double> mass = eng.mass();
     // The twin: the same grains, the first one displaced by 1e-12 m along x.
-    Engine twin(eng.normal_law(), eng.shear_law(), spec.geo, eng.dt(), spec.skin);
-    for (std::size_t i = 0; i < n; ++i)
-        twin.add_grain(eng.x()[i] + (i == 0 ? 1e-12 : 0.0), eng.y()[i], eng.vx()[i], eng.vy()[i], eng.radius()[i],
-                       eng.mass()[i]);
-    twin.finalize();
+    PipeStart moved = grains_of(eng);
+    moved.x[0] += 1e-12;
+    Engine twin = pipe_engine(spec, moved, eng.normal_law(), eng.shear_law(), eng.dt());
     double mass_dev = 0;
     if (!frames.empty())
         for (std::size_t i = 0; i < n; ++i) mass_dev = std::max(mass_dev, std::abs(frames[0].mass[i] / mass[i] - 1));
@@ -263,24 +279,15 @@ void trajectory_check(const Lammps& l, const std::filesystem::path& dir, const P
     std::printf("    %6s %13s %13s %11s %11s %11s %11s %17s\n", "step", "KE ours [J]", "KE LAMMPS", "LAMMPS/ours",
                 "twin/ours", "<v_y> ours", "<v_y> LAMMPS", "rms |dr| / d");
     std::printf("    %6s %13s %13s %11s %11s %11s %11s %17s\n", "", "", "", "- 1", "- 1", "[m/s]", "[m/s]", "LAMMPS    twin");
-    auto rms_dr = [&](const std::vector<double>& x, const std::vector<double>& y) {
-        double sum2 = 0;
-        for (std::size_t i = 0; i < n; ++i) {
-            double dy = eng.y()[i] - y[i];
-            dy -= spec.geo.length * std::round(dy / spec.geo.length);
-            sum2 += (eng.x()[i] - x[i]) * (eng.x()[i] - x[i]) + dy * dy;
-        }
-        return std::sqrt(sum2 / double(n)) / spec.d_mean;
+    auto dr_ours = [&](const std::vector<double>& x, const std::vector<double>& y) {
+        return rms_dr(spec, eng.x(), eng.y(), x, y);
     };
     // Each code's own change when dt is halved, at the same times: the fair yardstick for the
     // comparison above. The codes evaluate the velocity-dependent forces (dashpot, Coulomb) at
     // different points of the step (LAMMPS velocity Verlet with half-step velocities, ours with
     // the step's predicted velocities), so they differ by O(dt) per contact, as each does from
     // itself at dt/2; the twin measures round-off chaos only.
-    Engine half(eng.normal_law(), eng.shear_law(), spec.geo, eng.dt() / 2, spec.skin);
-    for (std::size_t i = 0; i < n; ++i)
-        half.add_grain(eng.x()[i], eng.y()[i], eng.vx()[i], eng.vy()[i], eng.radius()[i], eng.mass()[i]);
-    half.finalize();
+    Engine half = pipe_engine(spec, grains_of(eng), eng.normal_law(), eng.shear_law(), eng.dt() / 2);
     const std::filesystem::path dir_half = dir / "half-dt";
     std::filesystem::create_directories(dir_half);
     write_lammps_case(dir_half, half, spec, 2 * steps, 2 * every);
@@ -296,22 +303,14 @@ void trajectory_check(const Lammps& l, const std::filesystem::path& dir, const P
         half.advance(2 * f.step - half.steps());
         Row r{f.step, kinetic_energy(mass, eng.vx(), eng.vy()), kinetic_energy(mass, f.vx, f.vy),
               kinetic_energy(mass, twin.vx(), twin.vy()), kinetic_energy(mass, half.vx(), half.vy()), 0, 0,
-              rms_dr(f.x, f.y), rms_dr(twin.x(), twin.y()), rms_dr(half.x(), half.y()), NAN};
+              dr_ours(f.x, f.y), dr_ours(twin.x(), twin.y()), dr_ours(half.x(), half.y()), NAN};
         for (std::size_t i = 0; i < n; ++i) {
             r.vy_us += eng.vy()[i] / double(n);
             r.vy_l += f.vy[i] / double(n);
         }
         // LAMMPS at dt/2 against LAMMPS at dt (both dumped at the same times).
         for (const Frame& h : frames_half)
-            if (h.step == 2 * f.step) {
-                double sum2 = 0;
-                for (std::size_t i = 0; i < n; ++i) {
-                    double dy = f.y[i] - h.y[i];
-                    dy -= spec.geo.length * std::round(dy / spec.geo.length);
-                    sum2 += (f.x[i] - h.x[i]) * (f.x[i] - h.x[i]) + dy * dy;
-                }
-                r.dr_lhalf = std::sqrt(sum2 / double(n)) / spec.d_mean;
-            }
+            if (h.step == 2 * f.step) r.dr_lhalf = rms_dr(spec, f.x, f.y, h.x, h.y);
         rows.push_back(r);
     }
     for (const Row& r : rows)
@@ -451,15 +450,12 @@ void sizes(const BenchOptions& opt) {
                 while ((t == 1 ? cpu : wall) < 0.5) {
                     Engine eng = build_pipe(spec);
                     eng.set_threads(t);
-                    eng.advance(warm);
-                    const long b0 = eng.list_builds();
-                    const Timing tm = time_advance(eng, timed);
+                    const Timing tm = time_window(eng, warm, timed, builds);
                     cpu += tm.cpu;
                     wall += tm.wall;
                     n = eng.size();
                     work += double(n) * double(timed);
                     bytes = eng.bytes_per_grain();
-                    builds = double(eng.list_builds() - b0) * 1000.0 / double(timed);
                 }
                 (t == 1 ? r1 : rT).push_back(work / (t == 1 ? cpu : wall));
             }
@@ -493,16 +489,11 @@ void speeds(const BenchOptions& opt) {
         double builds = 0, dt = 0;
         for (int rep = 0; rep < opt.repeats; ++rep) {
             const Engine start = build_pipe(spec);
-            Engine eng(start.normal_law(), start.shear_law(), spec.geo, start.dt(), spec.skin);
-            for (std::size_t i = 0; i < start.size(); ++i)
-                eng.add_grain(start.x()[i], start.y()[i], start.vx()[i], start.vy()[i] - v, start.radius()[i],
-                              start.mass()[i]);
-            eng.finalize();
-            eng.advance(warm);
-            const long b0 = eng.list_builds();
-            const Timing tm = time_advance(eng, timed);
+            PipeStart moving = grains_of(start);
+            for (double& vy : moving.vy) vy -= v;
+            Engine eng = pipe_engine(spec, moving, start.normal_law(), start.shear_law(), start.dt());
+            const Timing tm = time_window(eng, warm, timed, builds);
             rate.push_back(double(eng.size()) * double(timed) / tm.cpu);
-            builds = double(eng.list_builds() - b0) * 1000.0 / double(timed);
             dt = eng.dt();
         }
         const double a = median(rate);

@@ -6,17 +6,13 @@
 #include <filesystem>
 #include <fstream>
 #include <numeric>
-#include <fcntl.h>
 #include <regex>
-#include <spawn.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include "analysis/seed_stats.hpp"
 #include "core/input_error.hpp"
+#include "core/spawn.hpp"
 #include "harness/experiment.hpp"
-
-extern char** environ;
 
 namespace granrepro {
 
@@ -26,22 +22,11 @@ namespace {
 
 // Runs argv (searched in PATH), its output to /dev/null; wall seconds, or throws on failure.
 double timed_run(const std::vector<std::string>& argv) {
-    std::vector<char*> args;
-    for (const auto& a : argv) args.push_back(const_cast<char*>(a.c_str()));
-    args.push_back(nullptr);
-    posix_spawn_file_actions_t actions;
-    posix_spawn_file_actions_init(&actions);
-    posix_spawn_file_actions_addopen(&actions, 1, "/dev/null", O_WRONLY, 0);
-    posix_spawn_file_actions_addopen(&actions, 2, "/dev/null", O_WRONLY, 0);
     const auto t0 = std::chrono::steady_clock::now();
-    pid_t pid = 0;
-    const int err = posix_spawnp(&pid, args[0], &actions, nullptr, args.data(), environ);
-    posix_spawn_file_actions_destroy(&actions);
-    if (err != 0) throw std::runtime_error("bench sweep: cannot start " + argv[0]);
-    int status = 0;
-    waitpid(pid, &status, 0);
-    if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
-        throw std::runtime_error("bench sweep: run failed (exit " + std::to_string(WEXITSTATUS(status)) + "): " + argv[0] +
+    const int rc = run_program(argv);
+    if (rc == kNotStarted) throw std::runtime_error("bench sweep: cannot start " + argv[0]);
+    if (rc != 0)
+        throw std::runtime_error("bench sweep: run failed (exit " + std::to_string(rc) + "): " + argv[0] +
                                  " ... (rerun it by hand to see why)");
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }

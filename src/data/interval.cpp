@@ -9,14 +9,13 @@
 
 namespace granrepro {
 
-namespace {
-std::string trim(const std::string& s) {
-    const auto a = s.find_first_not_of(" \t");
+std::string trim(const std::string& s, const char* blanks) {
+    const auto a = s.find_first_not_of(blanks);
     if (a == std::string::npos) return {};
-    const auto b = s.find_last_not_of(" \t");
-    return s.substr(a, b - a + 1);
+    return s.substr(a, s.find_last_not_of(blanks) - a + 1);
 }
 
+namespace {
 // The whole trimmed text as one number that `strto` reads in range (not NaN); `out` is kept otherwise.
 template <class T, class Strto>
 bool parse_whole(const std::string& in, T& out, Strto strto) {

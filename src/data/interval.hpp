@@ -16,5 +16,7 @@ struct Interval {
 // Strict number parsing: the whole string must be a finite double ("inf" only where allowed).
 bool parse_double(const std::string& s, double& out);
 bool parse_long(const std::string& s, long& out);
+// s without the leading and trailing characters of `blanks`.
+std::string trim(const std::string& s, const char* blanks = " \t");
 
 } // namespace granrepro

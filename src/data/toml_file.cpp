@@ -5,16 +5,9 @@
 #include <vector>
 
 #include "core/input_error.hpp"
+#include "data/interval.hpp"
 
 namespace granrepro {
-
-namespace {
-std::string trimmed(const std::string& s) {
-    const auto a = s.find_first_not_of(' ');
-    if (a == std::string::npos) return {};
-    return s.substr(a, s.find_last_not_of(' ') - a + 1);
-}
-} // namespace
 
 std::string toml_error_line(const std::string& file, const std::string& what) {
     std::istringstream in(what);
@@ -28,7 +21,7 @@ std::string toml_error_line(const std::string& file, const std::string& what) {
     long first = 0, current = 0;
     std::vector<std::pair<long, std::string>> hints;
     while (std::getline(in, l)) {
-        const std::string t = trimmed(l);
+        const std::string t = trim(l, " ");
         const auto bar = t.find(" |");
         if (!t.empty() && std::isdigit(static_cast<unsigned char>(t[0])) && bar != std::string::npos &&
             t.find_first_not_of("0123456789") == bar) {
@@ -36,10 +29,10 @@ std::string toml_error_line(const std::string& file, const std::string& what) {
             if (!first) first = current;
         } else if (t.rfind("|", 0) == 0) {
             // "|     ^--- expected value": the hint after the caret or tildes.
-            const std::string mark = trimmed(t.substr(1));
+            const std::string mark = trim(t.substr(1), " ");
             const auto text = mark.find_first_not_of("^~-");
             if (!mark.empty() && (mark[0] == '^' || mark[0] == '~') && text != std::string::npos)
-                hints.emplace_back(current, trimmed(mark.substr(text)));
+                hints.emplace_back(current, trim(mark.substr(text), " "));
         }
     }
     std::string out = file + (first ? ":" + std::to_string(first) : "") + ": " + message;

@@ -156,9 +156,8 @@ CollisionRateFit CollisionRateFit::fit(const RateHistogram& h, Model model, doub
         gsl_multifit_nlinear_parameters params = gsl_multifit_nlinear_default_parameters();
         gsl_multifit_nlinear_workspace* w =
             gsl_multifit_nlinear_alloc(gsl_multifit_nlinear_trust, &params, pr.bins.size(), 1);
-        gsl_vector* x0 = gsl_vector_alloc(1);
-        gsl_vector_set(x0, 0, best);
-        gsl_multifit_nlinear_init(x0, &fdf, w);
+        gsl_vector_view x0 = gsl_vector_view_array(&best, 1);
+        gsl_multifit_nlinear_init(&x0.vector, &fdf, w);
         int info = 0;
         int status = GSL_SUCCESS;
         {
@@ -170,7 +169,6 @@ CollisionRateFit CollisionRateFit::fit(const RateHistogram& h, Model model, doub
         }
         lp = gsl_vector_get(gsl_multifit_nlinear_position(w), 0);
         out.converged = status == GSL_SUCCESS && std::isfinite(lp);
-        gsl_vector_free(x0);
         gsl_multifit_nlinear_free(w);
         if (!std::isfinite(lp)) lp = best;
     }

@@ -6,7 +6,6 @@
 #include <cmath>
 #include <mutex>
 #include <stdexcept>
-#include <utility>
 
 namespace granrepro {
 
@@ -29,6 +28,13 @@ int StructureFactor::lattice_size(double l, double d) {
     return best;
 }
 
+void StructureFactor::FftwFree::operator()(void* p) const { fftw_free(p); }
+
+void StructureFactor::PlanDestroy::operator()(void* p) const {
+    std::lock_guard<std::mutex> lock(fftw_planner_mutex());
+    fftw_destroy_plan(static_cast<fftw_plan>(p));
+}
+
 StructureFactor::StructureFactor(double l, double d, int M) : l_(l) {
     if (!(l > 0.0) || !(d > 0.0)) throw std::invalid_argument("StructureFactor: l, d must be > 0");
     M_ = M > 0 ? M : lattice_size(l, d);
@@ -39,61 +45,17 @@ StructureFactor::StructureFactor(double l, double d, int M) : l_(l) {
     const auto ncomplex = static_cast<std::size_t>(M_) * static_cast<std::size_t>(half_);
     {
         std::lock_guard<std::mutex> lock(fftw_planner_mutex());
-        in_ = fftw_alloc_real(nreal);
+        in_.reset(fftw_alloc_real(nreal));
         auto* out = fftw_alloc_complex(ncomplex);
-        out_ = out;
-        if (!in_ || !out) {
-            release();
-            throw std::bad_alloc();
-        }
-        plan_ = fftw_plan_dft_r2c_2d(M_, M_, in_, out, FFTW_ESTIMATE);
+        out_.reset(out);
+        if (!in_ || !out) throw std::bad_alloc();
+        plan_.reset(fftw_plan_dft_r2c_2d(M_, M_, in_.get(), out, FFTW_ESTIMATE));
     }
-    if (!plan_) {
-        release();
-        throw std::runtime_error("StructureFactor: FFTW planning failed");
-    }
+    if (!plan_) throw std::runtime_error("StructureFactor: FFTW planning failed");
     density_.assign(nreal, 0.0);
     last_.assign(ncomplex, 0.0);
     sum_.assign(ncomplex, 0.0);
     sum2_.assign(ncomplex, 0.0);
-}
-
-void StructureFactor::release() {
-    std::lock_guard<std::mutex> lock(fftw_planner_mutex());
-    if (plan_) fftw_destroy_plan(static_cast<fftw_plan>(plan_));
-    if (in_) fftw_free(in_);
-    if (out_) fftw_free(out_);
-    plan_ = nullptr;
-    in_ = nullptr;
-    out_ = nullptr;
-}
-
-StructureFactor::~StructureFactor() {
-    if (plan_ || in_ || out_) release();
-}
-
-StructureFactor::StructureFactor(StructureFactor&& o) noexcept
-    : l_(o.l_), M_(o.M_), half_(o.half_), in_(std::exchange(o.in_, nullptr)),
-      out_(std::exchange(o.out_, nullptr)), plan_(std::exchange(o.plan_, nullptr)),
-      density_(std::move(o.density_)), last_(std::move(o.last_)), sum_(std::move(o.sum_)),
-      sum2_(std::move(o.sum2_)), snapshots_(o.snapshots_) {}
-
-StructureFactor& StructureFactor::operator=(StructureFactor&& o) noexcept {
-    if (this != &o) {
-        if (plan_ || in_ || out_) release();
-        l_ = o.l_;
-        M_ = o.M_;
-        half_ = o.half_;
-        in_ = std::exchange(o.in_, nullptr);
-        out_ = std::exchange(o.out_, nullptr);
-        plan_ = std::exchange(o.plan_, nullptr);
-        density_ = std::move(o.density_);
-        last_ = std::move(o.last_);
-        sum_ = std::move(o.sum_);
-        sum2_ = std::move(o.sum2_);
-        snapshots_ = o.snapshots_;
-    }
-    return *this;
 }
 
 void StructureFactor::accumulate(std::span<const Vec2> pos) {
@@ -109,9 +71,9 @@ void StructureFactor::accumulate(std::span<const Vec2> pos) {
         density_[static_cast<std::size_t>(iy) * M_ + ix] += 1.0;
     }
     // The planner may have scribbled on in_; copy the density in only now.
-    std::copy(density_.begin(), density_.end(), in_);
-    fftw_execute(static_cast<fftw_plan>(plan_));
-    const auto* out = static_cast<const fftw_complex*>(out_);
+    std::copy(density_.begin(), density_.end(), in_.get());
+    fftw_execute(static_cast<fftw_plan>(plan_.get()));
+    const auto* out = static_cast<const fftw_complex*>(out_.get());
     const double inv_n = 1.0 / static_cast<double>(pos.size());
     for (std::size_t m = 0; m < last_.size(); ++m) {
         const double s = (out[m][0] * out[m][0] + out[m][1] * out[m][1]) * inv_n;

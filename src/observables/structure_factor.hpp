@@ -18,6 +18,7 @@
 #include "core/vec2.hpp"
 
 #include <cstddef>
+#include <memory>
 #include <span>
 #include <vector>
 
@@ -32,12 +33,8 @@ public:
     // size (power of two >= 2) when > 0. Plans the FFT once (FFTW_ESTIMATE: deterministic plans,
     // so reruns give bit-identical spectra; MEASURE would time algorithms and may pick others).
     // Throws std::invalid_argument on bad arguments.
+    // Movable, not copyable (it owns the FFTW arrays and plan).
     StructureFactor(double l, double d, int M = 0);
-    ~StructureFactor();
-    StructureFactor(const StructureFactor&) = delete;
-    StructureFactor& operator=(const StructureFactor&) = delete;
-    StructureFactor(StructureFactor&& o) noexcept;
-    StructureFactor& operator=(StructureFactor&& o) noexcept;
 
     int M() const { return M_; }
     double box() const { return l_; }
@@ -67,14 +64,16 @@ public:
     int signed_mode(int i) const { return i <= M_ / 2 ? i : i - M_; }
 
 private:
-    void release();
+    // fftw_free, and fftw_destroy_plan under the planner lock; void* keeps fftw3.h out of the header.
+    struct FftwFree { void operator()(void* p) const; };
+    struct PlanDestroy { void operator()(void* p) const; };
 
     double l_ = 0.0;
     int M_ = 0;
     int half_ = 0; // M/2 + 1
-    double* in_ = nullptr;   // fftw_malloc'd M*M reals
-    void* out_ = nullptr;    // fftw_complex[M*(M/2+1)], void* keeps fftw3.h out of the header
-    void* plan_ = nullptr;   // fftw_plan
+    std::unique_ptr<double, FftwFree> in_; // fftw_malloc'd M*M reals
+    std::unique_ptr<void, FftwFree> out_;  // fftw_complex[M*(M/2+1)]
+    std::unique_ptr<void, PlanDestroy> plan_; // fftw_plan
     std::vector<double> density_, last_, sum_, sum2_;
     std::size_t snapshots_ = 0;
 };

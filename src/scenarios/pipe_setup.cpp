@@ -62,20 +62,19 @@ PipeStart pipe_start(const PipeSpec& s) {
     if (long(sites.size()) < n) throw std::runtime_error("area fraction too high for a lattice start");
     for (std::size_t i = sites.size() - 1; i > 0; --i) std::swap(sites[i], sites[rng.index(i + 1)]);
     sites.resize(std::size_t(n));
-    std::vector<double> vx(static_cast<std::size_t>(n)), vy(static_cast<std::size_t>(n));
-    for (long i = 0; i < n; ++i) {
-        vx[std::size_t(i)] = s.agitation * rng.normal();
-        vy[std::size_t(i)] = s.agitation * rng.normal();
-    }
-    const double mx = std::accumulate(vx.begin(), vx.end(), 0.0) / double(n);
-    const double my = std::accumulate(vy.begin(), vy.end(), 0.0) / double(n);
     PipeStart g;
     for (long i = 0; i < n; ++i) {
+        g.vx.push_back(s.agitation * rng.normal());
+        g.vy.push_back(s.agitation * rng.normal());
+    }
+    const double mx = std::accumulate(g.vx.begin(), g.vx.end(), 0.0) / double(n);
+    const double my = std::accumulate(g.vy.begin(), g.vy.end(), 0.0) / double(n);
+    for (std::size_t i = 0; i < std::size_t(n); ++i) {
         const double d = s.d_mean * (1 + s.polydispersity * rng.uniform(-1, 1));
-        g.x.push_back(sites[std::size_t(i)].first);
-        g.y.push_back(sites[std::size_t(i)].second);
-        g.vx.push_back(vx[std::size_t(i)] - mx);
-        g.vy.push_back(vy[std::size_t(i)] - my - s.v0);
+        g.x.push_back(sites[i].first);
+        g.y.push_back(sites[i].second);
+        g.vx[i] -= mx;
+        g.vy[i] = g.vy[i] - my - s.v0;
         g.radius.push_back(0.5 * d);
         g.mass.push_back(s.m_mean * (d / s.d_mean) * (d / s.d_mean));
     }

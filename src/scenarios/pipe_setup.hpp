@@ -42,14 +42,21 @@ struct PipeStart {
 };
 PipeStart pipe_start(const PipeSpec& s);
 
-// The pipe with any contact laws (a normal law and a shear law, src/models/) and time step dt [s].
+// The grains g in the pipe of s with any contact laws (a normal law and a shear law, src/models/)
+// and time step dt [s].
 template <class NormalLaw, class ShearLaw>
-PipeEngine<NormalLaw, ShearLaw> build_pipe(const PipeSpec& s, const NormalLaw& normal, const ShearLaw& shear, double dt) {
+PipeEngine<NormalLaw, ShearLaw> pipe_engine(const PipeSpec& s, const PipeStart& g, const NormalLaw& normal,
+                                            const ShearLaw& shear, double dt) {
     PipeEngine<NormalLaw, ShearLaw> eng(normal, shear, s.geo, dt, s.skin);
-    const PipeStart g = pipe_start(s);
     for (std::size_t i = 0; i < g.x.size(); ++i) eng.add_grain(g.x[i], g.y[i], g.vx[i], g.vy[i], g.radius[i], g.mass[i]);
     eng.finalize();
     return eng;
+}
+
+// The pipe with its start (pipe_start).
+template <class NormalLaw, class ShearLaw>
+PipeEngine<NormalLaw, ShearLaw> build_pipe(const PipeSpec& s, const NormalLaw& normal, const ShearLaw& shear, double dt) {
+    return pipe_engine(s, pipe_start(s), normal, shear, dt);
 }
 
 // The paper's pipe: Eq. (1)'s linear law from (k_N, e_N) and Coulomb's Eq. (2) in the reading of
