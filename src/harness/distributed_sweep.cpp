@@ -31,41 +31,38 @@ namespace {
 // Threads of a rank > 0 that fetch points, each with its own message tag (1 + thread).
 int serving_threads(const RunContext& ctx) { return mpi::threads_may_call_mpi() ? std::max(1, ctx.threads) : 1; }
 
-// CPU seconds of the calling thread: a point's cost, unaffected by other processes sharing the
-// cores (what `granrepro bench sweep` projects rank counts from).
-double thread_cpu_seconds() {
+timespec clock_now(clockid_t clock) {
     timespec ts{};
-    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
-    return double(ts.tv_sec) + 1e-9 * double(ts.tv_nsec);
+    clock_gettime(clock, &ts);
+    return ts;
 }
 
-double unix_seconds() {
-    timespec ts{};
-    clock_gettime(CLOCK_REALTIME, &ts);
+// Seconds of `clock`. CLOCK_THREAD_CPUTIME_ID: a point's cost, unaffected by other processes
+// sharing the cores (what `granrepro bench sweep` projects rank counts from).
+double seconds(clockid_t clock) {
+    const timespec ts = clock_now(clock);
     return double(ts.tv_sec) + 1e-9 * double(ts.tv_nsec);
 }
 
 // This process's id among the invocations that computed a sweep's points (a resumed run, shards):
 // 16 hex digits from the pid and the time of the first call.
 const std::string& part_id() {
-    static const std::string id = [] {
-        timespec ts{};
-        clock_gettime(CLOCK_REALTIME, &ts);
-        return hex64(fnv1a64(std::to_string(::getpid()) + " " + std::to_string(ts.tv_sec) + "." + std::to_string(ts.tv_nsec)));
-    }();
+    static const timespec ts = clock_now(CLOCK_REALTIME);
+    static const std::string id =
+        hex64(fnv1a64(std::to_string(::getpid()) + " " + std::to_string(ts.tv_sec) + "." + std::to_string(ts.tv_nsec)));
     return id;
 }
 
 // compute(i) and its cost (CPU s of this thread, wall s, start time).
 std::pair<nlohmann::json, PointCost> timed(const std::function<nlohmann::json(long)>& compute, long i) {
     PointCost cost;
-    cost.started_unix = unix_seconds();
+    cost.started_unix = seconds(CLOCK_REALTIME);
     cost.part = part_id();
     cost.rank = mpi::rank();
     const auto w0 = std::chrono::steady_clock::now();
-    const double c0 = thread_cpu_seconds();
+    const double c0 = seconds(CLOCK_THREAD_CPUTIME_ID);
     nlohmann::json value = compute(i);
-    cost.cpu_s = thread_cpu_seconds() - c0;
+    cost.cpu_s = seconds(CLOCK_THREAD_CPUTIME_ID) - c0;
     cost.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - w0).count();
     return {std::move(value), cost};
 }
