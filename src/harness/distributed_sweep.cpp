@@ -7,6 +7,7 @@
 #include <exception>
 #include <mutex>
 #include <optional>
+#include <sstream>
 #include <thread>
 #include <time.h>
 #include <unistd.h>
@@ -273,23 +274,14 @@ void hand_out_points(const RunContext& ctx, const std::function<long()>& dispens
         MPI_Get_count(&status, MPI_CHAR, &bytes);
         std::string message(std::size_t(bytes), '\0');
         MPI_Recv(message.data(), bytes, MPI_CHAR, status.MPI_SOURCE, status.MPI_TAG, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
-        const std::size_t space = message.find(' ');
-        const long done = std::stol(message.substr(0, space));
+        std::istringstream in(message);
+        long done = -1;
+        in >> done;
         if (done >= 0) {
-            std::size_t at = space + 1;
-            auto field = [&] {
-                const std::size_t end = message.find(' ', at);
-                std::string f = message.substr(at, end - at);
-                at = end + 1;
-                return f;
-            };
             PointCost cost;
-            cost.cpu_s = std::stod(field());
-            cost.wall_s = std::stod(field());
-            cost.started_unix = std::stod(field());
-            cost.part = field();
+            in >> cost.cpu_s >> cost.wall_s >> cost.started_unix >> cost.part;
             cost.rank = status.MPI_SOURCE;
-            store(done, nlohmann::json::parse(message.substr(at)), cost);
+            store(done, nlohmann::json::parse(in), cost);
         }
         long long give = dispense();
         MPI_Request request;
