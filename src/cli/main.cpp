@@ -239,7 +239,6 @@ void add_experiment_commands(CLI::App& app, CommonFlags& common, int& rc) {
             rc = common.dry_run ? dry_run(name, o) : run_experiment(name, o);
         });
     }
-
 }
 
 void add_figure_command(CLI::App& app, CommonFlags& common, int& rc) {
@@ -360,13 +359,10 @@ void add_all_command(CLI::App& app, CommonFlags& common, int& rc) {
     all->callback([&] {
         RunOptions o = common.options();
         o.shard_from_slurm = false;
-        if (!common.dry_run) {
-            rc = run_all(o);
-            return;
-        }
-        for (const auto& e : experiment_registry()) rc |= dry_run(e.name, o);
+        if (common.dry_run)
+            for (const auto& e : experiment_registry()) rc |= dry_run(e.name, o);
+        else rc = run_all(o);
     });
-
 }
 
 void add_bench_command(CLI::App& app, int& rc) {

@@ -7,6 +7,7 @@
 #include <exception>
 #include <mutex>
 #include <optional>
+#include <sstream>
 #include <thread>
 #include <time.h>
 #include <unistd.h>
@@ -31,41 +32,38 @@ namespace {
 // Threads of a rank > 0 that fetch points, each with its own message tag (1 + thread).
 int serving_threads(const RunContext& ctx) { return mpi::threads_may_call_mpi() ? std::max(1, ctx.threads) : 1; }
 
-// CPU seconds of the calling thread: a point's cost, unaffected by other processes sharing the
-// cores (what `granrepro bench sweep` projects rank counts from).
-double thread_cpu_seconds() {
+timespec clock_now(clockid_t clock) {
     timespec ts{};
-    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
-    return double(ts.tv_sec) + 1e-9 * double(ts.tv_nsec);
+    clock_gettime(clock, &ts);
+    return ts;
 }
 
-double unix_seconds() {
-    timespec ts{};
-    clock_gettime(CLOCK_REALTIME, &ts);
+// Seconds of `clock`. CLOCK_THREAD_CPUTIME_ID: a point's cost, unaffected by other processes
+// sharing the cores (what `granrepro bench sweep` projects rank counts from).
+double seconds(clockid_t clock) {
+    const timespec ts = clock_now(clock);
     return double(ts.tv_sec) + 1e-9 * double(ts.tv_nsec);
 }
 
 // This process's id among the invocations that computed a sweep's points (a resumed run, shards):
 // 16 hex digits from the pid and the time of the first call.
 const std::string& part_id() {
-    static const std::string id = [] {
-        timespec ts{};
-        clock_gettime(CLOCK_REALTIME, &ts);
-        return hex64(fnv1a64(std::to_string(::getpid()) + " " + std::to_string(ts.tv_sec) + "." + std::to_string(ts.tv_nsec)));
-    }();
+    static const timespec ts = clock_now(CLOCK_REALTIME);
+    static const std::string id =
+        hex64(fnv1a64(std::to_string(::getpid()) + " " + std::to_string(ts.tv_sec) + "." + std::to_string(ts.tv_nsec)));
     return id;
 }
 
 // compute(i) and its cost (CPU s of this thread, wall s, start time).
 std::pair<nlohmann::json, PointCost> timed(const std::function<nlohmann::json(long)>& compute, long i) {
     PointCost cost;
-    cost.started_unix = unix_seconds();
+    cost.started_unix = seconds(CLOCK_REALTIME);
     cost.part = part_id();
     cost.rank = mpi::rank();
     const auto w0 = std::chrono::steady_clock::now();
-    const double c0 = thread_cpu_seconds();
+    const double c0 = seconds(CLOCK_THREAD_CPUTIME_ID);
     nlohmann::json value = compute(i);
-    cost.cpu_s = thread_cpu_seconds() - c0;
+    cost.cpu_s = seconds(CLOCK_THREAD_CPUTIME_ID) - c0;
     cost.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - w0).count();
     return {std::move(value), cost};
 }
@@ -276,23 +274,14 @@ void hand_out_points(const RunContext& ctx, const std::function<long()>& dispens
         MPI_Get_count(&status, MPI_CHAR, &bytes);
         std::string message(std::size_t(bytes), '\0');
         MPI_Recv(message.data(), bytes, MPI_CHAR, status.MPI_SOURCE, status.MPI_TAG, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
-        const std::size_t space = message.find(' ');
-        const long done = std::stol(message.substr(0, space));
+        std::istringstream in(message);
+        long done = -1;
+        in >> done;
         if (done >= 0) {
-            std::size_t at = space + 1;
-            auto field = [&] {
-                const std::size_t end = message.find(' ', at);
-                std::string f = message.substr(at, end - at);
-                at = end + 1;
-                return f;
-            };
             PointCost cost;
-            cost.cpu_s = std::stod(field());
-            cost.wall_s = std::stod(field());
-            cost.started_unix = std::stod(field());
-            cost.part = field();
+            in >> cost.cpu_s >> cost.wall_s >> cost.started_unix >> cost.part;
             cost.rank = status.MPI_SOURCE;
-            store(done, nlohmann::json::parse(message.substr(at)), cost);
+            store(done, nlohmann::json::parse(in), cost);
         }
         long long give = dispense();
         MPI_Request request;

@@ -152,6 +152,12 @@ std::string emitted_script(const std::string& id, const std::string& body, const
 
 RenderOutcome render_figure(const std::string& id, const std::filesystem::path& run_dir,
                             const std::filesystem::path& shown_dir, bool edited) {
+    // No figure of an earlier run stays beside data it was not drawn from.
+    auto not_drawn = [&](RenderOutcome outcome, const std::string& why) {
+        remove_figure(run_dir, id);
+        warn(why);
+        return outcome;
+    };
     const auto script = project_root() / "plots" / (id + ".gp");
     std::ifstream in(script);
     if (!in) {
@@ -180,19 +186,14 @@ RenderOutcome render_figure(const std::string& id, const std::filesystem::path& 
     if (run_kept && !just_edited) warn("rendering the edited script " + previous_kept.string() + " (--edited)");
     const std::string text = run_kept ? read_file(kept) : body.str();
     // A table the script names that this run did not make (e.g. cooling with run_ed = false has
-    // no ED tables): the figure is not drawn, and no figure of an earlier run stays beside the data.
-    if (const std::string table = missing_table(text, run_dir / "tables"); !table.empty()) {
-        remove_figure(run_dir, id);
-        warn(id + " not drawn: the run made no table " + table);
-        return RenderOutcome::Skipped;
-    }
+    // no ED tables): the figure is not drawn.
+    if (const std::string table = missing_table(text, run_dir / "tables"); !table.empty())
+        return not_drawn(RenderOutcome::Skipped, id + " not drawn: the run made no table " + table);
     std::string assignments;
     try {
         assignments = parameter_assignments(body.str(), run_dir / "summary.json");
     } catch (const std::runtime_error& e) {
-        remove_figure(run_dir, id);
-        warn(id + " not drawn: " + e.what());
-        return RenderOutcome::Failed;
+        return not_drawn(RenderOutcome::Failed, id + " not drawn: " + e.what());
     }
     write_file_durably(emitted, emitted_script(id, body.str(), run_dir / "tables", assignments)); // a full disk is a WriteError, not a 0-byte script
     // "./": a name is never read as an option; the working directory, not a shell, finds it.
@@ -200,17 +201,13 @@ RenderOutcome render_figure(const std::string& id, const std::filesystem::path& 
     const int rc = run_program({"gnuplot", "./" + id + (run_kept ? ".edited.gp" : ".gp")}, run_dir, log);
     const auto shown_log = shown / (id + ".gnuplot.log");
     if (rc == kNotStarted) {
-        remove_figure(run_dir, id);
         std::filesystem::remove(log, ec);
-        warn(id + " not drawn: gnuplot could not be started (is it installed? Debian package gnuplot-nox)");
-        return RenderOutcome::Failed;
+        return not_drawn(RenderOutcome::Failed,
+                         id + " not drawn: gnuplot could not be started (is it installed? Debian package gnuplot-nox)");
     }
-    if (rc != 0 || !std::filesystem::exists(run_dir / (id + ".png"))) {
-        // Whatever gnuplot wrote before it failed is not a figure (and not a sign of a full disk).
-        remove_figure(run_dir, id);
-        warn("gnuplot failed for " + id + " (see " + shown_log.string() + ")");
-        return RenderOutcome::Failed;
-    }
+    // Whatever gnuplot wrote before it failed is not a figure (and not a sign of a full disk).
+    if (rc != 0 || !std::filesystem::exists(run_dir / (id + ".png")))
+        return not_drawn(RenderOutcome::Failed, "gnuplot failed for " + id + " (see " + shown_log.string() + ")");
     if (std::filesystem::file_size(log, ec) == 0) {
         std::filesystem::remove(log, ec);
         return RenderOutcome::Clean;

@@ -7,7 +7,6 @@
 #include <cstdio>
 #include <cstdlib>
 #include <ctime>
-#include <fstream>
 #include <limits>
 #include <optional>
 #include <sstream>
@@ -71,13 +70,8 @@ bool makes(const ExperimentInfo& info, const std::string& figure) {
 // A PNG ends with its IEND chunk; gnuplot does not report a write that ran out of space, so a
 // figure cut short is found here.
 bool png_complete(const fs::path& png) {
-    static const unsigned char iend[12] = {0, 0, 0, 0, 'I', 'E', 'N', 'D', 0xAE, 0x42, 0x60, 0x82};
-    std::ifstream in(png, std::ios::binary | std::ios::ate);
-    if (!in || in.tellg() < 12) return false;
-    in.seekg(-12, std::ios::end);
-    unsigned char tail[12];
-    in.read(reinterpret_cast<char*>(tail), 12);
-    return in && std::equal(tail, tail + 12, iend);
+    static const std::string iend("\0\0\0\0IEND\xAE\x42\x60\x82", 12);
+    return read_file(png).ends_with(iend);
 }
 
 // What `check` reads is validated before it is judged: a damaged or foreign file is bad input
@@ -228,9 +222,6 @@ std::vector<std::string> check_notes(const nlohmann::json& overrides, bool verif
                                    "are compared field by field only");
     return notes;
 }
-} // namespace
-
-namespace {
 
 // The figures a run renders: the requested ones (all for a plain run) and every other figure the
 // directory it replaces had, re-rendered from the new data.
@@ -524,11 +515,12 @@ std::vector<Claim> experiment_claims(const std::string& name) {
     return load_claims(expected_file(name), name, &info.outputs);
 }
 
-nlohmann::json read_checked_summary(const std::string& name, const fs::path& out, bool* verified) {
+nlohmann::json read_checked_summary(const std::string& name, const fs::path& out, bool* verified, const std::string& missing) {
     const fs::path summary_path = out / name / "summary.json";
     if (!fs::exists(summary_path))
-        throw InputError("no results of " + name + " in " + (out / name).string() + "; run `granrepro " + name +
-                         "` first");
+        throw InputError(!missing.empty() ? missing
+                                          : "no results of " + name + " in " + (out / name).string() + "; run `granrepro " +
+                                                name + "` first");
     nlohmann::json summary = read_summary(summary_path, name);
     const bool v = check_data_file(out / name / "data.h5", name, summary_path, summary);
     if (verified) *verified = v;
@@ -538,12 +530,9 @@ nlohmann::json read_checked_summary(const std::string& name, const fs::path& out
 int check_experiment(const std::string& name, const fs::path& out, const CheckOptions& opt, VerdictCounts* totals) {
     find_experiment(name);
     const auto claims = experiment_claims(name);
-    const fs::path summary_path = out / name / "summary.json";
-    if (!fs::exists(summary_path))
-        throw InputError("check " + name + ": no results in " + (out / name).string() + "; run `granrepro " +
-                         name + "` first");
-    const nlohmann::json summary = read_summary(summary_path, name);
-    const bool verified = check_data_file(out / name / "data.h5", name, summary_path, summary);
+    bool verified = false;
+    const nlohmann::json summary = read_checked_summary(
+        name, out, &verified, "check " + name + ": no results in " + (out / name).string() + "; run `granrepro " + name + "` first");
     const Scale scale = parse_scale(summary["scale"].get<std::string>());
     const auto verdicts = evaluate_claims(claims, summary["scalars"], scale);
     const auto notes = check_notes(summary.value("overridden_parameters", nlohmann::json::object()), verified);
@@ -557,10 +546,8 @@ int check_experiment(const std::string& name, const fs::path& out, const CheckOp
 nlohmann::json judged_claims(const std::string& name, const fs::path& out) {
     find_experiment(name);
     const auto claims = load_claims(expected_file(name), name);
-    const fs::path summary_path = out / name / "summary.json";
-    if (!fs::exists(summary_path)) throw InputError("report: no results in " + (out / name).string());
-    const nlohmann::json summary = read_summary(summary_path, name);
-    const bool verified = check_data_file(out / name / "data.h5", name, summary_path, summary);
+    bool verified = false;
+    const nlohmann::json summary = read_checked_summary(name, out, &verified, "report: no results in " + (out / name).string());
     const std::string scale = summary["scale"].get<std::string>();
     const auto verdicts = evaluate_claims(claims, summary["scalars"], parse_scale(scale));
     return {{"scale", scale},

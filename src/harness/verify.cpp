@@ -24,13 +24,15 @@ using nlohmann::json;
 
 namespace granrepro {
 
+namespace {
+
+// Names of values that measure time (wall or CPU seconds, rates per second, resumed points):
+// not compared, as no rerun reproduces them.
 bool is_timing_name(const std::string& name) {
     auto has = [&](const char* s) { return name.find(s) != std::string::npos; };
-    auto ends = [&](const std::string& s) { return name.size() >= s.size() && name.compare(name.size() - s.size(), s.size(), s) == 0; };
-    return has("wall_seconds") || has("wall_time") || has("seconds_per") || ends("per_second") || name == "resumed_points";
+    return has("wall_seconds") || has("wall_time") || has("seconds_per") || name.ends_with("per_second") ||
+           name == "resumed_points";
 }
-
-namespace {
 
 struct Diff {
     std::string path, before, after;
@@ -177,10 +179,7 @@ ParameterSet recorded_parameters(const Experiment& exp, const fs::path& h5, cons
                                  const fs::path& tmp, std::vector<std::string>& added) {
     const H5File f = H5File::open(h5.string());
     const fs::path file = tmp / (exp.name + ".toml");
-    {
-        std::ofstream o(file);
-        o << f.read_string_attr("experiment_file");
-    }
+    std::ofstream(file) << f.read_string_attr("experiment_file");
     if (const auto [text, names] = added_parameters(exp.name, file); !text.empty()) {
         std::ofstream(file, std::ios::app) << "\n" << text;
         added = names;
@@ -241,10 +240,6 @@ void list_points(const std::string& name, const json& summary, const json& recor
                     r.value("compacted", false) ? "  (large arrays digested)" : "");
     }
 }
-
-} // namespace
-
-namespace {
 
 // What a verification knows before it reruns anything.
 struct Verification {

@@ -28,8 +28,4 @@ struct VerifyOptions {
 // results that cannot be verified.
 int verify_experiment(const VerifyOptions& opt);
 
-// Names of values that measure time (wall or CPU seconds, rates per second, resumed points):
-// not compared, as no rerun reproduces them.
-bool is_timing_name(const std::string& name);
-
 } // namespace granrepro

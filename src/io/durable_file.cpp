@@ -31,8 +31,8 @@ std::string read_file(const fs::path& path) {
 void write_file_durably(const fs::path& path, std::string_view content) {
     const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
     if (fd < 0) throw WriteError(path.string(), errno_text(errno));
-    auto fail = [&](int err) {
-        ::close(fd);
+    auto fail = [&](int err, bool open = true) {
+        if (open) ::close(fd);
         std::error_code ec;
         fs::remove(path, ec);
         throw WriteError(path.string(), errno_text(err));
@@ -48,12 +48,7 @@ void write_file_durably(const fs::path& path, std::string_view content) {
         done += std::size_t(n);
     }
     if (::fsync(fd) != 0) fail(errno);
-    if (::close(fd) != 0) {
-        const int err = errno;
-        std::error_code ec;
-        fs::remove(path, ec);
-        throw WriteError(path.string(), errno_text(err));
-    }
+    if (::close(fd) != 0) fail(errno, false);
 }
 
 void fsync_path(const fs::path& path) {

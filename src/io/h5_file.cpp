@@ -252,6 +252,11 @@ std::uint64_t H5Object::read_u64_attr(const std::string& name) const {
 }
 double H5Object::read_double_attr(const std::string& name) const { return read_scalar_attr<double>(id_, name); }
 
+std::string H5Object::read_text(const std::string& name) const {
+    const std::vector<unsigned char> bytes = read_bytes(name);
+    return {bytes.begin(), bytes.end()};
+}
+
 std::string H5Object::read_string_attr(const std::string& name) const {
     H5Object a(check(H5Aopen(id_, name.c_str(), H5P_DEFAULT), "open attr " + name), &H5Aclose);
     H5Object t(H5Aget_type(a.id()), &H5Tclose);

@@ -43,6 +43,7 @@ public:
 
     std::vector<double> read_dataset(const std::string& name) const { return read_array<double>(name); }
     std::vector<unsigned char> read_bytes(const std::string& name) const { return read_array<unsigned char>(name); }
+    std::string read_text(const std::string& name) const; // what compressed_text wrote
     std::string read_string_attr(const std::string& name) const;
     double read_double_attr(const std::string& name) const;
     long read_long_attr(const std::string& name) const;

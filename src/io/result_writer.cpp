@@ -5,6 +5,7 @@
 #include <cmath>
 #include <ctime>
 #include <iomanip>
+#include <map>
 #include <sstream>
 
 #include "core/provenance.hpp"
@@ -302,7 +303,7 @@ void run_totals(Provenance& prov, const SweepPoints& points, double wall_s, doub
     double cpu_here = 0, cpu_all = 0;
     long resumed = 0, unknown = 0;
     struct Span { double a = INFINITY, b = -INFINITY; };
-    std::vector<std::pair<std::string, Span>> parts; // earlier invocations
+    std::map<std::string, Span> parts; // earlier invocations
     for (const auto& p : points.points) {
         const PointCost& c = p.cost;
         resumed += p.resumed;
@@ -313,10 +314,9 @@ void run_totals(Provenance& prov, const SweepPoints& points, double wall_s, doub
         cpu_all += c.cpu_s;
         if (!p.resumed && c.rank == 0) cpu_here += c.cpu_s; // inside this process's CPU time
         if (p.resumed && c.started_unix >= 0 && c.wall_s >= 0) {
-            auto it = std::find_if(parts.begin(), parts.end(), [&](const auto& q) { return q.first == c.part; });
-            if (it == parts.end()) it = parts.insert(parts.end(), {c.part, Span{}});
-            it->second.a = std::min(it->second.a, c.started_unix);
-            it->second.b = std::max(it->second.b, c.started_unix + c.wall_s);
+            Span& span = parts[c.part];
+            span.a = std::min(span.a, c.started_unix);
+            span.b = std::max(span.b, c.started_unix + c.wall_s);
         }
     }
     // The union of the earlier invocations' spans (shards may have run at the same time).
@@ -338,8 +338,7 @@ void run_totals(Provenance& prov, const SweepPoints& points, double wall_s, doub
 nlohmann::json read_points_records(const std::filesystem::path& h5) {
     const H5File f = H5File::open(h5.string());
     if (!f.has("points")) return nlohmann::json::array();
-    const std::vector<unsigned char> bytes = f.open_group("points").read_bytes("records");
-    return nlohmann::json::parse(std::string(bytes.begin(), bytes.end()));
+    return nlohmann::json::parse(f.open_group("points").read_text("records"));
 }
 
 nlohmann::json data_content_hash(const Result& result) {
@@ -376,9 +375,8 @@ nlohmann::json data_content_hash(const std::filesystem::path& h5) {
     if (f.has("points")) {
         // A compact copy whose large arrays were digested vouches with the full records' hash.
         const H5Object g = f.open_group("points");
-        const std::vector<unsigned char> bytes = g.read_bytes("records");
-        out["points"] = g.has_attr("full_records_hash") ? g.read_string_attr("full_records_hash")
-                                                        : points_hash(std::string(bytes.begin(), bytes.end()));
+        const std::string records = g.read_text("records");
+        out["points"] = g.has_attr("full_records_hash") ? g.read_string_attr("full_records_hash") : points_hash(records);
     }
     return out;
 }
@@ -405,8 +403,7 @@ std::vector<std::string> write_compact_result_h5(const std::filesystem::path& sr
         const H5Object pin = in.open_group("points");
         const H5Object pout = out.group("points");
         for (const auto& a : pin.attribute_names()) pin.copy_attr_to(a, pout);
-        const std::vector<unsigned char> bytes = pin.read_bytes("records");
-        const std::string text(bytes.begin(), bytes.end());
+        const std::string text = pin.read_text("records");
         nlohmann::json records = nlohmann::json::parse(text);
         bool any = false;
         for (auto& r : records) {
