@@ -79,8 +79,8 @@ void engine_pause_point_slow() {
     const auto since = std::chrono::steady_clock::now().time_since_epoch() -
                        std::chrono::steady_clock::duration(g_signal_time.load());
     if (std::chrono::duration<double>(since).count() >= kEnginePauseSeconds)
-        throw Interrupted(sig, std::string("interrupted by ") + name_of(sig) +
-                                   " inside a long engine loop");
+        throw EngineLoopInterrupted(sig, std::string("interrupted by ") + name_of(sig) +
+                                             " inside a long engine loop");
 }
 
 void register_for_cleanup(const std::filesystem::path& p) {

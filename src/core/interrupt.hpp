@@ -2,7 +2,9 @@
 // thread exists: both signals are then blocked in every thread and a watcher thread waits for
 // them. The first signal only sets a flag; the run stops at its next pause point:
 //   - a long single run (RunCheckpoint) saves a final checkpoint there and throws Interrupted;
-//   - a sweep (distributed_sweep) hands out no further points (finished points are already saved);
+//   - a sweep (distributed_sweep) hands out no further points (finished points are already saved)
+//     and abandons a point whose engine loop stops it (EngineLoopInterrupted), leaving it for the
+//     rerun;
 //   - a run whose computation is already over still writes and commits its results.
 // The staging folder is removed as the Interrupted exception unwinds, and main() prints one line
 // and exits 128 + signal (130 for SIGINT, 143 for SIGTERM). If no pause point comes within the
@@ -31,6 +33,13 @@ public:
 
 private:
     int signal_;
+};
+
+// Thrown by an engine's inner loop (engine_pause_point): the run stopped between its own pause
+// points, so nothing of the unfinished work was saved; a sweep leaves that point for the rerun.
+class EngineLoopInterrupted : public Interrupted {
+public:
+    using Interrupted::Interrupted;
 };
 
 void install_interrupt_handling();

@@ -317,7 +317,10 @@ SweepResult distributed_sweep(const RunContext& ctx, const std::string& label, c
     std::size_t next = 0;
     std::exception_ptr error;
     // After SIGINT/SIGTERM no further point is handed out; the points under way finish and are
-    // saved, so the rerun computes only the rest.
+    // saved, so the rerun computes only the rest. A point that its engine loop stops (it did not
+    // finish within kEnginePauseSeconds: a long point, a loaded machine) is abandoned and left for
+    // the rerun like the points not handed out, so the run ends the same way whatever the timing.
+    // (A point that saved a final checkpoint of its own ends the run with that point's message.)
     auto dispense = [&]() -> long {
         std::lock_guard<std::mutex> lock(mutex);
         return next < todo.size() && !interrupt_requested() ? todo[next++] : -1;
@@ -331,6 +334,9 @@ SweepResult distributed_sweep(const RunContext& ctx, const std::string& label, c
                 auto [value, cost] = timed(compute, i);
                 store(i, std::move(value), cost);
             }
+        } catch (const EngineLoopInterrupted&) {
+            std::lock_guard<std::mutex> lock(mutex);
+            next = todo.size();
         } catch (const std::exception& e) {
             if (spread) point_failed(i, e.what());
             std::lock_guard<std::mutex> lock(mutex);
