@@ -17,7 +17,7 @@ min_unit=214
 min_integration=105
 min_validation=25
 min_repro=46
-min_sweep=12
+min_sweep=13
 min_report=11
 
 count() { (cd "$1" && ctest -N -L "^$2\$" | sed -n 's/^Total Tests: //p'); }

@@ -84,12 +84,13 @@ Crack find_crack(const std::vector<Vec2>& pos, const CrackSearch& s) {
     // Course: midway between the bottom part's highest disk and the top part's lowest one above it.
     const std::size_t m = std::max<std::size_t>(1, std::size_t(std::lround(s.width / (s.slice > 0 ? s.slice : d))));
     const double sw = s.width / double(m);
-    auto slice = [&](std::size_t i) { return std::min(m - 1, std::size_t(std::max(0.0, std::floor(pos[i].x / sw)))); };
+    std::vector<std::size_t> k(n); // each disk's slice
+    for (std::size_t i = 0; i < n; ++i) k[i] = std::min(m - 1, std::size_t(std::max(0.0, std::floor(pos[i].x / sw))));
     std::vector<double> lo(m, -INFINITY), hi(m, INFINITY);
     for (std::size_t i = 0; i < n; ++i)
-        if (c.side[i] == -1) lo[slice(i)] = std::max(lo[slice(i)], pos[i].y);
+        if (c.side[i] == -1) lo[k[i]] = std::max(lo[k[i]], pos[i].y);
     for (std::size_t i = 0; i < n; ++i)
-        if (c.side[i] == +1 && pos[i].y > lo[slice(i)]) hi[slice(i)] = std::min(hi[slice(i)], pos[i].y);
+        if (c.side[i] == +1 && pos[i].y > lo[k[i]]) hi[k[i]] = std::min(hi[k[i]], pos[i].y);
     c.y_mean = 0;
     c.y_low = INFINITY;
     c.y_high = -INFINITY;

@@ -359,9 +359,11 @@ void add_all_command(CLI::App& app, CommonFlags& common, int& rc) {
     all->callback([&] {
         RunOptions o = common.options();
         o.shard_from_slurm = false;
-        if (common.dry_run)
+        if (common.dry_run) {
             for (const auto& e : experiment_registry()) rc |= dry_run(e.name, o);
-        else rc = run_all(o);
+        } else {
+            rc = run_all(o);
+        }
     });
 }
 

@@ -144,6 +144,25 @@ TEST(SweepShards, SigtermStopsHandingOutPointsAndTheRerunResumes) {
     expect_identical(ra, b / "bistable-pipe");
 }
 
+// SIGTERM while the first point is still far from its end (a 12 s point, signalled 0.5 s in): the
+// engine loop stops the point after its 1 s pause, and the sweep leaves it for the rerun, ending
+// with the sweep's own line, whatever the machine's speed or load (before, this one timing gave
+// "inside a long engine loop" and the sweep's count of points left was lost).
+TEST(SweepShards, SigtermInsideALongPointLeavesItForTheRerun) {
+    const TempPath b("term-long"), err("term-long-err");
+    const std::string args = "bistable-pipe --scale quick --set kN_list=200 --set eN_list=0.95 --set budget_tcol=100000 "
+                             "--set window=0.1 --set t_average=0.1 --quiet --threads 1 --out " + b.string();
+    const std::string wait_then_term = std::string(GRANREPRO_BINARY) + " " + args + " 2> " + err.string() +
+                                       " & p=$!; for i in $(seq 1200); do ls -d " + b.string() +
+                                       "/.bistable-pipe.checkpoint/sweep-* > /dev/null 2>&1 && break; "
+                                       "sleep 0.05; done; sleep 0.5; kill -TERM $p; wait $p";
+    EXPECT_EQ(shell("sh -c '" + wait_then_term + "'").code, 143);
+    const std::string text = slurp(err);
+    EXPECT_NE(text.find("interrupted by SIGTERM; 2 of 2 sweep points left for the rerun"), std::string::npos) << text;
+    EXPECT_EQ(text.find("inside a long engine loop"), std::string::npos) << text;
+    EXPECT_FALSE(fs::exists(b / "bistable-pipe"));
+}
+
 // --points 1/2 and 2/2 into one --out, then gather: the single run's result. Gather before the
 // second shard refuses (exit 2) naming the missing points.
 TEST(SweepShards, ShardsPlusGatherEqualSingleRun) {

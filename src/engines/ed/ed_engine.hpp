@@ -306,8 +306,8 @@ private:
     std::uint64_t zero_time_run_ = 0;
 };
 
-// Queue choice, measured with run_ed_benchmark (elastic, rho = 0.25, periodic, this 2-core EPYC,
-// collisions per CPU second at N = 1e4 / 1e5 / 1e6):
+// Queue choice, measured with run_ed_benchmark's former queue option (elastic, rho = 0.25,
+// periodic, this 2-core EPYC, collisions per CPU second at N = 1e4 / 1e5 / 1e6):
 //   binary heap 1.09e6 / 6.9e5 / 3.6e5,  4-ary heap 1.02e6 / 6.2e5 / 3.6e5,
 //   calendar    1.22e6 / 7.4e5 / 3.5e5,  (a heap + far-future buckets variant: 0.87e6 / 4.8e5 / 3.3e5).
 // At large N the loop is bound by cache misses, so the queues tie there; the binary heap is kept
