@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "core/input_error.hpp"
+#include "core/untrusted_file.hpp"
 #include "data/interval.hpp"
 
 namespace granrepro {
@@ -44,13 +45,15 @@ std::string toml_error_line(const std::string& file, const std::string& what) {
 
 toml::value parse_toml_file(const std::filesystem::path& file, const std::string& role) {
     std::error_code ec;
-    const auto status = std::filesystem::status(file, ec);
-    if (!std::filesystem::exists(status)) throw InputError(file.string() + ": " + role + " not found");
-    if (!std::filesystem::is_regular_file(status))
-        throw InputError(file.string() + ": " + role + " is not a regular file (" +
-                         (std::filesystem::is_directory(status) ? "a directory" : "a special file") + ")");
+    if (!std::filesystem::exists(std::filesystem::symlink_status(file, ec)))
+        throw InputError(file.string() + ": " + role + " not found");
+    // Bounded before toml11 sees it: a regular file under the cap, nested no deeper than the cap
+    // (toml11 parses arrays and dotted keys recursively).
+    const std::string text = read_untrusted_file(file, kMaxTextFileBytes, role);
+    check_toml_depth(text, file.string());
     try {
-        return toml::parse(file.string());
+        std::istringstream in(text);
+        return toml::parse(in, file.string());
     } catch (const std::exception& e) {
         throw InputError(toml_error_line(file.string(), e.what()));
     }
