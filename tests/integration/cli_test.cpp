@@ -190,7 +190,7 @@ TEST(Cli, DataFileThatIsADirectoryIsAnInputError) {
         for (const char* mode : {"--dry-run", ""})
             expect_one_line_exit(run(std::string("emergency-brake --quiet ") + mode + " --out " + out.string(),
                                      "GRANREPRO_HOME=" + home.string()),
-                                 2, {(home / file).string() + ": ", "not a regular file (a directory)"});
+                                 2, {(home / file).string() + ": ", "is a directory, not a regular file"});
         EXPECT_FALSE(fs::exists(out / "emergency-brake"));
     }
 }
