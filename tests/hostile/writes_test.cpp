@@ -214,13 +214,14 @@ TEST(HostileWritesReport, AKilledReportsClaimsFileIsRemovedByTheNext) {
 // export --to the folder it reads replaced the full data.h5 with the compact copy (exit 0).
 TEST(HostileWritesExport, ExportOntoItsOwnFolderIsRefused) {
     const Crafted c("export-self");
-    const std::string before = slurp(c.dir() / "data.h5");
+    auto digest = [&] { return granrepro::fnv1a64(slurp(c.dir() / "data.h5")); };
+    const std::uint64_t before = digest();
     const fs::path alias = c.base / "alias"; // a link the user made to the same folder
     fs::create_symlink(c.out, alias);
     for (const fs::path& to : {c.out, c.out / ".." / "out", alias})
         expect_refusal(run_argv({"export", "brake-failure", "--out", c.out.string(), "--to", to.string()}), 2,
                        {"--to " + to.string(), "same folder"});
-    EXPECT_EQ(slurp(c.dir() / "data.h5"), before);
+    EXPECT_EQ(digest(), before) << "data.h5 replaced";
     c.expect_sentinel_unchanged();
 }
 
