@@ -240,3 +240,22 @@ TEST(HostileWritesOut, AnOutThatCannotHoldResultsIsRefusedAtLoad) {
     EXPECT_EQ(slurp(afile), "a file, not a folder\n");
     c.expect_sentinel_unchanged();
 }
+
+// export --to a folder that is itself untrusted (the documented use is --to paper_figures): a
+// linked experiment folder there is refused; a link planted under the temporary name of the
+// compact copy is removed, not written through.
+TEST(HostileWritesExport, ExportNeverWritesThroughALinkInTheDestination) {
+    const Crafted c("export-dest");
+    const fs::path to = c.base / "to";
+    fs::create_directories(to);
+    fs::create_symlink(c.sentinel.victim_dir(), to / "brake-failure");
+    expect_refusal(run_argv({"export", "brake-failure", "--out", c.out.string(), "--to", to.string()}), 2,
+                   {(to / "brake-failure").string(), kLinkNote});
+    fs::remove(to / "brake-failure");
+    fs::create_directories(to / "brake-failure");
+    fs::create_symlink(c.sentinel.victim(), to / "brake-failure" / ".data.h5.partial");
+    const Outcome o = run_argv({"export", "brake-failure", "--out", c.out.string(), "--to", to.string()});
+    EXPECT_EQ(o.code, 0) << o.err;
+    EXPECT_FALSE(fs::is_symlink(to / "brake-failure" / "data.h5"));
+    c.expect_sentinel_unchanged();
+}
