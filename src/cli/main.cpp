@@ -23,6 +23,7 @@
 #include "harness/mpi_world.hpp"
 #include "data/interval.hpp"
 #include "harness/runner.hpp"
+#include "io/staged_directory.hpp"
 #include "io/write_error.hpp"
 
 using namespace granrepro;
@@ -121,6 +122,8 @@ struct CommonFlags {
         if (!points.empty()) o.sweep = parse_points(points);
         o.shard_from_slurm = true;
         o.scale = parse_scale(scale);
+        // Refused at load, so --dry-run gives the run's verdict on a file or /proc/self as --out.
+        check_output_directory(out, "--out");
         o.out = out;
         o.seed = parse_seed(seed);
         o.threads = parse_positive_int("--threads", threads, 256);

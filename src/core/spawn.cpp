@@ -69,8 +69,8 @@ int wait_for(pid_t pid) {
 
 int run_program(const std::vector<std::string>& argv, const std::filesystem::path& cwd,
                 const std::filesystem::path& output) {
-    const Fd out{::open(output.empty() ? "/dev/null" : output.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644)};
-    if (out.fd < 0) return kNotStarted;
+    const Fd out{::open(output.empty() ? "/dev/null" : output.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC | O_NOFOLLOW, 0644)};
+    if (out.fd < 0) return kNotStarted; // O_NOFOLLOW: a log in a results folder is never written through a link
     const pid_t pid = start(argv, cwd, out.fd);
     return pid < 0 ? kNotStarted : wait_for(pid);
 }

@@ -10,12 +10,15 @@
 #include <sstream>
 #include <vector>
 
+#include "core/input_error.hpp"
 #include "core/spawn.hpp"
 #include "core/stable_hash.hpp"
+#include "core/untrusted_file.hpp"
 #include "data/parameter_set.hpp"
 #include "harness/experiment.hpp"
 #include "harness/run_log.hpp"
 #include "io/durable_file.hpp"
+#include "io/staged_directory.hpp"
 
 namespace granrepro {
 
@@ -62,9 +65,13 @@ std::string parameter_assignments(const std::string& script, const std::filesyst
     static const std::regex declared(R"(# Parameters set by granrepro: ([A-Za-z0-9_, ]+))");
     std::smatch m;
     if (!std::regex_search(script, m, declared)) return "";
+    // summary.json belongs to a results folder: read as untrusted input (a link, a FIFO, an
+    // oversize or too deeply nested file is refused, InputError naming it).
+    const nlohmann::json summary =
+        parse_untrusted_json(read_untrusted_file(summary_file, kMaxSummaryBytes, "summary.json"), summary_file.string());
     nlohmann::json params;
     try {
-        params = nlohmann::json::parse(read_file(summary_file)).at("parameters");
+        params = summary.at("parameters");
     } catch (const std::exception& e) {
         throw std::runtime_error("its parameters are read from " + summary_file.string() + ": " + e.what());
     }
@@ -129,6 +136,18 @@ std::string table_list(const std::filesystem::path& tables_dir) {
 
 } // namespace
 
+void check_plot_entries(const std::filesystem::path& dir, const std::vector<std::string>& ids) {
+    if (!existing_entry(dir, Entry::Folder, "results folder")) return;
+    if (existing_entry(dir / "tables", Entry::Folder, "tables folder")) refuse_links_below(dir / "tables", "tables folder");
+    existing_entry(dir / "summary.json", Entry::File, "summary.json");
+    for (const auto& id : ids) {
+        for (const char* ext : {".png", ".pdf"}) existing_entry(dir / (id + ext), Entry::File, "figure");
+        existing_entry(dir / (id + ".gnuplot.log"), Entry::File, "gnuplot log");
+        existing_entry(dir / (id + ".gp"), Entry::File, "plot script");
+        existing_entry(dir / (id + ".edited.gp"), Entry::File, "edited plot script");
+    }
+}
+
 std::string emitted_script(const std::string& id, const std::string& body, const std::filesystem::path& tables_dir,
                            const std::string& assignments) {
     // The data and output are found next to the script (gnuplot sets ARG0 to the script's path),
@@ -172,19 +191,24 @@ RenderOutcome render_figure(const std::string& id, const std::filesystem::path& 
     // `plot --edited` runs it.
     const auto emitted = run_dir / (id + ".gp"), kept = run_dir / (id + ".edited.gp");
     const auto previous = shown / (id + ".gp"), previous_kept = shown / (id + ".edited.gp");
+    // Nothing here is read or written through a link (see check_plot_entries); the scripts are
+    // read as untrusted text and written by rename, which replaces a name, never its target.
+    check_plot_entries(run_dir, {id});
+    if (shown != run_dir) check_plot_entries(shown, {id});
+    auto script_text = [](const std::filesystem::path& p) { return read_untrusted_file(p, kMaxTextFileBytes, "plot script"); };
     std::error_code ec;
-    const bool just_edited = std::filesystem::exists(previous, ec) && !unedited(read_file(previous));
+    const bool just_edited = existing_entry(previous, Entry::File, "plot script") && !unedited(script_text(previous));
     if (just_edited) {
-        write_file_durably(kept, read_file(previous));
+        write_file_atomically(kept, script_text(previous));
         warn(previous.string() + " was edited; " +
              (edited ? "rendering it (--edited)" : "rendering plots/" + id + ".gp; `granrepro plot --edited` renders the edited one") +
              ", kept as " + previous_kept.string());
-    } else if (previous_kept != kept && std::filesystem::exists(previous_kept, ec)) {
-        write_file_durably(kept, read_file(previous_kept)); // a new run keeps it too
+    } else if (previous_kept != kept && existing_entry(previous_kept, Entry::File, "edited plot script")) {
+        write_file_atomically(kept, script_text(previous_kept)); // a new run keeps it too
     }
-    const bool run_kept = edited && std::filesystem::exists(kept, ec);
+    const bool run_kept = edited && existing_entry(kept, Entry::File, "edited plot script");
     if (run_kept && !just_edited) warn("rendering the edited script " + previous_kept.string() + " (--edited)");
-    const std::string text = run_kept ? read_file(kept) : body.str();
+    const std::string text = run_kept ? script_text(kept) : body.str();
     // A table the script names that this run did not make (e.g. cooling with run_ed = false has
     // no ED tables): the figure is not drawn.
     if (const std::string table = missing_table(text, run_dir / "tables"); !table.empty())
@@ -192,12 +216,17 @@ RenderOutcome render_figure(const std::string& id, const std::filesystem::path& 
     std::string assignments;
     try {
         assignments = parameter_assignments(body.str(), run_dir / "summary.json");
+    } catch (const InputError&) {
+        throw; // a damaged or planted summary.json is bad input (exit 2), not a figure not drawn
     } catch (const std::runtime_error& e) {
         return not_drawn(RenderOutcome::Failed, id + " not drawn: " + e.what());
     }
-    write_file_durably(emitted, emitted_script(id, body.str(), run_dir / "tables", assignments)); // a full disk is a WriteError, not a 0-byte script
+    write_file_atomically(emitted, emitted_script(id, body.str(), run_dir / "tables", assignments)); // a full disk is a WriteError, not a 0-byte script
     // "./": a name is never read as an option; the working directory, not a shell, finds it.
     const auto log = run_dir / (id + ".gnuplot.log");
+    // gnuplot opens its outputs by name (`set output`; the log is opened O_NOFOLLOW by
+    // run_program): the old ones are removed first, so it creates fresh files in this folder.
+    for (const char* ext : {".png", ".pdf", ".gnuplot.log"}) std::filesystem::remove(run_dir / (id + ext), ec);
     const int rc = run_program({"gnuplot", "./" + id + (run_kept ? ".edited.gp" : ".gp")}, run_dir, log);
     const auto shown_log = shown / (id + ".gnuplot.log");
     if (rc == kNotStarted) {
@@ -206,7 +235,7 @@ RenderOutcome render_figure(const std::string& id, const std::filesystem::path& 
                          id + " not drawn: gnuplot could not be started (is it installed? Debian package gnuplot-nox)");
     }
     // Whatever gnuplot wrote before it failed is not a figure (and not a sign of a full disk).
-    if (rc != 0 || !std::filesystem::exists(run_dir / (id + ".png")))
+    if (rc != 0 || !existing_entry(run_dir / (id + ".png"), Entry::File, "figure"))
         return not_drawn(RenderOutcome::Failed, "gnuplot failed for " + id + " (see " + shown_log.string() + ")");
     if (std::filesystem::file_size(log, ec) == 0) {
         std::filesystem::remove(log, ec);

@@ -44,6 +44,12 @@ std::string emitted_script(const std::string& figure_id, const std::string& body
 // renders <id>.edited.gp instead. A warning or failure is reported on stderr in one line naming the
 // figure and the log (as it will be found in shown_dir, if given: a run renders in its staging
 // directory).
+// A results folder is untrusted input (docs/schema.md, "Trust model"): throws InputError naming
+// the first entry of `dir` that drawing the figures `ids` would read or write through a link,
+// or that is not what granrepro writes there: `dir` itself, tables/ (and any link in it),
+// summary.json, and each figure's .png, .pdf, .gnuplot.log, .gp and .edited.gp. Missing ones pass.
+void check_plot_entries(const std::filesystem::path& dir, const std::vector<std::string>& ids);
+
 RenderOutcome render_figure(const std::string& figure_id, const std::filesystem::path& run_dir,
                             const std::filesystem::path& shown_dir = {}, bool edited = false);
 

@@ -57,6 +57,8 @@ bool RunCheckpoint::due() const {
 
 void RunCheckpoint::save(const std::function<void(const H5Object&)>& fill) {
     const fs::path tmp = file_.string() + ".partial-" + std::to_string(::getpid());
+    std::error_code gone;
+    fs::remove(tmp, gone); // HDF5 creates it by name: a link planted there goes, never its target
     try {
         {
             const std::lock_guard<std::mutex> lock(h5_mutex());

@@ -13,6 +13,7 @@
 
 #include "core/input_error.hpp"
 #include "core/interrupt.hpp"
+#include "core/untrusted_file.hpp"
 #include "harness/claims.hpp"
 #include "core/provenance.hpp"
 #include "harness/distributed_sweep.hpp"
@@ -223,6 +224,12 @@ std::vector<std::string> check_notes(const nlohmann::json& overrides, bool verif
     return notes;
 }
 
+std::vector<std::string> figure_ids(const ExperimentInfo& info) {
+    std::vector<std::string> ids;
+    for (const auto& f : info.figures) ids.push_back(f.id);
+    return ids;
+}
+
 // The figures a run renders: the requested ones (all for a plain run) and every other figure the
 // directory it replaces had, re-rendered from the new data.
 std::vector<std::string> figures_to_render(const ExperimentInfo& info, const RunOptions& opt, const fs::path& final_dir) {
@@ -397,6 +404,11 @@ int run_experiment(const std::string& name, const RunOptions& opt, VerdictCounts
     std::optional<OutputLock> lock;
     if (rank0) lock.emplace(opt.out, name, shard_run ? OutputLock::Mode::Shared : OutputLock::Mode::Exclusive);
     const fs::path work_dir = opt.out / ("." + name + ".checkpoint");
+    // What a run reads or writes in OUT must be its own (docs/schema.md, "Trust model"): a
+    // checkpoint folder linked elsewhere would get point files written there, a linked script
+    // would be copied into the results. --out itself may be a link the user made.
+    if (existing_entry(work_dir, Entry::Folder, "checkpoint folder")) refuse_links_below(work_dir, "checkpoint folder");
+    check_plot_entries(final_dir, figure_ids(info));
     if (rank0 && !shard_run) {
         clean_staging_leftovers(final_dir, opt.quiet);
         clean_temporary_leftovers(work_dir);
@@ -579,10 +591,21 @@ int export_experiment(const std::string& name, const fs::path& out, const fs::pa
     const fs::path from = out / name;
     if (!fs::exists(from / "summary.json") || !fs::exists(from / "data.h5"))
         throw InputError("export " + name + ": no results in " + from.string() + "; run `granrepro " + name + "` first");
+    // Into the folder it reads, export would replace the full data.h5 with its compact copy.
+    std::error_code same;
+    if (fs::equivalent(to, out, same) || fs::equivalent(to / name, from, same))
+        throw InputError("export --to " + to.string() + ": the same folder as --out " + out.string() +
+                         " (the compact copy would replace the full data.h5); give another folder");
+    existing_entry(from, Entry::Folder, "results folder");
+    require_regular_file(from / "data.h5", "data.h5");
+    const std::string summary = read_untrusted_file(from / "summary.json", kMaxSummaryBytes, "summary.json");
     ensure_writable_directory(to, "--to");
     const fs::path dest = to / name;
+    existing_entry(dest, Entry::Folder, "export folder"); // never written through a link
     fs::create_directories(dest);
     const fs::path tmp = dest / ".data.h5.partial";
+    std::error_code gone;
+    fs::remove(tmp, gone); // HDF5 creates it by name: a link planted there goes first
     std::vector<std::string> omitted;
     try {
         omitted = write_compact_result_h5(from / "data.h5", tmp, max_values);
@@ -592,7 +615,7 @@ int export_experiment(const std::string& name, const fs::path& out, const fs::pa
         throw InputError("export " + name + ": " + (from / "data.h5").string() + ": " + e.what());
     }
     fs::rename(tmp, dest / "data.h5");
-    write_file_atomically(dest / "summary.json", read_file(from / "summary.json"));
+    write_file_atomically(dest / "summary.json", summary);
     std::printf("export %s: %s -> %s (%.0f kB data.h5%s%s)\n", name.c_str(), from.c_str(), dest.c_str(),
                 double(fs::file_size(dest / "data.h5")) / 1024.0, omitted.empty() ? "" : "; left out: ",
                 joined(omitted).c_str());
@@ -609,12 +632,18 @@ int plot_experiment(const std::string& name, const fs::path& out, const std::vec
     const fs::path dir = out / name;
     if (!fs::exists(dir / "tables"))
         throw InputError("plot " + name + ": no results in " + dir.string() + "; run `granrepro " + name + "` first");
-    int failures = 0;
+    // One writer per OUT/<name>: a plot beside a run of the same experiment (which replaces the
+    // folder) once exited 4; now the second of the two is refused at once (io/output_lock.hpp).
+    const OutputLock lock(out, name);
+    std::vector<std::string> ids;
     for (const auto& f : info.figures)
-        if (figures.empty() || std::find(figures.begin(), figures.end(), f.id) != figures.end()) {
-            const RenderOutcome o = render_figure(f.id, dir, {}, edited);
-            failures += o == RenderOutcome::Failed || o == RenderOutcome::Skipped || (strict && o == RenderOutcome::Warned);
-        }
+        if (figures.empty() || std::find(figures.begin(), figures.end(), f.id) != figures.end()) ids.push_back(f.id);
+    check_plot_entries(dir, ids); // every figure's files before the first is drawn
+    int failures = 0;
+    for (const auto& id : ids) {
+        const RenderOutcome o = render_figure(id, dir, {}, edited);
+        failures += o == RenderOutcome::Failed || o == RenderOutcome::Skipped || (strict && o == RenderOutcome::Warned);
+    }
     return failures ? kFigureNotDrawn : 0;
 }
 

@@ -13,6 +13,13 @@
 // commits the results and deletes the checkpoint folder takes it Mode::Exclusive (after the
 // shards released theirs). Within one MPI job, rank 0 alone can hold the exclusive lock.
 //
+// `plot` takes it Mode::Exclusive as well: it rewrites figures and scripts in OUT/<experiment>,
+// which a run replaces as a whole (a plot beside a run once exited 4).
+//
+// The lock file sits in a results folder someone may have sent (docs/schema.md, "Trust model"):
+// it is opened O_NOFOLLOW and must be a regular file of one link, or the run is refused (exit 2
+// naming it), so our PID is never written into a file elsewhere.
+//
 // The kernel releases the lock when the process dies (kill -9 included); the lock file itself
 // stays (deleting it would let two processes lock two different files). It holds the PID of the
 // last process that took it, for the message.

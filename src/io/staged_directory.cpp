@@ -6,7 +6,10 @@
 #include <cstdlib>
 #include <cstring>
 #include <fcntl.h>
+#include <linux/magic.h>
 #include <mutex>
+#include <sys/stat.h>
+#include <sys/vfs.h>
 #include <system_error>
 #include <unistd.h>
 #include <vector>
@@ -62,7 +65,57 @@ void rename_or_throw(const fs::path& from, const fs::path& to, const fs::path& s
 }
 } // namespace
 
+namespace {
+// The kernel's pseudo-filesystems: a directory there may pass access(2) for root, but nothing a
+// run writes can be created in it (`--out /proc/self` used to pass --dry-run, then fail).
+bool pseudo_filesystem(const fs::path& dir) {
+    struct statfs s {};
+    if (::statfs(dir.c_str(), &s) != 0) return false;
+    for (const auto magic : {PROC_SUPER_MAGIC, SYSFS_MAGIC, CGROUP_SUPER_MAGIC, CGROUP2_SUPER_MAGIC, DEBUGFS_MAGIC})
+        if (s.f_type == decltype(s.f_type)(magic)) return true;
+    return false;
+}
+} // namespace
+
+void check_output_directory(const fs::path& dir, const std::string& flag) {
+    const std::string shown = flag + " " + dir.string() + ": ";
+    // The nearest existing ancestor: what a run would create its folders in.
+    std::error_code ec;
+    fs::path existing = dir.empty() ? fs::path(".") : dir;
+    while (!fs::exists(existing, ec))
+        existing = existing.has_parent_path() && existing.parent_path() != existing ? existing.parent_path() : fs::path(".");
+    const std::string which = existing == dir ? std::string() : " (" + existing.string() + ")";
+    if (!fs::is_directory(existing, ec)) throw InputError(shown + "not a directory" + which);
+    if (pseudo_filesystem(existing))
+        throw InputError(shown + "on a kernel pseudo-filesystem (/proc, /sys), not a place for results" + which);
+    if (::access(existing.c_str(), W_OK | X_OK) != 0) throw InputError(shown + "directory is not writable" + which);
+}
+
+bool existing_entry(const fs::path& path, Entry kind, const std::string& role) {
+    struct stat st {};
+    if (::lstat(path.c_str(), &st) != 0) {
+        if (errno == ENOENT || errno == ENOTDIR) return false;
+        throw InputError(path.string() + ": " + role + " cannot be examined (" + errno_text(errno) + ")");
+    }
+    if (S_ISLNK(st.st_mode))
+        throw InputError(path.string() + ": " + role +
+                         " is a symbolic link; a results folder is read and written without following links (remove it)");
+    if (kind == Entry::File ? !S_ISREG(st.st_mode) : !S_ISDIR(st.st_mode))
+        throw InputError(path.string() + ": " + role + " is not a " + (kind == Entry::File ? "regular file" : "folder"));
+    return true;
+}
+
+void refuse_links_below(const fs::path& dir, const std::string& role) {
+    std::error_code ec;
+    for (auto it = fs::recursive_directory_iterator(dir, ec); !ec && it != fs::recursive_directory_iterator();
+         it.increment(ec))
+        if (it->is_symlink(ec))
+            throw InputError(it->path().string() + ": a symbolic link in the " + role +
+                             "; a results folder is read and written without following links (remove it)");
+}
+
 void ensure_writable_directory(const fs::path& dir, const std::string& flag) {
+    check_output_directory(dir, flag);
     std::error_code ec;
     fs::create_directories(dir, ec);
     if (ec || !fs::is_directory(dir))
@@ -76,9 +129,10 @@ StagedDirectory::StagedDirectory(fs::path final_path) : final_(std::move(final_p
     ensure_writable_directory(parent_of(final_), "--out");
     staging_ = final_.parent_path() / ("." + final_.filename().string() + ".partial-" + std::to_string(getpid()));
     std::error_code ec;
-    fs::remove_all(staging_, ec);
-    fs::create_directories(staging_, ec);
-    if (ec) throw InputError("--out " + final_.parent_path().string() + ": cannot create " + staging_.string());
+    fs::remove_all(staging_, ec); // a link planted under this name goes, not what it points to
+    // mkdir, not create_directories: a fresh folder of our own, never one that was already there.
+    if (::mkdir(staging_.c_str(), 0755) != 0)
+        throw InputError("--out " + final_.parent_path().string() + ": cannot create " + staging_.string());
     register_for_cleanup(staging_);
 }
 
@@ -106,7 +160,7 @@ void StagedDirectory::commit() {
     const fs::path parent = parent_of(final_);
     const std::lock_guard<std::mutex> critical(interrupt_critical_mutex()); // a signal never cuts a commit
     std::error_code ec;
-    if (!fs::exists(final_, ec)) {
+    if (!fs::exists(fs::symlink_status(final_, ec))) { // a link is replaced, never followed
         rename_or_throw(staging_, final_, final_);
         committed_ = true;
         fsync_path(parent);
@@ -150,7 +204,8 @@ void clean_staging_leftovers(const fs::path& final_path, bool quiet) {
         if (const long pid = pid_suffix(n, partial); pid >= 0 && pid != me) partials.push_back(e.path());
         if (const long pid = pid_suffix(n, old); pid >= 0 && pid != me) olds.push_back(e.path());
     }
-    if (!fs::exists(final_path, ec) && !olds.empty()) {
+    if (!fs::exists(fs::symlink_status(final_path, ec)) && !olds.empty() &&
+        fs::is_directory(fs::symlink_status(olds.front(), ec))) {
         // Only an old copy is left: a run was killed between the two renames of a fallback commit.
         if (::rename(olds.front().c_str(), final_path.c_str()) == 0) {
             if (!quiet)
@@ -184,6 +239,8 @@ void clean_temporary_leftovers(const fs::path& dir) {
 
 void write_file_atomically(const fs::path& path, const std::string& content) {
     const fs::path tmp = path.parent_path() / ("." + path.filename().string() + ".tmp-" + std::to_string(getpid()));
+    std::error_code gone;
+    fs::remove(tmp, gone); // a link planted under our temporary name: removed, never written through
     try {
         write_file_durably(tmp, content);
     } catch (const WriteError& e) {

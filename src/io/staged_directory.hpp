@@ -49,8 +49,24 @@ void clean_staging_leftovers(const std::filesystem::path& final_path, bool quiet
 void clean_temporary_leftovers(const std::filesystem::path& dir);
 
 // Creates `dir` if needed and checks that files can be created in it; throws InputError naming
-// `flag` (e.g. "--out") otherwise.
+// `flag` (e.g. "--out") otherwise (see check_output_directory).
 void ensure_writable_directory(const std::filesystem::path& dir, const std::string& flag);
+// What ensure_writable_directory checks, without creating anything (for --dry-run): `dir`, or if
+// it does not exist yet its nearest existing ancestor, must be a writable directory outside /proc
+// and /sys. `dir` itself may be a symbolic link: the user named it (entries inside a results
+// folder may not be, see existing_entry).
+void check_output_directory(const std::filesystem::path& dir, const std::string& flag);
+
+// A results folder is untrusted input (docs/schema.md, "Trust model"): an entry granrepro reads or
+// writes there must be what granrepro wrote, never a symbolic link that would lead a read or a
+// write outside the folder. lstat(path): false if nothing is there, true if it is a `kind`;
+// anything else (a symbolic link, a FIFO, a file where a folder belongs) is refused, InputError
+// naming it as `role` ("lock file", "checkpoint folder").
+enum class Entry { File, Folder };
+bool existing_entry(const std::filesystem::path& path, Entry kind, const std::string& role);
+// Every entry below the folder `dir` (not following links) checked the same way: a symbolic link
+// anywhere inside is refused, naming it.
+void refuse_links_below(const std::filesystem::path& dir, const std::string& role);
 
 // Writes `content` to `path` through a temporary file, fsync and a rename (then fsyncs the
 // folder); throws WriteError and leaves `path` untouched if anything fails.
