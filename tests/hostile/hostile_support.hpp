@@ -23,7 +23,13 @@ using cli_support::slurp;
 // A fresh quick brake-failure result (about a second), made once per process and copied for
 // each test into `dir`/brake-failure (so `--out dir`).
 inline void copy_fresh_result(const fs::path& dir, const std::string& experiment = "brake-failure") {
-    static std::map<std::string, fs::path> pristine;
+    struct Pristine : std::map<std::string, fs::path> { // removed when the test process ends
+        ~Pristine() {
+            std::error_code ec;
+            for (const auto& [name, p] : *this) fs::remove_all(p, ec);
+        }
+    };
+    static Pristine pristine;
     auto it = pristine.find(experiment);
     if (it == pristine.end()) {
         const fs::path p = cli_support::fresh("hostile-pristine-" + experiment);
