@@ -372,13 +372,13 @@ std::vector<Claim> load_claims(const std::filesystem::path& file, const std::str
         if (toml::find<std::string>(root, "experiment") != experiment)
             throw InputError(where + ": 'experiment' must be \"" + experiment + "\"");
         for (const auto& c : toml::find<toml::array>(root, "claim")) claims.push_back(read_claim(c, where, experiment, outputs, claims));
-        check_calibrations(claims, file, experiment);
     } catch (const InputError& e) {
         if (std::string(e.what()).rfind(where, 0) == 0) throw;
         throw InputError(where + ": " + e.what());
     } catch (const std::exception& e) {
         throw InputError(toml_error_line(where, e.what()));
     }
+    check_calibrations(claims, file, experiment); // its messages name the experiment file or the claim
     return claims;
 }
 

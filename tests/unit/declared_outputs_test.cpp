@@ -64,7 +64,7 @@ TEST(DeclaredOutputs, AnUndeclaredClaimIsRefusedAtLoad) {
         const std::string what = e.what();
         EXPECT_NE(what.find(file.string()), std::string::npos) << what;
         EXPECT_NE(what.find("claim typo"), std::string::npos) << what;
-        EXPECT_NE(what.find("(line 7)"), std::string::npos) << what;
+        EXPECT_NE(what.find("(line 8)"), std::string::npos) << what;
         EXPECT_NE(what.find("v_crit_typo"), std::string::npos) << what;
     }
     EXPECT_NO_THROW(load_claims(file, "brake-failure")); // without declarations: only the claim's own form

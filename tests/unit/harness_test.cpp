@@ -454,7 +454,7 @@ TEST(Claims, MissingRoleOrStatusIsAnInputError) {
              {"role = \"calibration\"\n", parameter + "calibrated_on = \"q\"\n", {"[parameters.g] (line 8)", "'q' names no claim"}},
              {"role = \"calibration\"\n", parameter + "calibrated_on = 5\n", {"[parameters.g] (line 8)", "a claim id or a list"}},
              {"role = \"calibration\"\n", parameter + "[readings.unit]\ncalibrated_on = \"k\"\n",
-              {"[readings.unit] (line 9)", "needs source"}},
+              {"[readings.unit] (line 8)", "needs source"}},
          }) {
         const std::string m = error(rest, experiment_file);
         SCOPED_TRACE(rest + " | " + experiment_file);
