@@ -59,7 +59,7 @@ write_check() {
     echo "run's wall and CPU time, resumed points included; each data.h5 holds every sweep point,"
     echo "\`granrepro verify <experiment> --list\`), judged with the claims of expected/ at $(git rev-parse --short=7 HEAD)."
     echo "Re-check with \`./build/granrepro check --all --out paper_figures\` (\`--explain\` prints the known deviations)."
-    echo "The headline counts the reproductions only (role = reproduction, expected/README.md \"Roles\"); identity,"
+    echo "The headline counts the reproductions only (role = reproduction, expected/README.md \"Roles and statuses\"); identity,"
     echo "calibration and validation claims are counted apart and still fail the check when they fail."
     echo
     echo '```'
