@@ -39,7 +39,7 @@ if [ -n "$(git status --porcelain --untracked-files=no)" ]; then
   exit 2
 fi
 commit=$(git rev-parse --short=7 HEAD)
-version=$("$bin" --version | head -1 | sed 's/^granrepro //')
+version=$("$bin" --version | sed -n '1s/^granrepro //p') # sed reads it all: no SIGPIPE under pipefail
 case "$version" in
   *dirty*|*unknown*) echo "paper_figures.sh: $bin reports '$version': rebuild from the clean tree (cmake --build build)" >&2; exit 2 ;;
 esac
