@@ -190,7 +190,7 @@ int run_all(const RunOptions& base) {
         const int r = run_experiment(e.name, base, &totals);
         rc = rc == 1 || r == 1 ? 1 : std::max(rc, r);
     }
-    if (mpi::rank() == 0) std::printf("totals: %s\n", totals.text().c_str());
+    if (mpi::rank() == 0) std::printf("%stotals: %s\n", totals.headline().c_str(), totals.text().c_str());
     return rc;
 }
 

@@ -161,9 +161,9 @@ ParameterSet ParameterSet::load(const std::filesystem::path& file, Scale scale) 
     if (!root.is_table()) throw InputError(where + ": not a table of keys");
     for (const auto& [key, v] : root.as_table())
         if (key != "name" && key != "paper" && key != "description" && key != "figure" && key != "parameters" &&
-            key != "outputs")
+            key != "outputs" && key != "readings")
             throw InputError(where + " (line " + std::to_string(v.location().line()) + "): unknown key '" + key +
-                             "'; allowed: name, paper, description, [[figure]], [parameters.<name>], [outputs]");
+                             "'; allowed: name, paper, description, [[figure]], [parameters.<name>], [outputs], [readings.<name>]");
     if (!root.contains("parameters") || !root.at("parameters").is_table())
         throw InputError(where + ": missing [parameters] table");
     std::vector<std::pair<std::uint_least32_t, Parameter>> ordered;
@@ -175,9 +175,9 @@ ParameterSet ParameterSet::load(const std::filesystem::path& file, Scale scale) 
         const auto& t = spec.as_table();
         for (const auto& [key, v] : t)
             if (key != "unit" && key != "source" && key != "help" && key != "range" && key != "choices" &&
-                key != "value" && key != "quick" && key != "paper")
+                key != "value" && key != "quick" && key != "paper" && key != "calibrated_on")
                 throw InputError(ctx + " (line " + std::to_string(v.location().line()) + "): unknown key '" + key +
-                                 "'; allowed: unit, source, help, range, choices, value, quick, paper");
+                                 "'; allowed: unit, source, help, range, choices, value, quick, paper, calibrated_on");
         auto str = [&](const char* key) -> std::string {
             const auto it = t.find(key);
             if (it == t.end()) return {};

@@ -27,7 +27,8 @@ std::string band_text(const Band& b) { return "[" + num(b.lo) + ", " + num(b.hi)
 const std::string kClaimKeys[] = {"id",      "statement",       "source",         "measured",
                                   "paper",   "rel_tol",         "abs_tol",        "min",
                                   "max",     "tolerance_reason", "tolerance_kind", "scales",
-                                  "known_deviation", "deviation_band", "deviation_band_reason", "deviation_band_kind"};
+                                  "known_deviation", "deviation_band", "deviation_band_reason", "deviation_band_kind",
+                                  "role", "status"};
 
 // The tolerance column shows the kind in a word, so the table stays narrow.
 std::string short_kind(const std::string& kind) {
@@ -68,6 +69,67 @@ std::optional<Band> Claim::band_for(Scale scale) const {
     return it->second;
 }
 
+namespace {
+// The per-paper counts of the headline: reproductions by verdict (and a deviation's status), the
+// other roles apart; skipped claims are in neither.
+void add_to_headline(std::vector<std::pair<std::string, VerdictCounts::PaperCounts>>& papers,
+                     const std::vector<ClaimResult>& results) {
+    for (const auto& r : results) {
+        if (r.verdict == Verdict::Skipped) continue;
+        const std::string paper = r.claim.publication.empty() ? "(no paper)" : r.claim.publication;
+        auto it = std::find_if(papers.begin(), papers.end(), [&](const auto& p) { return p.first == paper; });
+        if (it == papers.end()) it = papers.insert(papers.end(), {paper, {}});
+        VerdictCounts::PaperCounts& c = it->second;
+        if (r.claim.role == "reproduction") {
+            ++c.statements;
+            if (r.verdict == Verdict::Pass) ++c.reproduced;
+            else if (r.verdict == Verdict::KnownDeviation) ++c.deviate, ++c.status[r.claim.status];
+            else ++c.failed;
+        } else {
+            ++c.other[r.claim.role];
+            if (r.verdict == Verdict::Pass) ++c.other_pass;
+            else if (r.verdict == Verdict::KnownDeviation) ++c.other_deviation;
+            else ++c.other_fail;
+        }
+    }
+}
+
+int count_of(const std::map<std::string, int>& m, const std::string& key) {
+    const auto it = m.find(key);
+    return it == m.end() ? 0 : it->second;
+}
+} // namespace
+
+std::string VerdictCounts::headline() const {
+    std::string out;
+    for (const auto& [paper, c] : papers) {
+        out += paper + ": " + std::to_string(c.statements) + " statements \u2014 " + std::to_string(c.reproduced) +
+               " reproduced, " + std::to_string(c.deviate) + " deviate (" + std::to_string(count_of(c.status, "settled")) +
+               " settled, " + std::to_string(count_of(c.status, "inherent")) + " inherent, " +
+               std::to_string(count_of(c.status, "open")) + " open)" +
+               (c.failed ? ", " + std::to_string(c.failed) + " FAIL" : std::string()) + "\n";
+        out += paper + ", not in the headline: " + std::to_string(count_of(c.other, "identity")) + " identity, " +
+               std::to_string(count_of(c.other, "calibration")) + " calibration, " +
+               std::to_string(count_of(c.other, "validation")) + " validation (" + std::to_string(c.other_pass) +
+               " PASS, " + std::to_string(c.other_fail) + " FAIL, " + std::to_string(c.other_deviation) + " DEVIATION)\n";
+    }
+    return out;
+}
+
+nlohmann::json headline_json(const VerdictCounts& counts) {
+    nlohmann::json out = nlohmann::json::array();
+    for (const auto& [paper, c] : counts.papers) {
+        nlohmann::json status = nlohmann::json::object(), other = nlohmann::json::object();
+        for (const char* s : kDeviationStatuses) status[s] = count_of(c.status, s);
+        for (const char* role : kClaimRoles)
+            if (std::string(role) != "reproduction") other[role] = count_of(c.other, role);
+        out.push_back({{"paper", paper}, {"statements", c.statements}, {"reproduced", c.reproduced},
+                       {"deviate", c.deviate}, {"fail", c.failed}, {"status", status}, {"other", other},
+                       {"other_verdicts", {{"PASS", c.other_pass}, {"FAIL", c.other_fail}, {"DEVIATION", c.other_deviation}}}});
+    }
+    return out;
+}
+
 void VerdictCounts::add(const std::vector<ClaimResult>& results) {
     for (const auto& r : results) {
         switch (r.verdict) {
@@ -77,6 +139,7 @@ void VerdictCounts::add(const std::vector<ClaimResult>& results) {
         case Verdict::Skipped: ++skipped; break;
         }
     }
+    add_to_headline(papers, results);
 }
 
 std::string VerdictCounts::text() const {
@@ -171,6 +234,99 @@ void read_deviation(const ClaimReader& r, Claim& k) {
     k.deviation_band_kind = r.kind("deviation_band_kind", kDeviationBandKinds);
 }
 
+// The claim's role, and a known deviation's status (expected/README.md, "Roles"): missing or
+// unknown is refused with the claim's line, as a headline must not count a claim of unknown kind.
+void read_role_and_status(const ClaimReader& r, Claim& k) {
+    const toml::value& c = r.c;
+    auto one_of = [&](const char* key, const auto& allowed) {
+        if (!c.contains(key))
+            throw InputError(r.where + line_of(c) + ": " + key + " is missing; allowed: " + joined(allowed));
+        const toml::value& v = c.at(key);
+        const std::string value = v.is_string() ? v.as_string().str : std::string("(not a string)");
+        if (std::find(std::begin(allowed), std::end(allowed), value) == std::end(allowed))
+            throw InputError(r.where + line_of(v) + ": " + key + " '" + value + "' is unknown; allowed: " + joined(allowed));
+        return value;
+    };
+    k.line = long(c.location().line());
+    k.role = one_of("role", kClaimRoles);
+    if (k.known_deviation.empty()) {
+        if (c.contains("status"))
+            throw InputError(r.where + line_of(c.at("status")) + ": status belongs only to a claim with known_deviation");
+        return;
+    }
+    k.status = one_of("status", kDeviationStatuses);
+}
+
+// The claim ids a setting names: calibrated_on = "<id>" or ["<id>", ...] (one claim per scale).
+std::vector<std::pair<std::string, long>> named_claims(const toml::value& table, const std::string& where) {
+    std::vector<std::pair<std::string, long>> out;
+    if (!table.is_table() || !table.contains("calibrated_on")) return out;
+    const toml::value& v = table.at("calibrated_on");
+    const long line = long(v.location().line());
+    if (v.is_string()) out.emplace_back(v.as_string().str, line);
+    else if (v.is_array() && !v.as_array().empty())
+        for (const auto& e : v.as_array()) {
+            if (!e.is_string()) break;
+            out.emplace_back(e.as_string().str, line);
+        }
+    if (out.empty() || (v.is_array() && out.size() != v.as_array().size()))
+        throw InputError(where + " (line " + std::to_string(line) + "): calibrated_on must be a claim id or a list of claim ids");
+    return out;
+}
+
+// The paper of the experiment (for the headline) and the calibrations: a calibration claim is
+// named by a setting of experiments/<experiment>.toml (calibrated_on = "<claim id>" on a
+// [parameters.<name>] table, or on a [readings.<name>] table for a reading of the paper that no
+// parameter holds, e.g. the unit of a printed number), and every calibrated_on names a
+// calibration claim of this file. The experiment file is the claims file's sibling
+// (<root>/experiments/<experiment>.toml); without one, no calibration claim can be named.
+void check_calibrations(std::vector<Claim>& claims, const std::filesystem::path& file, const std::string& experiment) {
+    const std::filesystem::path exp_file = file.parent_path().parent_path() / "experiments" / (experiment + ".toml");
+    const std::string exp_where = exp_file.string();
+    std::vector<std::string> named; // every id a setting names
+    if (std::filesystem::exists(exp_file)) {
+        const toml::value root = parse_toml_file(exp_file, "experiment file");
+        if (root.is_table() && root.contains("paper") && root.at("paper").is_string()) {
+            // "Luding, TASK Quarterly 2, 417 (1998)" -> "Luding 1998"
+            const std::string p = root.at("paper").as_string().str;
+            const auto open = p.rfind('('), close = p.rfind(')');
+            std::string label = p.substr(0, p.find(','));
+            if (open != std::string::npos && close != std::string::npos && close > open)
+                label += " " + p.substr(open + 1, close - open - 1);
+            for (auto& c : claims) c.publication = label;
+        }
+        for (const char* section : {"parameters", "readings"}) {
+            if (!root.is_table() || !root.contains(section) || !root.at(section).is_table()) continue;
+            for (const auto& [name, table] : root.at(section).as_table()) {
+                const std::string where = exp_where + ": [" + section + "." + name + "]";
+                if (std::string(section) == "readings") {
+                    if (!table.is_table()) throw InputError(where + " must be a table");
+                    for (const auto& [key, v] : table.as_table())
+                        if (key != "source" && key != "calibrated_on")
+                            throw InputError(where + " (line " + std::to_string(v.location().line()) + "): unknown key '" +
+                                             key + "'; allowed: source, calibrated_on");
+                    if (!table.contains("source") || !table.at("source").is_string() || !table.contains("calibrated_on"))
+                        throw InputError(where + " (line " + std::to_string(table.location().line()) +
+                                         "): a reading needs source (a string) and calibrated_on");
+                }
+                for (const auto& [id, line] : named_claims(table, where)) {
+                    const auto it = std::find_if(claims.begin(), claims.end(), [&](const Claim& c) { return c.id == id; });
+                    const std::string at = where + " (line " + std::to_string(line) + "): calibrated_on '" + id + "'";
+                    if (it == claims.end()) throw InputError(at + " names no claim of " + file.string());
+                    if (it->role != "calibration")
+                        throw InputError(at + " names a claim whose role is '" + it->role + "'; it must be role = \"calibration\"");
+                    named.push_back(id);
+                }
+            }
+        }
+    }
+    for (const auto& c : claims)
+        if (c.role == "calibration" && std::find(named.begin(), named.end(), c.id) == named.end())
+            throw InputError(file.string() + ": claim " + c.id + " (line " + std::to_string(c.line) +
+                             "): role 'calibration' but no setting of " + exp_where + " names it (calibrated_on = \"" +
+                             c.id + "\" on the [parameters.<name>] it was chosen for)");
+}
+
 // One [[claim]]: its keys, texts and measured scalar (which the experiment must declare).
 Claim read_claim(const toml::value& c, const std::string& where, const std::string& experiment,
                  const DeclaredOutputs* outputs, const std::vector<Claim>& earlier_claims) {
@@ -197,6 +353,7 @@ Claim read_claim(const toml::value& c, const std::string& where, const std::stri
     for (const auto& s : k.scales) r.check_scale(s, "scales");
     read_band(r, k);
     read_deviation(r, k);
+    read_role_and_status(r, k);
     return k;
 }
 
@@ -221,6 +378,7 @@ std::vector<Claim> load_claims(const std::filesystem::path& file, const std::str
     } catch (const std::exception& e) {
         throw InputError(toml_error_line(where, e.what()));
     }
+    check_calibrations(claims, file, experiment); // its messages name the experiment file or the claim
     return claims;
 }
 
@@ -292,7 +450,7 @@ std::string format_deviation_explanations(const std::vector<ClaimResult>& result
     for (const auto& r : results) {
         if (r.claim.known_deviation.empty() || r.verdict == Verdict::Pass || r.verdict == Verdict::Skipped) continue;
         os << "  " << r.claim.id << " (" << to_string(r.verdict) << ", band " << r.band_text << "):\n"
-           << "      known deviation: " << r.claim.known_deviation << "\n"
+           << "      known deviation (" << r.claim.status << "): " << r.claim.known_deviation << "\n"
            << "      tolerance (" << r.claim.tolerance_kind << "): "
            << (r.claim.tolerance_reason.empty() ? "(no reason beyond the known deviation)" : r.claim.tolerance_reason)
            << "\n"
@@ -310,12 +468,13 @@ nlohmann::json claims_to_json(const std::vector<ClaimResult>& results) {
                             {"tolerance_reason", r.claim.tolerance_reason},
                             {"tolerance_kind", r.claim.tolerance_kind},
                             {"measured", finite ? nlohmann::json(*r.measured) : nlohmann::json()},
-                            {"verdict", to_string(r.verdict)}};
+                            {"verdict", to_string(r.verdict)}, {"role", r.claim.role}};
         if (!r.claim.known_deviation.empty()) {
             j["known_deviation"] = r.claim.known_deviation;
             j["deviation_band"] = r.band_text; // text: JSON has no infinity
             j["deviation_band_reason"] = r.claim.deviation_band_reason;
             j["deviation_band_kind"] = r.claim.deviation_band_kind;
+            j["status"] = r.claim.status;
         }
         arr.push_back(j);
     }

@@ -24,6 +24,11 @@ namespace granrepro {
 // The allowed values of tolerance_kind and deviation_band_kind (expected/README.md explains them).
 inline constexpr const char* kToleranceKinds[] = {"paper_precision", "error_bar", "grid", "physical_bound"};
 inline constexpr const char* kDeviationBandKinds[] = {"seed_spread", "error_bar", "grid", "single_run"};
+// What a claim is (expected/README.md, "Roles"): only reproductions make the headline.
+inline constexpr const char* kClaimRoles[] = {"reproduction", "identity", "calibration", "validation"};
+// How far a known deviation is understood: settled by a decisive run, inherent to the model or
+// method (an independent check or argument), or open (the text names the run that would decide).
+inline constexpr const char* kDeviationStatuses[] = {"settled", "inherent", "open"};
 
 // A closed interval [lo, hi]; either end may be infinite.
 struct Band {
@@ -46,6 +51,10 @@ struct Claim {
     std::string deviation_band_reason;                   // where the band comes from
     std::string deviation_band_kind;                     // one of kDeviationBandKinds
     std::vector<std::string> scales; // empty: every scale
+    std::string role;   // one of kClaimRoles
+    std::string status; // one of kDeviationStatuses, for a known deviation only
+    long line = 0;      // of its [[claim]] table, for messages
+    std::string publication; // "Luding 1998": the paper of the experiment (experiments/<name>.toml), if found
 
     bool applies_to(Scale scale) const;
     // The known deviation's band at this scale (nullopt: no known deviation there).
@@ -66,6 +75,17 @@ struct VerdictCounts {
     int pass = 0, fail = 0, deviation = 0, skipped = 0;
     void add(const std::vector<ClaimResult>& results);
     std::string text() const; // "N PASS, N FAIL, N DEVIATION, N skipped"
+    // Per paper: the reproductions by verdict and deviation status, and the other roles apart.
+    struct PaperCounts {
+        int statements = 0, reproduced = 0, deviate = 0, failed = 0;
+        std::map<std::string, int> status; // of the deviating reproductions
+        std::map<std::string, int> other;  // identity, calibration, validation (not skipped)
+        int other_pass = 0, other_fail = 0, other_deviation = 0;
+    };
+    std::vector<std::pair<std::string, PaperCounts>> papers; // in the order first seen
+    // "Luding 1998: N statements — P reproduced, D deviate (s settled, i inherent, o open)" and,
+    // on its own line, "Luding 1998, not in the headline: ..." per paper.
+    std::string headline() const;
 };
 
 // Throws InputError naming the file, the claim and the key for a malformed claim, including a
@@ -84,6 +104,9 @@ std::string format_claim_table(const std::string& experiment, const std::vector<
 // The known-deviation texts and band reasons of the claims that are not PASS (`check --explain`).
 std::string format_deviation_explanations(const std::vector<ClaimResult>& results);
 nlohmann::json claims_to_json(const std::vector<ClaimResult>& results);
+// The headline of `results` (VerdictCounts::headline as JSON): per paper, statements, reproduced,
+// deviate, fail, status counts and the other roles' counts.
+nlohmann::json headline_json(const VerdictCounts& counts);
 bool all_pass(const std::vector<ClaimResult>& results); // known deviations and skips do not fail
 
 } // namespace granrepro

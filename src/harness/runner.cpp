@@ -562,9 +562,12 @@ nlohmann::json judged_claims(const std::string& name, const fs::path& out) {
     const nlohmann::json summary = read_checked_summary(name, out, &verified, "report: no results in " + (out / name).string());
     const std::string scale = summary["scale"].get<std::string>();
     const auto verdicts = evaluate_claims(claims, summary["scalars"], parse_scale(scale));
+    VerdictCounts counts;
+    counts.add(verdicts);
     return {{"scale", scale},
             {"notes", check_notes(summary.value("overridden_parameters", nlohmann::json::object()), verified)},
-            {"claims", claims_to_json(verdicts)}};
+            {"claims", claims_to_json(verdicts)},
+            {"headline", headline_json(counts)}};
 }
 
 int check_all(const fs::path& out, const CheckOptions& opt) {
@@ -575,7 +578,7 @@ int check_all(const fs::path& out, const CheckOptions& opt) {
         if (has_results(e.name, out)) rc |= check_experiment(e.name, out, opt, &totals);
         else missing.push_back(e.name);
     }
-    std::printf("totals: %s\n", totals.text().c_str());
+    std::printf("%stotals: %s\n", totals.headline().c_str(), totals.text().c_str());
     std::fflush(stdout);
     if (!missing.empty()) {
         std::fprintf(stderr, "granrepro: check --all: no results in %s for %zu experiment%s: %s%s\n", out.c_str(),

@@ -132,9 +132,9 @@ TEST(Cli, WrongDataFilesAreInputErrorsNamingFileAndKey) {
         {"expected/emergency-brake.toml", "statement = ", "typo_key = 1\nstatement = ", {"unknown key 'typo_key'", "line"}},
         {"expected/emergency-brake.toml", "measured = ", "scales = [\"bogus\"]\nmeasured = ", {"scale 'bogus'"}},
         {"expected/emergency-brake.toml", "min = 0.75", "min = 1e300", {"is above max", "line"}},
-        {"expected/emergency-brake.toml", "[[claim]]", "[[claim]]\nid = \"dup\"\nstatement = \"s\"\nsource = \"s\"\n"
+        {"expected/emergency-brake.toml", "[[claim]]", "[[claim]]\nid = \"dup\"\nrole = \"reproduction\"\nstatement = \"s\"\nsource = \"s\"\n"
                                                      "measured = \"e_N\"\nmin = 0\ntolerance_reason = \"r\"\ntolerance_kind = \"grid\"\n[[claim]]\n"
-                                                     "id = \"dup\"\nstatement = \"s\"\nsource = \"s\"\nmeasured = \"e_N\"\n"
+                                                     "id = \"dup\"\nrole = \"reproduction\"\nstatement = \"s\"\nsource = \"s\"\nmeasured = \"e_N\"\n"
                                                      "min = 0\ntolerance_reason = \"r\"\ntolerance_kind = \"grid\"\n\n[[claim]]",
          {"claim dup", "given twice"}},
         {"experiments/emergency-brake.toml", "value = 2000.0", "value = \"2000\"", {"emergency-brake.toml", "k_N", "must be a number"}},
@@ -158,6 +158,12 @@ TEST(Cli, WrongDataFilesAreInputErrorsNamingFileAndKey) {
           "paper_precision, error_bar, grid, physical_bound", "line"}},
         {"expected/emergency-brake.toml", "tolerance_kind = \"paper_precision\"\n", "",
          {"emergency-brake.toml", "claim t_col", "tolerance_kind is missing"}},
+        // Issue 41: every claim states its role; a calibration claim is named by a setting.
+        {"expected/emergency-brake.toml", "role = \"identity\"\n", "", {"emergency-brake.toml", "claim t_col", "role is missing", "line"}},
+        {"expected/emergency-brake.toml", "role = \"identity\"", "role = \"headline\"",
+         {"emergency-brake.toml", "claim t_col", "role 'headline' is unknown", "reproduction, identity, calibration, validation", "line"}},
+        {"expected/emergency-brake.toml", "role = \"identity\"", "role = \"calibration\"",
+         {"emergency-brake.toml", "claim t_col", "line", "no setting of", "calibrated_on"}},
     };
     for (const Case& c : cases) {
         SCOPED_TRACE(std::string(c.file) + ": " + c.to);

@@ -53,7 +53,7 @@ TEST(DeclaredOutputs, EveryClaimNamesADeclaredScalar) {
 // the file, the claim and its line.
 TEST(DeclaredOutputs, AnUndeclaredClaimIsRefusedAtLoad) {
     const fs::path file = fs::temp_directory_path() / ("declared-outputs-" + std::to_string(::getpid()) + ".toml");
-    std::ofstream(file) << "experiment = \"brake-failure\"\n\n[[claim]]\nid = \"typo\"\nstatement = \"s\"\n"
+    std::ofstream(file) << "experiment = \"brake-failure\"\n\n[[claim]]\nid = \"typo\"\nrole = \"reproduction\"\nstatement = \"s\"\n"
                            "source = \"s\"\nmeasured = \"v_crit_typo\"\npaper = 1.0\nrel_tol = 0.1\n"
                            "tolerance_reason = \"r\"\ntolerance_kind = \"paper_precision\"\n";
     const ExperimentInfo info = experiment_info("brake-failure");
@@ -64,7 +64,7 @@ TEST(DeclaredOutputs, AnUndeclaredClaimIsRefusedAtLoad) {
         const std::string what = e.what();
         EXPECT_NE(what.find(file.string()), std::string::npos) << what;
         EXPECT_NE(what.find("claim typo"), std::string::npos) << what;
-        EXPECT_NE(what.find("(line 7)"), std::string::npos) << what;
+        EXPECT_NE(what.find("(line 8)"), std::string::npos) << what;
         EXPECT_NE(what.find("v_crit_typo"), std::string::npos) << what;
     }
     EXPECT_NO_THROW(load_claims(file, "brake-failure")); // without declarations: only the claim's own form

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <tuple>
 #include <unistd.h>
 
 #include "analysis/curve_analysis.hpp"
@@ -162,6 +163,7 @@ TEST(Claims, VerdictsForValueRangeAndKnownDeviation) {
 experiment = "e"
 [[claim]]
 id = "a"
+role = "reproduction"
 statement = "s"
 source = "s"
 measured = "x"
@@ -171,6 +173,7 @@ tolerance_reason = "r"
 tolerance_kind = "paper_precision"
 [[claim]]
 id = "b"
+role = "reproduction"
 statement = "s"
 source = "s"
 measured = "y"
@@ -180,18 +183,21 @@ tolerance_reason = "r"
 tolerance_kind = "paper_precision"
 [[claim]]
 id = "c"
+role = "reproduction"
 statement = "s"
 source = "s"
 measured = "y"
 paper = 5.0
 abs_tol = 0.1
 known_deviation = "because"
+status = "open"
 deviation_band = [1.5, 2.5]
 deviation_band_reason = "r"
 tolerance_kind = "grid"
 deviation_band_kind = "grid"
 [[claim]]
 id = "d"
+role = "reproduction"
 statement = "s"
 source = "s"
 measured = "missing"
@@ -235,23 +241,27 @@ const char* kDeviationClaims = R"toml(
 experiment = "e"
 [[claim]]
 id = "dev"
+role = "reproduction"
 statement = "s"
 source = "s"
 measured = "x"
 paper = 1.0
 abs_tol = 0.1
 known_deviation = "we measure 1.5"
+status = "open"
 deviation_band = [1.4, 1.6]
 deviation_band_reason = "mean ± 4 sigma over seeds"
 tolerance_kind = "error_bar"
 deviation_band_kind = "seed_spread"
 [[claim]]
 id = "per_scale"
+role = "reproduction"
 statement = "s"
 source = "s"
 measured = "y"
 min = 10.0
 known_deviation = "we measure 3 at quick and 7 at paper scale"
+status = "open"
 deviation_band = { quick = [2.0, 4.0], paper = [6.0, inf] }
 deviation_band_reason = "r"
 tolerance_kind = "paper_precision"
@@ -321,6 +331,7 @@ TEST(Claims, MissingScalarFailsEveryClaim) {
 experiment = "e"
 [[claim]]
 id = "plain"
+role = "reproduction"
 statement = "s"
 source = "s"
 measured = "x"
@@ -337,8 +348,8 @@ tolerance_kind = "paper_precision"
 // file, the claim and the missing key.
 TEST(Claims, DeviationWithoutBandIsAnInputError) {
     const test::TempDir dir;
-    const std::string head = "experiment = \"e\"\n[[claim]]\nid = \"dev\"\nstatement = \"s\"\nsource = \"s\"\n"
-                             "measured = \"x\"\npaper = 1.0\nabs_tol = 0.1\nknown_deviation = \"k\"\n"
+    const std::string head = "experiment = \"e\"\n[[claim]]\nid = \"dev\"\nrole = \"reproduction\"\nstatement = \"s\"\nsource = \"s\"\n"
+                             "measured = \"x\"\npaper = 1.0\nabs_tol = 0.1\nknown_deviation = \"k\"\nstatus = \"open\"\n"
                              "tolerance_kind = \"grid\"\ndeviation_band_kind = \"grid\"\n";
     auto error = [&](const std::string& rest) {
         try {
@@ -366,7 +377,7 @@ TEST(Claims, DeviationWithoutBandIsAnInputError) {
     EXPECT_EQ(error("deviation_band = [-inf, inf]\ndeviation_band_reason = \"r\"\n"), "no error");
     // A band on a claim that is no known deviation is a mistake too.
     const fs::path plain = write(dir.path / "p.toml",
-                                 "experiment = \"e\"\n[[claim]]\nid = \"p\"\nstatement = \"s\"\nsource = \"s\"\n"
+                                 "experiment = \"e\"\n[[claim]]\nid = \"p\"\nrole = \"reproduction\"\nstatement = \"s\"\nsource = \"s\"\n"
                                  "measured = \"x\"\nmax = 1.0\ntolerance_reason = \"r\"\ntolerance_kind = \"grid\"\n"
                                  "deviation_band = [0, 2]\ndeviation_band_reason = \"r\"\n");
     EXPECT_THROW(load_claims(plain, "e"), InputError);
@@ -401,12 +412,74 @@ TEST(Claims, EveryCommittedClaimNamesItsKinds) {
     EXPECT_GE(deviations, 36);
 }
 
+// Issue 41: every claim states its role and every known deviation its status; missing or unknown
+// is refused with the file, the claim and its line, and a calibration claim must be named by a
+// setting of the experiment file (calibrated_on), which must name a calibration claim.
+TEST(Claims, MissingRoleOrStatusIsAnInputError) {
+    const test::TempDir dir;
+    fs::create_directories(dir.path / "expected");
+    fs::create_directories(dir.path / "experiments");
+    const std::string head = "experiment = \"e\"\n[[claim]]\nid = \"k\"\nstatement = \"s\"\nsource = \"s\"\n"
+                             "measured = \"x\"\nmin = 0.0\ntolerance_reason = \"r\"\ntolerance_kind = \"grid\"\n";
+    const std::string deviation = "known_deviation = \"k\"\ndeviation_band = [1, 2]\ndeviation_band_reason = \"r\"\n"
+                                  "deviation_band_kind = \"grid\"\n";
+    auto error = [&](const std::string& rest, const std::string& experiment_file = "") {
+        fs::remove(dir.path / "experiments" / "e.toml");
+        if (!experiment_file.empty()) write(dir.path / "experiments" / "e.toml", experiment_file);
+        try {
+            load_claims(write(dir.path / "expected" / "e.toml", head + rest), "e");
+        } catch (const InputError& e) {
+            return std::string(e.what());
+        }
+        return std::string("no error");
+    };
+    EXPECT_EQ(error("role = \"reproduction\"\n"), "no error");
+    EXPECT_EQ(error("role = \"identity\"\n" + deviation + "status = \"inherent\"\n"), "no error");
+    const std::string roles = "reproduction, identity, calibration, validation";
+    const std::string statuses = "settled, inherent, open";
+    const std::string parameter = "name = \"e\"\npaper = \"Luding, TASK Quarterly 2, 417 (1998)\"\ndescription = \"d\"\n"
+                                  "[parameters.g]\nvalue = 7.0\nunit = \"m/s^2\"\nsource = \"s\"\n";
+    for (const auto& [rest, experiment_file, mentions] : std::vector<std::tuple<std::string, std::string, std::vector<std::string>>>{
+             {"", "", {"claim k (line 2)", "role is missing", roles}},
+             {"role = \"headline\"\n", "", {"claim k (line 10)", "role 'headline' is unknown", roles}},
+             {"role = \"reproduction\"\n" + deviation, "", {"claim k (line 2)", "status is missing", statuses}},
+             {"role = \"reproduction\"\n" + deviation + "status = \"extrapolated\"\n", "",
+              {"claim k (line 15)", "status 'extrapolated' is unknown", statuses}},
+             {"role = \"reproduction\"\nstatus = \"open\"\n", "", {"claim k (line 11)", "status belongs only"}},
+             // A calibration nobody names, a name of no claim, a name of a claim of another role.
+             {"role = \"calibration\"\n", "", {"claim k (line 2)", "no setting of", "calibrated_on = \"k\""}},
+             {"role = \"calibration\"\n", parameter, {"claim k (line 2)", "no setting of", "experiments/e.toml"}},
+             {"role = \"reproduction\"\n", parameter + "calibrated_on = \"k\"\n",
+              {"experiments/e.toml: [parameters.g] (line 8)", "role is 'reproduction'"}},
+             {"role = \"calibration\"\n", parameter + "calibrated_on = \"q\"\n", {"[parameters.g] (line 8)", "'q' names no claim"}},
+             {"role = \"calibration\"\n", parameter + "calibrated_on = 5\n", {"[parameters.g] (line 8)", "a claim id or a list"}},
+             {"role = \"calibration\"\n", parameter + "[readings.unit]\ncalibrated_on = \"k\"\n",
+              {"[readings.unit] (line 8)", "needs source"}},
+         }) {
+        const std::string m = error(rest, experiment_file);
+        SCOPED_TRACE(rest + " | " + experiment_file);
+        EXPECT_NE(m.find("e.toml"), std::string::npos) << m;
+        for (const auto& s : mentions) EXPECT_NE(m.find(s), std::string::npos) << m;
+    }
+    // Named by a parameter or by a reading: loaded, with the paper's short name for the headline.
+    EXPECT_EQ(error("role = \"calibration\"\n", parameter + "calibrated_on = \"k\"\n"), "no error");
+    EXPECT_EQ(error("role = \"calibration\"\n", parameter + "[readings.unit]\nsource = \"s\"\ncalibrated_on = [\"k\"]\n"),
+              "no error");
+    const auto claims = load_claims(dir.path / "expected" / "e.toml", "e");
+    ASSERT_EQ(claims.size(), 1u);
+    EXPECT_EQ(claims[0].publication, "Luding 1998");
+    VerdictCounts counts;
+    counts.add(evaluate_claims(claims, {{"x", 1.0}}, Scale::Paper));
+    EXPECT_NE(counts.headline().find("Luding 1998: 0 statements"), std::string::npos) << counts.headline();
+    EXPECT_NE(counts.headline().find("0 identity, 1 calibration, 0 validation (1 PASS"), std::string::npos) << counts.headline();
+}
+
 // A missing or unknown kind is refused with the file, the claim and the allowed values.
 TEST(Claims, MissingOrUnknownKindIsAnInputError) {
     const test::TempDir dir;
-    const std::string head = "experiment = \"e\"\n[[claim]]\nid = \"k\"\nstatement = \"s\"\nsource = \"s\"\n"
+    const std::string head = "experiment = \"e\"\n[[claim]]\nid = \"k\"\nrole = \"reproduction\"\nstatement = \"s\"\nsource = \"s\"\n"
                              "measured = \"x\"\nmin = 0.0\ntolerance_reason = \"r\"\n";
-    const std::string deviation = "known_deviation = \"k\"\ndeviation_band = [1, 2]\ndeviation_band_reason = \"r\"\n";
+    const std::string deviation = "known_deviation = \"k\"\nstatus = \"open\"\ndeviation_band = [1, 2]\ndeviation_band_reason = \"r\"\n";
     auto error = [&](const std::string& rest) {
         try {
             load_claims(write(dir.path / "e.toml", head + rest), "e");
@@ -421,7 +494,7 @@ TEST(Claims, MissingOrUnknownKindIsAnInputError) {
     const std::string band_kinds = "seed_spread, error_bar, grid, single_run";
     for (const auto& [rest, mentions] : std::vector<std::pair<std::string, std::vector<std::string>>>{
              {"", {"tolerance_kind is missing", tolerance_kinds}},
-             {"tolerance_kind = \"roughly\"\n", {"tolerance_kind 'roughly' is unknown", tolerance_kinds, "line 9"}},
+             {"tolerance_kind = \"roughly\"\n", {"tolerance_kind 'roughly' is unknown", tolerance_kinds, "line 10"}},
              {"tolerance_kind = \"seed_spread\"\n", {"tolerance_kind 'seed_spread' is unknown"}},
              {"tolerance_kind = \"grid\"\n" + deviation, {"deviation_band_kind is missing", band_kinds}},
              {"tolerance_kind = \"grid\"\n" + deviation + "deviation_band_kind = \"physical_bound\"\n",
