@@ -6,6 +6,15 @@
 # A_rate, B_rate) is the pooled fit's median over seeds: a thick grey dashed line, named as such,
 # and in the panel title in both readings of the paper's unit (1e3 1/s, or collisions per Δt).
 # The keys sit in the empty lower left corner, with the fitted values only (no repeated words).
+# The paper's own values, drawn as its lines: (a) Eq. (21) with A = 1, (b) Eq. (22) with B = 14
+# (Section 5 and the caption of Fig. 14; the paper prints no unit), in the 10^3 s^-1 reading of the
+# project (experiments/pipe-arching.toml [readings.rate_unit], calibrated on claim A_rate): A = 1e3
+# 1/s, B = 14e3 1/s. Thin grey dashes, named "paper: ..." in the key; our seed median is
+# dash-dotted purple, so that the two stay apart. A script reads no claim: the same numbers are in
+# expected/pipe-arching.toml, claim A_rate (paper = 1000.0) and claim B_rate (its statement: B = 14,
+# 1e3 1/s, i.e. 14e3 1/s).
+paper_A = 1.0e3
+paper_B = 14.0e3
 # Variables set by granrepro: datadir, outbase, tables.
 set datafile separator "\t"
 set datafile missing "NaN"
@@ -52,7 +61,8 @@ do for [fmt in "png pdf"] {
          lc rgb word(colors,k) title sprintf("%s s: %s ± %s", tl(k), g4(val(k)), g4(err(k))), \
        for [k=1:4] Pe(x, val(k)) with lines lw 1 dt 2 lc rgb word(colors,k) notitle, \
        Pe(x, A0) with lines lw 2.5 lc rgb "black" title sprintf("Eq. (21), pooled: %s", g4(A0)), \
-       Pe(x, A) with lines lw 2 dt 2 lc rgb "#888888" title sprintf("median over %d seeds: %s", ns, g4(A))
+       Pe(x, A) with lines lw 2 dt 4 lc rgb "#7B3294" title sprintf("median over %d seeds: %s", ns, g4(A)), \
+       Pe(x, paper_A) with lines lw 2.5 dt 2 lc rgb "#999999" title "paper: A = 1 × 10^3 (Sec. 5)"
   set logscale xy
   set format x "10^{%L}"
   set xrange [100:1e6]
@@ -63,7 +73,8 @@ do for [fmt in "png pdf"] {
          lc rgb word(colors,k-4) title sprintf("%s s: %s ± %s", tl(k), g4(val(k)), g4(err(k))), \
        for [k=5:n] Pp(x, val(k)) with lines lw 1 dt 2 lc rgb word(colors,k-4) notitle, \
        (B0 == B0 ? Pp(x, B0) : 1/0) with lines lw 2.5 lc rgb "black" title sprintf("Eq. (22), pooled: %s", g4(B0)), \
-       Pp(x, B) with lines lw 2 dt 2 lc rgb "#888888" title sprintf("median over %d seeds: %s", ns, g4(B))
+       Pp(x, B) with lines lw 2 dt 4 lc rgb "#7B3294" title sprintf("median over %d seeds: %s", ns, g4(B)), \
+       Pp(x, paper_B) with lines lw 2.5 dt 2 lc rgb "#999999" title "paper: B = 14 × 10^3 (Sec. 5)"
   unset multiplot
   unset output
 }
