@@ -2,7 +2,16 @@
 # the common colour range); each disk coloured by its collision frequency N_c over the last
 # Δt = t/2 on one logarithmic scale for all panels (viridis: dark = few, yellow = many collisions;
 # the paper used red-to-blue). Disks with N_c = 0 get the bottom colour.
+# Each title gives, beside ours, the paper's C/N where the paper has a snapshot at that time: Fig.
+# 11 is captioned "t = 0.640 s, C/N = 39" and "t = 10.24 s, C/N = 183" (Section 4.2); our later
+# snapshots have no paper panel. A script reads no claim: the same numbers are in
+# expected/cluster-growth.toml, claims cn_39_at_0.64s (paper = 39.0) and cn_183_at_10.24s
+# (paper = 183.0).
 # Variables set by granrepro: datadir, outbase.
+paper_t = "0.64 10.24"
+paper_cn = "39 183"
+# The paper's C/N at our time t (a text), or "" where the paper has no snapshot (times agree to 0.1 %).
+paper_at(t) = sum [j=1:words(paper_t)] (abs(real(t) / real(word(paper_t, j)) - 1) < 1e-3 ? j : 0)
 set datafile separator "\t"
 sel = datadir.'/fig11_selection.tsv'
 # Row k of the selection: the panel's t and C/N; the colour range is in row 1.
@@ -38,7 +47,8 @@ do for [fmt in "png pdf"] {
   unset key
   do for [k=1:n] {
     f = datadir.'/snapshot_'.(k-1).'.tsv'
-    set title sprintf("t = %s s, C/N = %s", tt(k), cc(k))
+    j = paper_at(tt(k))
+    set title sprintf("t = %s s, C/N = %s", tt(k), cc(k)).(j > 0 ? sprintf("  (paper: C/N = %s)", word(paper_cn, j)) : "")
     plot f using 1:2:(0.5):($3 > lo ? $3 : lo) skip 1 with circles fs solid noborder lc palette
   }
   unset multiplot
