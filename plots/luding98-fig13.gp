@@ -6,7 +6,9 @@
 # with the white level at 1e5 1/s only the densest few per cent are white and an arch shows as a
 # band. The paper's white level 1e4 1/s is a tick of the colour box. Marks (table marks): the black bar on the wall is the initiating disk of the
 # first arch (the paper's black bar), ringed in red; disks of the arch the detector finds in that
-# frame are ringed in orange; a visible crack (a wall-to-wall gap >= crack_opening, any shape) is
+# frame carry a small blue dot (a third of the disk: an arch of hundreds of disks, as at 0.070 s at
+# paper scale, stays a dotted area through which the grey levels show; full-size orange rings made
+# it one yellow blob); a visible crack (a wall-to-wall gap >= crack_opening, any shape) is
 # drawn as a red line along its course; without one the widest gap's course is dashed; each title
 # gives the widest wall-to-wall gap.
 # Variables set by granrepro: datadir, outbase, tables.
@@ -21,7 +23,7 @@ do for [fmt in "png pdf"] {
   if (fmt eq "png") { set terminal pngcairo size 240*n+120,900 enhanced font "Sans,10" }
   else { set terminal pdfcairo size (1.6*n+0.8)in,6in enhanced font "Sans,8" }
   set output outbase.'.'.fmt
-  set multiplot layout 1,n margins 0.05,0.93,0.07,0.86 spacing 0.012,0 title "falling column, N = 1562, L = 20.2 d, ε = 0.9, μ = 0.5, β_0 = 0.2 (run 0); grey: N_c over the last 1 ms\nblack bar / red ring: initiating disk; orange rings: arch found in the frame; red line: visible crack (≥ 0.5 d), dashed: the widest gap when narrower"
+  set multiplot layout 1,n margins 0.05,0.93,0.07,0.86 spacing 0.012,0 title "falling column, N = 1562, L = 20.2 d, ε = 0.9, μ = 0.5, β_0 = 0.2 (run 0); grey: N_c over the last 1 ms\nblack bar / red ring: initiating disk; blue dots: disks of the arch found in the frame; red line: visible crack (≥ 0.5 d), dashed: the widest gap when narrower"
   set palette defined (0 "black", 1 "white")
   # log10 N_c from 10^2.5 (black) to 10^5 (white): 1e3 1/s is dark grey, the paper's 1e4 1/s mid-grey
   set cbrange [2.5:5]
@@ -50,7 +52,7 @@ do for [fmt in "png pdf"] {
     stats f using ($4 > 0 ? 1 : 0) skip 1 nooutput
     n_arch = int(STATS_sum)
     cmd = "plot f using 1:2:(0.5):($3 > 0 ? log10($3) : 2.5) skip 1 with circles lc palette notitle"
-    if (n_arch > 0) { cmd = cmd.", f using 1:($4 > 0 ? $2 : 1/0):(0.5) skip 1 with circles fs empty border lc rgb '#E69F00' lw 0.8 notitle" }
+    if (n_arch > 0) { cmd = cmd.", f using 1:($4 > 0 ? $2 : 1/0):(0.18) skip 1 with circles fs solid 1.0 noborder lc rgb '#1E88FF' notitle" }
     if (px == px) { cmd = cmd.sprintf(", '+' using (%g):(%g):(0.55) every ::0::0 with circles fs empty border lc rgb '#D55E00' lw 2.5 notitle", px, py) }
     if (vis) { cmd = cmd.", cf using 1:2 skip 1 with lines lw 3 lc rgb '#D55E00' notitle" }
     # no visible crack: the course of the widest wall-to-wall gap, thin and dashed, shows where the column is most open
