@@ -5,10 +5,11 @@ A results folder is untrusted input (a downloaded paper_figures/): load() reads 
 following symlinks and within the caps of granrepro.untrusted, refuses any attribute or dataset of
 another shape or type than the writer's, and verifies data.h5 against summary.json beside it:
 experiment, scale, seed, every scalar and every parameter value by value, and (schema 2 and 3) the
-content hashes of the scalars, of each table it reads and of /points. Anything else raises
+content hashes of summary.json, of the scalars, of each table it reads and of /points. Anything else raises
 ResultsError (ResultsMismatch where the two files disagree), one line naming the file and field."""
 from __future__ import annotations
 
+import json
 import math
 import os
 import struct
@@ -17,8 +18,7 @@ from dataclasses import dataclass, field
 import h5py
 import numpy as np
 
-from .untrusted import (MAX_POINT_FILE_BYTES, MAX_SUMMARY_BYTES, ResultsError, parse_json, read_json,
-                        require_regular_file)
+from .untrusted import MAX_POINT_FILE_BYTES, MAX_SUMMARY_BYTES, ResultsError, parse_json, read_file, require_regular_file
 
 SCHEMA = "granrepro-result"
 SCHEMA_VERSION = 3  # the version this reader's writer emits
@@ -231,9 +231,78 @@ def fnv1a64(data: bytes) -> str:
 
 # ---------------------------------------------------------------- summary.json against data.h5
 
+# summary_json_hash (docs/schema.md): FNV-1a 64 of summary.json as nlohmann::json's dump() writes
+# it compactly: keys in byte order, no spaces, strings as json.dumps(ensure_ascii=False) writes
+# them (the same escapes). Numbers are written twice over: as the file spells them (exact for
+# a file the writer wrote, whose tokens are dump()'s), and in dump()'s format from Python's
+# shortest digits (for a file reformatted without changing a value; nlohmann's Grisu2 digits are
+# one longer for ~0.03 % of doubles, 225 of 662684 in paper_figures' /points). Either must match.
 
-def _summary(path: str) -> dict:
-    s = read_json(path, MAX_SUMMARY_BYTES, "summary.json")
+
+class _Token(str):
+    """A number as the file spells it."""
+
+
+def _dump_float(x: float) -> str:
+    """dump()'s text of a double (nlohmann/detail/conversions/to_chars.hpp, exponents -4..15)."""
+    if not math.isfinite(x):
+        return "null"
+    if x == 0:
+        return "-0.0" if math.copysign(1, x) < 0 else "0.0"
+    digits, exponent = _shortest_digits(abs(x))
+    k, n = len(digits), len(digits) + exponent
+    if k <= n <= 15:
+        text = digits + "0" * (n - k) + ".0"
+    elif 0 < n <= 15:
+        text = digits[:n] + "." + digits[n:]
+    elif -4 < n <= 0:
+        text = "0." + "0" * (-n) + digits
+    else:
+        e = n - 1
+        text = (digits if k == 1 else digits[0] + "." + digits[1:]) + f"e{'-' if e < 0 else '+'}{abs(e):02d}"
+    return ("-" if x < 0 else "") + text
+
+
+def _shortest_digits(x: float) -> tuple[str, int]:
+    """The shortest decimal digits that read back as x, and their exponent: x = digits * 10^exponent."""
+    from decimal import Decimal
+    t = Decimal(repr(x)).as_tuple()
+    digits = "".join(map(str, t.digits))
+    stripped = digits.rstrip("0")
+    exponent = t.exponent + len(digits) - len(stripped)
+    return stripped.lstrip("0") or "0", exponent
+
+
+def _dump(v) -> str:
+    if isinstance(v, dict):
+        return "{" + ",".join(json.dumps(k, ensure_ascii=False) + ":" + _dump(v[k]) for k in sorted(v)) + "}"
+    if isinstance(v, list):
+        return "[" + ",".join(_dump(x) for x in v) + "]"
+    if isinstance(v, _Token):
+        return str(v)
+    if isinstance(v, str):
+        return json.dumps(v, ensure_ascii=False)
+    if isinstance(v, bool) or v is None:
+        return {True: "true", False: "false", None: "null"}[v]
+    if isinstance(v, int):
+        return str(v)
+    return _dump_float(v)
+
+
+def summary_content_hashes(summary: dict, text: str) -> set[str]:
+    """The summary_json_hash summary.json (parsed as `summary`, read as `text`) may carry."""
+    spelled = json.loads(text, parse_float=_Token, parse_int=_Token)
+    try:
+        return {fnv1a64(_dump(spelled).encode("utf-8")), fnv1a64(_dump(summary).encode("utf-8"))}
+    except UnicodeEncodeError:  # a lone surrogate written as an escape: not text nlohmann reads
+        return set()
+
+
+
+def _summary(path: str) -> tuple[dict, str]:
+    """summary.json parsed (the fields load() uses of the right kind), and its text."""
+    data = read_file(path, MAX_SUMMARY_BYTES, "summary.json")
+    s = parse_json(data, path)
     if not isinstance(s, dict):
         raise ResultsError(f"{path}: not a granrepro summary (a JSON object)")
     if s.get("schema", "granrepro-summary") != "granrepro-summary":
@@ -250,7 +319,7 @@ def _summary(path: str) -> dict:
     for i, c in enumerate(s.get("claims", [])):
         if not isinstance(c, dict) or not isinstance(c.get("id"), str):
             raise ResultsError(f"{path}: claims[{i}] must be an object with a text 'id'")
-    return s
+    return s, data.decode("utf-8")
 
 
 def _show(v) -> str:
@@ -298,7 +367,7 @@ def _check_parameters(h5_path: str, run: Run, kinds: dict, summary: dict) -> Non
             _mismatch(h5_path, f"has no /parameters/{name} (summary.json beside it has it)", run.experiment)
 
 
-def _check_against_summary(h5_path: str, run: Run, summary: dict, version: int, found: dict) -> None:
+def _check_against_summary(h5_path: str, run: Run, summary: dict, text: str, version: int, found: dict) -> None:
     """data.h5 against summary.json, as `granrepro check` verifies them (src/harness/runner.cpp)."""
     for key, mine in (("experiment", run.experiment), ("scale", run.scale), ("seed", run.seed)):
         if summary.get(key) != mine or isinstance(summary.get(key), bool):
@@ -316,6 +385,11 @@ def _check_against_summary(h5_path: str, run: Run, summary: dict, version: int, 
             _mismatch(h5_path, f"/scalars/{name} is {_show(q.value)} but summary.json beside it has {_show(js)}",
                       run.experiment)
     if version >= 2 or summary.get("schema_version", 1) >= 2:
+        if "summary_json_hash" not in run.attributes:
+            _mismatch(h5_path, "has no summary_json_hash (one of the two files is of schema_version 2 or 3)", run.experiment)
+        if run.attributes["summary_json_hash"] not in summary_content_hashes(summary, text):
+            raise ResultsMismatch(f"{os.path.join(run.path, 'summary.json')}: content differs from the hash data.h5 "
+                                  f"beside it recorded for it (edited since the run?); rerun `granrepro {run.experiment}`")
         recorded = summary.get("data_h5_hash")
         if not isinstance(recorded, dict):
             _mismatch(h5_path, "summary.json beside it has no 'data_h5_hash' object", run.experiment)
@@ -452,8 +526,8 @@ def load(out_dir: str, tables=None, points: bool = True) -> Run:
     h5_path = os.path.join(out_dir, "data.h5")
     summary_path = os.path.join(out_dir, "summary.json")
     run, version, found = _read_h5(h5_path, out_dir, tables, points)
-    summary = _summary(summary_path)
-    _check_against_summary(h5_path, run, summary, version, found)
+    summary, text = _summary(summary_path)
+    _check_against_summary(h5_path, run, summary, text, version, found)
     run.summary = summary
     run.claims = summary.get("claims", [])
     return run

@@ -181,6 +181,33 @@ def test_an_edited_parameter_is_a_mismatch_not_a_value(crafted):
         granrepro.load(str(crafted.dir))
 
 
+def test_a_parameter_edited_in_both_files_differs_from_the_summary_hash(crafted):
+    k_n_edited(crafted)
+    s = json.loads(crafted.summary.read_text())
+    s["parameters"]["k_N"]["value"] = 3000.0
+    crafted.summary.write_text(json.dumps(s, indent=1))
+    with pytest.raises(ResultsMismatch, match="summary.json: content differs from the hash data.h5 beside it recorded"):
+        granrepro.load(str(crafted.dir))
+    expect_refusal(python_report(crafted), str(crafted.summary), "content differs")
+
+
+def respelled(v) -> str:
+    """JSON of v with keys in reverse order and every real as 17 digits with an exponent."""
+    if isinstance(v, dict):
+        return "{\n" + ",\n".join(f"{json.dumps(k)}: {respelled(x)}" for k, x in reversed(list(v.items()))) + "}"
+    if isinstance(v, list):
+        return "[" + ", ".join(respelled(x) for x in v) + "]"
+    return f"{v:.16e}" if isinstance(v, float) else json.dumps(v)
+
+
+def test_a_reformatted_summary_is_the_same_content(crafted):
+    # the hash covers values, not the file's layout, key order or number spelling
+    text = respelled(json.loads(crafted.summary.read_text()))
+    assert "e+03" in text
+    crafted.summary.write_text(text)
+    granrepro.load(str(crafted.dir))
+
+
 def test_an_edited_table_or_scalar_differs_from_its_hash(crafted):
     with h5py.File(crafted.h5, "r+") as f:
         col = f["tables/fig3/dvy"]
