@@ -125,3 +125,36 @@ def test_the_default_report_links_the_figures_of_its_results_folder(binary, quic
     assert '<img src="../brake-failure/schaefer95-fig3.png"' in text
     assert not os.path.exists(os.path.join(quick_out, "report", "figures"))
     shutil.rmtree(os.path.join(quick_out, "report"))
+
+
+def test_pages_only_for_the_experiments_present_each_naming_the_folder(binary, quick_out, tmp_path):
+    # --out as the user gave it (relative): every page names it, as the committed report names
+    # paper_figures (issue 40 §6: it said paper_figures.new, a folder that does not exist).
+    shutil.copytree(os.path.join(quick_out, "brake-failure"), tmp_path / "one" / "brake-failure",
+                    ignore=shutil.ignore_patterns("report"))
+    r = subprocess.run([binary, "report", "--out", "one", "--to", "rep"], capture_output=True, text=True, cwd=tmp_path)
+    assert r.returncode == 0, r.stderr
+    pages = sorted(n for n in os.listdir(tmp_path / "rep") if n.endswith(".html"))
+    assert pages == ["brake-failure.html", "index.html"]
+    for n in pages:
+        assert "from <code>one</code>" in page(tmp_path / "rep" / n), n
+    index = page(tmp_path / "rep" / "index.html")
+    assert "Results in <code>one</code>" in index and "No results in <code>one</code> for: " in index
+    assert 'href="cooling.html' not in index and "cooling" in index
+
+
+PAPER_FIGURES = os.path.join(os.path.dirname(__file__), "..", "..", "paper_figures")
+
+
+def test_the_committed_report_is_what_the_code_writes(binary, tmp_path):
+    """`granrepro report --out paper_figures` (the README's default) on a copy of the committed
+    results gives the committed paper_figures/report byte for byte, nothing ignored: no page holds
+    a time or a path of the machine. Regenerate it with that command when this fails."""
+    shutil.copytree(PAPER_FIGURES, tmp_path / "paper_figures", ignore=shutil.ignore_patterns("report"))
+    r = subprocess.run([binary, "report", "--out", "paper_figures"], capture_output=True, text=True, cwd=tmp_path)
+    assert r.returncode == 0, r.stderr
+    committed, fresh = os.path.join(PAPER_FIGURES, "report"), tmp_path / "paper_figures" / "report"
+    assert sorted(os.listdir(fresh)) == sorted(os.listdir(committed))
+    for n in os.listdir(committed):
+        with open(os.path.join(committed, n), "rb") as a, open(fresh / n, "rb") as b:
+            assert a.read() == b.read(), f"paper_figures/report/{n} differs from what the code writes now"

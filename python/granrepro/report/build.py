@@ -9,14 +9,21 @@ written by `granrepro report`, which judges every claim as `granrepro check` doe
 escaped (Jinja2 autoescape): a results folder is data, never code. The report is written into a
 hidden staging folder beside REPORTDIR and switched into place when complete.
 
-Exit codes: 0 written; 2 bad input (one line naming the parameter); 3 not written (the previous
-report is untouched); 4 jinja2 or h5py missing.
+A results folder is untrusted input (docs/schema.md, "Trust model"): every file is read through
+granrepro.untrusted (no symlinks, size caps, bounded JSON depth) and granrepro.load (data.h5
+verified against summary.json); a figure is shown only if it is a regular file that is PNG (or
+PDF) by its first bytes, and only such a file is copied. Pages are written only for the
+experiments with results; every page names the results folder as --results gave it.
+
+Exit codes: 0 written; 2 bad input (one line naming the file and field, or the parameter): damaged
+or edited results, a claims file that is not `granrepro report`'s, a --to that is not a report; 3
+not written (the previous report is untouched); 4 jinja2 or h5py missing; 1 an internal error
+(one line, never a traceback).
 """
 from __future__ import annotations
 
 import argparse
 import ctypes
-import json
 import math
 import os
 import re
@@ -25,6 +32,9 @@ import sys
 import tomllib
 from dataclasses import dataclass, field
 from importlib import resources
+
+from ..untrusted import (MAX_IMAGE_BYTES, MAX_SUMMARY_BYTES, PDF_MAGIC, PNG_MAGIC, ResultsError, printable,
+                         read_file, read_json)
 
 MARKER = ".granrepro-report"  # in every report folder: only such a folder is ever replaced
 MAX_TABLE_ROWS = 60           # rows of a cited table shown; the rest are counted
@@ -195,11 +205,25 @@ def cited_table(t) -> CitedTable:
 # ---------------------------------------------------------------- images
 
 
+MAGIC = {".png": PNG_MAGIC, ".pdf": PDF_MAGIC}
+
+
 def find_file(results: str, experiment: str, fig_id: str, ext: str) -> str:
+    """The first of OUT/<experiment>/<id><ext> and OUT/<id><ext> that exists (as a name: a symlink
+    counts, and is then refused by figure_file rather than passed over)."""
     for p in (os.path.join(results, experiment, fig_id + ext), os.path.join(results, fig_id + ext)):
-        if os.path.isfile(p):
+        if os.path.lexists(p):
             return p
     return ""
+
+
+def figure_file(path: str, ext: str, head: int | None = None) -> bytes:
+    """The content of a figure (its first `head` bytes): a regular file (not a symlink, at most
+    MAX_IMAGE_BYTES) that is PNG or PDF by its first bytes. ResultsError (naming the file) otherwise."""
+    data = read_file(path, MAX_IMAGE_BYTES, "figure", head=head)
+    if not data.startswith(MAGIC[ext]):
+        raise ResultsError(f"{path}: not a {ext[1:].upper()} file by its first bytes")
+    return data
 
 
 # ---------------------------------------------------------------- the model of the whole report
@@ -240,33 +264,50 @@ def provenance_rows(summary: dict, run) -> list:
     return [(k, _number(v) if isinstance(v, float) else str(v)) for k, v in rows]
 
 
+def shown_name(results: str) -> str:
+    """The results folder as the pages name it: as the user gave it (`--out paper_figures`), the
+    folder's own name where that is only "." or ".."."""
+    n = os.path.normpath(results)
+    return os.path.basename(os.path.abspath(results)) if n in (".", "..") or n.endswith("/..") else n
+
+
+def figure_image(results: str, name: str, fid: str, ext: str, warn) -> str:
+    """The figure's file if it can be shown, "" if there is none or it is refused (warned)."""
+    path = find_file(results, name, fid, ext)
+    if path:
+        try:
+            figure_file(path, ext, head=len(MAGIC[ext]))
+        except ResultsError as e:
+            warn(f"figure {fid} ({name}): {e}; not shown")
+            return ""
+    return path
+
+
 def build_model(results: str, judged: dict, final_to: str, link_images: bool, warn) -> dict:
     from .. import reader
 
     texts = load_figure_texts()
     overrides = texts.get("claim_figure", {})
     papers = [{"prefix": p["prefix"], "title": p["title"], "experiments": []} for p in texts["paper"]]
-    copies = []  # (source file, name in the report)
+    shown = shown_name(results)
+    copies = []  # (source file, extension, name in the report)
     experiments = []
     for x in judged["experiments"]:
         name = x["name"]
         e = Experiment(name, x.get("paper", ""), x.get("description", ""), bool(x.get("has_results")))
         fig_ids = [f["id"] for f in x.get("figures", [])]
-        summary, run = {}, None
+        run = None
         claims_in = x.get("claims", []) if e.has_results else []
         if e.has_results:
             e.scale = x.get("scale", "")
             e.notes = list(x.get("notes", []))
-            with open(os.path.join(results, name, "summary.json"), encoding="utf-8") as f:
-                summary = json.load(f)
             texts_of = lambda c: " ".join(c.get(k, "") for k in ("known_deviation", "deviation_band_reason",  # noqa: E731
                                                                    "tolerance_reason"))
-            import h5py
-            with h5py.File(os.path.join(results, name, "data.h5"), "r") as h5:
-                names = list(h5["tables"].keys()) if "tables" in h5 else []
-            wanted = {n for c in claims_in for n in tables_cited(texts_of(c), names)}
-            run = reader.load(os.path.join(results, name), tables=wanted)
-            e.provenance = provenance_rows(summary, run)
+            # data.h5 and summary.json read and verified against each other; of the tables only
+            # those a deviation text cites.
+            run = reader.load(os.path.join(results, name), points=False,
+                              tables=lambda names: {n for c in claims_in for n in tables_cited(texts_of(c), names)})
+            e.provenance = provenance_rows(run.summary, run)
         for f in x.get("figures", []):
             fid = f["id"]
             t = texts.get("figure", {}).get(fid, {})
@@ -275,21 +316,21 @@ def build_model(results: str, judged: dict, final_to: str, link_images: bool, wa
             fig = Figure(fid, f"{who} Fig. {figure_number(fid)}", f.get("caption", ""), t.get("caption", ""),
                          t.get("source", ""))
             if not e.has_results:
-                fig.missing = f"no results of {name} in {results}"
+                fig.missing = f"no results of {name} in {shown}"
             else:
-                png = find_file(results, name, fid, ".png")
-                pdf = find_file(results, name, fid, ".pdf")
+                png = figure_image(results, name, fid, ".png", warn)
+                pdf = figure_image(results, name, fid, ".pdf", warn) if png else ""
                 if not png:
-                    fig.missing = f"{fid}.png is missing from {results} (the figure was not drawn)"
-                    warn(f"figure {fid} ({name}): {fid}.png is missing from {results}")
-                for path, attr in ((png, "image"), (pdf, "pdf")):
+                    fig.missing = f"{fid}.png is missing from {shown} or is not a PNG file (the figure was not drawn)"
+                    warn(f"figure {fid} ({name}): {fid}.png is missing from {results} or is not a PNG file")
+                for path, ext, attr in ((png, ".png", "image"), (pdf, ".pdf", "pdf")):
                     if not path:
                         continue
                     if link_images:
                         setattr(fig, attr, os.path.relpath(os.path.abspath(path), final_to))
                     else:
                         target = f"figures/{os.path.basename(path)}"
-                        copies.append((path, target))
+                        copies.append((path, ext, target))
                         setattr(fig, attr, target)
             e.figures.append(fig)
         by_id = {f.id: f for f in e.figures}
@@ -321,7 +362,7 @@ def build_model(results: str, judged: dict, final_to: str, link_images: bool, wa
     ordered += [e for e in experiments if e not in ordered]
     claims = [c for e in ordered for c in e.claims]
     return {"papers": [p for p in papers if p["experiments"]], "experiments": experiments, "claims": claims,
-            "totals": _totals(claims), "results": results, "verdicts": VERDICTS,
+            "totals": _totals(claims), "results": shown, "verdicts": VERDICTS,
             "missing_results": [e.name for e in experiments if not e.has_results],
             "missing_figures": [(e, f) for e in experiments for f in e.figures if f.missing and e.has_results],
             "scales": sorted({e.scale for e in experiments if e.scale}),
@@ -340,16 +381,16 @@ def render(model: dict, staging: str) -> None:
                              trim_blocks=True, lstrip_blocks=True)
     pages = {"index.html": env.get_template("index.html.j2").render(**model)}
     for e in model["experiments"]:
-        pages[e.page] = env.get_template("experiment.html.j2").render(e=e, **model)
+        if e.has_results:  # an experiment without results is listed on the summary, without a page
+            pages[e.page] = env.get_template("experiment.html.j2").render(e=e, **model)
     pages["style.css"] = _data().joinpath("templates", "style.css").read_text(encoding="utf-8")
     pages[MARKER] = "written by `granrepro report`; the whole folder is replaced by the next report\n"
     for name, text in pages.items():
         _write(os.path.join(staging, name), text.encode("utf-8"))
-    for src, target in model["copies"]:
+    for src, ext, target in model["copies"]:
         dst = os.path.join(staging, target)
         os.makedirs(os.path.dirname(dst), exist_ok=True)
-        with open(src, "rb") as f:
-            _write(dst, f.read())
+        _write(dst, figure_file(src, ext))  # checked again as it is read: only a PNG/PDF is copied
 
 
 def _write(path: str, data: bytes) -> None:
@@ -432,7 +473,7 @@ def check_target(results: str, to: str) -> None:
 
 def make_report(results: str, judged: dict, to: str, warn=None) -> dict:
     """Writes the report of `results` to `to`; returns the model (tests read it)."""
-    warn = warn or (lambda m: print(f"granrepro: report: warning: {m}", file=sys.stderr))
+    warn = warn or (lambda m: print(f"granrepro: report: warning: {printable(m)}", file=sys.stderr))
     if not os.path.isdir(results):
         raise BadInput(f"--results {results}: not a folder; give a results folder such as paper_figures or out")
     final = os.path.abspath(to)
@@ -460,10 +501,74 @@ def make_report(results: str, judged: dict, to: str, warn=None) -> dict:
     return model
 
 
+# ---------------------------------------------------------------- the claims file
+
+
+_NAME = re.compile(r"[a-z0-9][a-z0-9-]{0,63}")  # an experiment or figure id: also a file name here
+_CLAIM_TEXTS = ("statement", "source", "expected", "tolerance", "tolerance_reason", "tolerance_kind", "verdict",
+                "known_deviation", "deviation_band", "deviation_band_kind", "deviation_band_reason")
+
+
+def _field(where: str, value, kind, what: str, optional: bool = True):
+    if value is None and optional:
+        return
+    if not isinstance(value, kind) or (kind is int and isinstance(value, bool)):
+        raise BadInput(f"{where} must be {what}")
+
+
+def validate_judged(judged, file: str) -> None:
+    """The claims file as `granrepro report` writes it (module doc), or BadInput naming the field:
+    its names become file names and its texts go on the pages."""
+    if not isinstance(judged, dict) or not isinstance(judged.get("experiments"), list):
+        raise BadInput(f"--claims {file}: not the claims `granrepro report` writes (no 'experiments' list)")
+    seen = set()
+    for i, x in enumerate(judged["experiments"]):
+        at = f"--claims {file}: experiments[{i}]"
+        _field(at, x, dict, "an object", optional=False)
+        name = x.get("name")
+        if not isinstance(name, str) or not _NAME.fullmatch(name) or name in seen:
+            raise BadInput(f"{at}.name must be an experiment name (a-z, 0-9, '-'), each once")
+        seen.add(name)
+        for k in ("paper", "description", "scale"):
+            _field(f"{at}.{k}", x.get(k), str, "text")
+        _field(f"{at}.has_results", x.get("has_results"), bool, "true or false")
+        for key in ("figures", "notes", "claims"):
+            _field(f"{at}.{key}", x.get(key), list, "an array")
+        for j, f in enumerate(x.get("figures") or []):
+            _field(f"{at}.figures[{j}]", f, dict, "an object", optional=False)
+            if not isinstance(f.get("id"), str) or not _NAME.fullmatch(f["id"]):
+                raise BadInput(f"{at}.figures[{j}].id must be a figure id (a-z, 0-9, '-')")
+            _field(f"{at}.figures[{j}].caption", f.get("caption"), str, "text")
+        for j, n in enumerate(x.get("notes") or []):
+            _field(f"{at}.notes[{j}]", n, str, "text", optional=False)
+        for j, c in enumerate(x.get("claims") or []):
+            _field(f"{at}.claims[{j}]", c, dict, "an object", optional=False)
+            _field(f"{at}.claims[{j}].id", c.get("id"), str, "text", optional=False)
+            for k in _CLAIM_TEXTS:
+                _field(f"{at}.claims[{j}].{k}", c.get(k), str, "text")
+            _field(f"{at}.claims[{j}].measured", c.get("measured"), (int, float), "a number or null")
+
+
+def read_claims(path: str) -> dict:
+    try:
+        judged = read_json(path, MAX_SUMMARY_BYTES, "claims file")
+    except ResultsError as e:
+        raise BadInput(f"--claims {e}") from None
+    validate_judged(judged, path)
+    return judged
+
+
+# ---------------------------------------------------------------- the command
+
+
 class _Parser(argparse.ArgumentParser):
     def error(self, message):  # one line, exit 2
-        print(f"granrepro: report: {message}", file=sys.stderr)
+        print(f"granrepro: report: {printable(message)}", file=sys.stderr)
         sys.exit(2)
+
+
+def _say(message: str) -> None:
+    print(f"granrepro: report: {printable(message)}", file=sys.stderr)
 
 
 def main(argv=None) -> int:
@@ -480,21 +585,21 @@ def main(argv=None) -> int:
                   f"or pip install ./python)", file=sys.stderr)
             return 4
     try:
-        try:
-            with open(a.claims, encoding="utf-8") as f:
-                judged = json.load(f)
-        except (OSError, ValueError) as e:
-            raise BadInput(f"--claims {a.claims}: cannot be read as JSON ({e})") from e
-        if not isinstance(judged, dict) or not isinstance(judged.get("experiments"), list):
-            raise BadInput(f"--claims {a.claims}: not the claims `granrepro report` writes (no 'experiments' list)")
-        model = make_report(a.results, judged, a.to)
-    except BadInput as e:
-        print(f"granrepro: report: {e}", file=sys.stderr)
+        model = make_report(a.results, read_claims(a.claims), a.to,
+                            warn=lambda m: _say(f"warning: {m}"))
+    except (BadInput, ResultsError) as e:  # damaged or edited results, a wrong argument
+        _say(str(e))
         return 2
-    except OSError as e:
-        print(f"granrepro: report: could not write {a.to}: {e.strerror or e} ({e.filename or ''}); "
-              "the previous report is untouched", file=sys.stderr)
+    except OSError as e:  # only writing is left to fail so: every read is a ResultsError
+        _say(f"could not write {a.to}: {e.strerror or e} ({e.filename or ''}); the previous report is untouched")
         return 3
+    except KeyboardInterrupt:
+        _say("interrupted; the previous report is untouched")
+        return 130
+    except Exception as e:  # a last resort: one line, never a traceback
+        _say(f"internal error ({type(e).__name__}: {str(e).splitlines()[0][:200] if str(e) else ''}); "
+             "the previous report is untouched; please report it with the command")
+        return 1
     t = model["totals"]
     print(f"report: {os.path.join(a.to, 'index.html')}: {len(model['experiments']) - len(model['missing_results'])} "
           f"experiments, {t['total']} claims ({t['PASS']} PASS, {t['FAIL']} FAIL, {t['DEVIATION']} DEVIATION, "
