@@ -239,6 +239,11 @@ TEST(HostileReadersVerify, DeepTomlInExperimentFileIsRefusedAndLeavesNoTemporary
     fs::create_directories(tmp);
     expect_refusal(verify(c, {"TMPDIR=" + tmp.string()}), 2, {"data.h5: experiment_file", "TOML nested deeper"});
     EXPECT_TRUE(fs::is_empty(tmp)) << "a temporary folder was left in " << tmp;
+    // Refused before any temporary folder is made: with none to be had (TMPDIR a file), the
+    // refusal is the same.
+    const fs::path not_a_dir = c.base / "tmp-file";
+    std::ofstream(not_a_dir) << "not a folder\n";
+    expect_refusal(verify(c, {"TMPDIR=" + not_a_dir.string()}), 2, {"data.h5: experiment_file", "TOML nested deeper"});
 }
 
 // A folder a killed verify left (SIGKILL runs no destructor) is removed by the next verify once
