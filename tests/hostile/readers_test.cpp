@@ -378,7 +378,11 @@ TEST(HostileReadersCheckpoint, ADeepSymlinkedOrFifoPointFileIsRecomputed) {
             if (e.path().extension() == ".json") point = e.path();
         ASSERT_FALSE(point.empty());
         fs::remove(point);
-        if (kind == "deep") std::ofstream(point) << deep_json(100000);
+        // A point file in every field but its value, nested 100000 deep (its hash check dumped it
+        // recursively).
+        if (kind == "deep")
+            std::ofstream(point) << R"({"schema": "granrepro-sweep-point", "schema_version": 3, "point": )"
+                                 << point.stem().string() << R"(, "fnv1a64": "0", "value": )" << deep_json(100000) << "}";
         if (kind == "symlink") fs::create_symlink(c.sentinel.victim(), point);
         if (kind == "fifo") {
             ASSERT_EQ(::mkfifo(point.c_str(), 0600), 0);
