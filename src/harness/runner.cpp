@@ -84,10 +84,66 @@ std::string json_kind(const nlohmann::json& j) {
     return j.dump().substr(0, 40);
 }
 
+// A seed stored as text (files before 2026-12): digits that fit 64 bits.
+bool seed_text(const std::string& s) {
+    if (s.empty() || s.size() > 20 || s.find_first_not_of("0123456789") != std::string::npos) return false;
+    errno = 0;
+    std::strtoull(s.c_str(), nullptr, 10);
+    return errno == 0;
+}
+
+// The fields the readers (check, verify, report) use, by type: a damaged or forged summary.json
+// is refused here naming the field, before a reader meets a value of the wrong type
+// (nlohmann's type_error, exit 1).
+void check_summary_fields(const nlohmann::json& j, const std::string& where) {
+    auto bad = [&](const std::string& field, const nlohmann::json& v, const std::string& want) {
+        throw InputError(where + "'" + field + "' must be " + want + ", found " + json_kind(v));
+    };
+    auto count = [](const nlohmann::json& v) { return v.is_number_unsigned() || (v.is_number_integer() && v.get<long long>() >= 0); };
+    if (j.contains("schema_version")) {
+        const nlohmann::json& v = j["schema_version"];
+        if (!v.is_number_integer() || v.get<long long>() < 1 || v.get<long long>() > 3)
+            bad("schema_version", v, "1, 2 or 3 (the summary versions this build reads)");
+    }
+    if (j.contains("seed") && !count(j["seed"]) && !(j["seed"].is_string() && seed_text(j["seed"].get<std::string>())))
+        bad("seed", j["seed"], "an integer >= 0");
+    for (const char* f : {"code_version", "physics_hash", "command_line"})
+        if (j.contains(f) && !j[f].is_string()) bad(f, j[f], "a string");
+    for (const char* f : {"wall_time_s", "cpu_time_s", "total_wall_time_s", "total_cpu_time_s"})
+        if (j.contains(f) && !j[f].is_number() && !j[f].is_null()) bad(f, j[f], "a number");
+    for (const char* f : {"stored_points", "resumed_points", "points_without_cost"})
+        if (j.contains(f) && !count(j[f])) bad(f, j[f], "an integer >= 0");
+    if (j.contains("overridden_parameters")) {
+        const nlohmann::json& o = j["overridden_parameters"];
+        if (!o.is_object()) bad("overridden_parameters", o, "an object");
+        for (auto it = o.begin(); it != o.end(); ++it)
+            if (!it.value().is_string() && !it.value().is_number() && !it.value().is_boolean())
+                bad("overridden_parameters/" + it.key(), it.value(), "a value (text or number)");
+    }
+    if (j.contains("parameters")) {
+        const nlohmann::json& o = j["parameters"];
+        if (!o.is_object()) bad("parameters", o, "an object");
+        for (auto it = o.begin(); it != o.end(); ++it)
+            if (!it.value().is_object() || !it.value().contains("value"))
+                bad("parameters/" + it.key(), it.value(), "an object with a 'value'");
+    }
+    if (j.contains("data_h5_hash")) {
+        const nlohmann::json& h = j["data_h5_hash"];
+        if (!h.is_object()) bad("data_h5_hash", h, "an object");
+        for (const char* f : {"scalars", "points"})
+            if (h.contains(f) && !h[f].is_string()) bad(std::string("data_h5_hash/") + f, h[f], "a string");
+        if (h.contains("tables")) {
+            if (!h["tables"].is_object()) bad("data_h5_hash/tables", h["tables"], "an object");
+            for (auto it = h["tables"].begin(); it != h["tables"].end(); ++it)
+                if (!it.value().is_string()) bad("data_h5_hash/tables/" + it.key(), it.value(), "a string");
+        }
+    }
+}
+
 nlohmann::json read_summary(const fs::path& file, const std::string& name) {
-    nlohmann::json j = nlohmann::json::parse(read_file(file), nullptr, false);
-    if (j.is_discarded())
-        throw InputError(file.string() + ": not valid JSON (a damaged file? rerun `granrepro " + name + "`)");
+    // Untrusted: a regular file under its cap (not a symlink to /dev/zero, not a FIFO), nested no
+    // deeper than kMaxJsonDepth (100000-deep JSON overflowed the recursive parser's stack).
+    nlohmann::json j = parse_untrusted_json(read_untrusted_file(file, kMaxSummaryBytes, "summary.json"), file.string());
     const std::string where = file.string() + ": ";
     if (!j.is_object())
         throw InputError(where + "not a granrepro summary (a JSON object expected, found " + json_kind(j) + ")");
@@ -102,6 +158,7 @@ nlohmann::json read_summary(const fs::path& file, const std::string& name) {
     for (auto it = j["scalars"].begin(); it != j["scalars"].end(); ++it)
         if (!it.value().is_number() && !it.value().is_null())
             throw InputError(where + "scalar '" + it.key() + "' must be a number or null, found " + json_kind(it.value()));
+    check_summary_fields(j, where);
     return j;
 }
 
@@ -109,6 +166,35 @@ nlohmann::json read_summary(const fs::path& file, const std::string& name) {
 // and the way out.
 [[noreturn]] void disagree(const fs::path& file, const std::string& what, const std::string& name) {
     throw InputError(file.string() + ": " + what + "; rerun `granrepro " + name + "`");
+}
+
+// A stored parameter equals summary.json's: numbers by value (a real that is not finite is null in
+// JSON), everything else exactly.
+bool same_parameter(const nlohmann::json& stored_value, const nlohmann::json& in_summary) {
+    const nlohmann::json stored = stored_parameter_as(stored_value, in_summary);
+    if (stored.is_number_float() && !std::isfinite(stored.get<double>())) return in_summary.is_null();
+    return stored == in_summary;
+}
+
+// data.h5's /parameters against summary.json's `parameters` (which summary_json_hash covers), name
+// by name: a one-sided edit (k_N 2000 -> 3000 in data.h5) is refused naming the file and the
+// parameter. `verify` also recomputes them from the stored experiment file (harness/verify.cpp).
+void same_parameters(const H5File& f, const fs::path& file, const nlohmann::json& summary, const std::string& name) {
+    if (!summary.contains("parameters")) return; // no summary version lacks them; nothing to compare with
+    const nlohmann::json stored = read_stored_parameters(f);
+    const nlohmann::json& recorded = summary["parameters"];
+    for (auto it = recorded.begin(); it != recorded.end(); ++it) {
+        if (!stored.contains(it.key()))
+            disagree(file, "has no parameter '" + it.key() + "' in /parameters (summary.json beside it has it)", name);
+        if (!same_parameter(stored[it.key()], it.value()["value"]))
+            disagree(file, "parameter '" + it.key() + "' is " + stored[it.key()].dump(-1, ' ', false, nlohmann::json::error_handler_t::replace).substr(0, 40) +
+                               " in /parameters but " + it.value()["value"].dump(-1, ' ', false, nlohmann::json::error_handler_t::replace).substr(0, 40) +
+                               " in summary.json beside it (one of the two was edited)",
+                     name);
+    }
+    for (auto it = stored.begin(); it != stored.end(); ++it)
+        if (!recorded.contains(it.key()))
+            disagree(file, "parameter '" + it.key() + "' in /parameters is not in summary.json beside it", name);
 }
 
 // Files written before 2026-12 store the seed as text.
@@ -133,9 +219,10 @@ nlohmann::json seed_of(const H5File& f) {
 // schema_version 1): they are checked as before, unverified.
 bool check_data_file(const fs::path& file, const std::string& name, const fs::path& summary_file,
                      const nlohmann::json& summary) {
-    if (!fs::exists(file)) throw InputError(file.string() + ": missing (summary.json has no data file beside it)");
+    std::error_code ec;
+    if (!fs::exists(fs::symlink_status(file, ec))) throw InputError(file.string() + ": missing (summary.json has no data file beside it)");
     try {
-        const H5File f = H5File::open(file.string());
+        const H5File f = H5File::open(file.string()); // a regular file only (no symlink, no FIFO)
         const long version = f.require_schema("granrepro-result", 1, 3);
         if (const std::string e = f.read_string_attr("experiment"); e != name)
             throw std::runtime_error("holds results of experiment '" + e + "'");
@@ -144,7 +231,7 @@ bool check_data_file(const fs::path& file, const std::string& name, const fs::pa
         auto same = [&](const char* field, const nlohmann::json& in_h5, bool optional) {
             if (!summary.contains(field)) {
                 if (optional) return;
-                disagree(summary_file, std::string("has no '") + field + "' (data.h5 beside it has " + in_h5.dump() + ")",
+                disagree(summary_file, std::string("has no '") + field + "' (data.h5 beside it has " + json_kind(in_h5) + ")",
                          name);
             }
             if (summary[field] != in_h5)
@@ -167,7 +254,16 @@ bool check_data_file(const fs::path& file, const std::string& name, const fs::pa
             if (!summary.contains("data_h5_hash") || !summary["data_h5_hash"].is_object())
                 disagree(summary_file, "has no 'data_h5_hash' object (data.h5 beside it is of schema_version 2)", name);
         }
+        same_parameters(f, file, summary, name);
         const nlohmann::json found = data_content_hash(file); // reads every table whole
+        // Schema 3: the count of stored points (summary.json's hash covers it) against /points.
+        if (summary.value("schema_version", 0) >= 3 && summary.contains("stored_points")) {
+            const std::size_t stored = read_points_records(file).size();
+            if (summary["stored_points"] != stored)
+                disagree(summary_file, "'stored_points' is " + summary["stored_points"].dump() + " but data.h5 beside it stores " +
+                                           std::to_string(stored) + " points (/points/records; one of the two was edited)",
+                         name);
+        }
         if (hashed) {
             const nlohmann::json& recorded = summary["data_h5_hash"];
             if (recorded.value("scalars", "") != found["scalars"])
@@ -601,7 +697,9 @@ int export_experiment(const std::string& name, const fs::path& out, const fs::pa
                          " (the compact copy would replace the full data.h5); give another folder");
     existing_entry(from, Entry::Folder, "results folder");
     require_regular_file(from / "data.h5", "data.h5");
+    // Both read as untrusted (regular files under their caps, JSON depth-bounded), before a byte is written.
     const std::string summary = read_untrusted_file(from / "summary.json", kMaxSummaryBytes, "summary.json");
+    parse_untrusted_json(summary, (from / "summary.json").string());
     ensure_writable_directory(to, "--to");
     const fs::path dest = to / name;
     existing_entry(dest, Entry::Folder, "export folder"); // never written through a link
@@ -615,6 +713,7 @@ int export_experiment(const std::string& name, const fs::path& out, const fs::pa
     } catch (const std::exception& e) {
         std::error_code ec;
         fs::remove(tmp, ec);
+        if (dynamic_cast<const InputError*>(&e)) throw; // names the file already
         throw InputError("export " + name + ": " + (from / "data.h5").string() + ": " + e.what());
     }
     fs::rename(tmp, dest / "data.h5");

@@ -1,10 +1,11 @@
 #include "harness/sweep_checkpoint.hpp"
 
 #include <cstdio>
-#include <fstream>
 #include <utility>
 
+#include "core/input_error.hpp"
 #include "core/stable_hash.hpp"
+#include "core/untrusted_file.hpp"
 #include "harness/run_checkpoint.hpp"
 #include "io/staged_directory.hpp"
 
@@ -23,11 +24,13 @@ SweepCheckpoint::SweepCheckpoint(const RunContext& ctx, const std::string& label
 
 std::optional<SweepCheckpoint::Loaded> SweepCheckpoint::load(long point) const {
     const auto file = dir_ / (std::to_string(point) + ".json");
-    std::ifstream in(file);
-    if (!in) return std::nullopt;
+    std::error_code ec;
+    if (!std::filesystem::exists(std::filesystem::symlink_status(file, ec))) return std::nullopt;
     std::string problem;
     try {
-        const nlohmann::json j = nlohmann::json::parse(in);
+        // Untrusted like any file of a results folder: a symlink, a FIFO, an oversized or
+        // too deeply nested file is a damaged point, recomputed (the InputError's text says why).
+        const nlohmann::json j = parse_untrusted_json(read_untrusted_file(file, kMaxPointFileBytes, "sweep-point file"), file.string());
         if (!j.is_object() || j.value("schema", "") != kPointSchema ||
             j.value("schema_version", 0) < 1 || j.value("schema_version", 0) > 3)
             problem = "not a granrepro-sweep-point v1, v2 or v3 file";
@@ -38,8 +41,6 @@ std::optional<SweepCheckpoint::Loaded> SweepCheckpoint::load(long point) const {
         else if (!outcome_schema_.empty() && j.value("outcome_schema", "") != outcome_schema_)
             problem = "saved for another layout of the point's outcome (a build with other fields)";
         else {
-            std::lock_guard<std::mutex> lock(mutex_);
-            ++resumed_;
             Loaded loaded{j["value"], {}};
             if (const auto c = j.find("cost"); c != j.end() && c->is_object()) {
                 PointCost& k = loaded.cost;
@@ -50,8 +51,13 @@ std::optional<SweepCheckpoint::Loaded> SweepCheckpoint::load(long point) const {
                 k.part = c->value("part", "");
                 k.rank = c->value("rank", 0);
             }
+            std::lock_guard<std::mutex> lock(mutex_); // counted once the whole file has been read
+            ++resumed_;
             return loaded;
         }
+    } catch (const InputError& e) {
+        problem = e.what();
+        if (problem.starts_with(file.string() + ": ")) problem.erase(0, file.string().size() + 2);
     } catch (const std::exception&) {
         problem = "torn or not JSON";
     }

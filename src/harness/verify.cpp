@@ -1,16 +1,21 @@
 #include "harness/verify.hpp"
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
+#include <csignal>
 #include <cstdio>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <optional>
+#include <sys/stat.h>
 #include <utility>
 #include <unistd.h>
 
 #include "core/input_error.hpp"
 #include "core/provenance.hpp"
+#include "core/untrusted_file.hpp"
+#include "data/interval.hpp"
 #include "harness/claims.hpp"
 #include "harness/experiment.hpp"
 #include "harness/run_checkpoint.hpp"
@@ -132,17 +137,38 @@ bool report(const std::string& what, const Comparison& c, bool same_version) {
     return false;
 }
 
-// A folder under /tmp for the rerun's work (long runs inside a point may checkpoint), removed after.
+// A folder under /tmp for the rerun's work (long runs inside a point may checkpoint), removed
+// after. Its name carries the PID, so that one a killed verify left behind (SIGKILL runs no
+// destructor) is removed by the next verify once its process is gone.
 struct TempDir {
     fs::path path;
     TempDir() {
-        std::string tmpl = (fs::temp_directory_path() / "granrepro-verify-XXXXXX").string();
+        remove_stale();
+        std::string tmpl =
+            (fs::temp_directory_path() / ("granrepro-verify-" + std::to_string(::getpid()) + "-XXXXXX")).string();
         if (!::mkdtemp(tmpl.data())) throw std::runtime_error("cannot create a temporary folder in " + fs::temp_directory_path().string());
         path = tmpl;
     }
     ~TempDir() {
         std::error_code ec;
         fs::remove_all(path, ec);
+    }
+    // granrepro-verify-<pid>-XXXXXX folders of this user whose process no longer runs.
+    static void remove_stale() {
+        std::error_code ec;
+        for (auto it = fs::directory_iterator(fs::temp_directory_path(), ec); !ec && it != fs::directory_iterator(); it.increment(ec)) {
+            const std::string n = it->path().filename().string();
+            const std::string prefix = "granrepro-verify-";
+            if (!n.starts_with(prefix)) continue;
+            long pid = 0;
+            const std::size_t dash = n.find('-', prefix.size());
+            if (dash == std::string::npos || !parse_long(n.substr(prefix.size(), dash - prefix.size()), pid) || pid <= 0) continue;
+            struct stat st {};
+            if (::lstat(it->path().c_str(), &st) != 0 || !S_ISDIR(st.st_mode) || st.st_uid != ::getuid()) continue;
+            if (::kill(pid_t(pid), 0) == 0 || errno != ESRCH) continue; // still running (or not ours to ask)
+            std::error_code rm;
+            fs::remove_all(it->path(), rm);
+        }
     }
 };
 
@@ -172,32 +198,111 @@ std::pair<std::string, std::vector<std::string>> added_parameters(const std::str
     return {text, names};
 }
 
+// data.h5's `experiment_file` attribute: the experiments/<name>.toml text the run read, bounded
+// (kMaxTextFileBytes, kMaxTomlDepth) before it is written anywhere or parsed.
+std::string recorded_experiment_file(const fs::path& h5) {
+    const std::string where = h5.string() + ": experiment_file";
+    const H5File f = H5File::open(h5.string());
+    if (!f.has_attr("experiment_file"))
+        throw InputError(h5.string() + ": has no 'experiment_file' attribute (the experiment file the run read); cannot "
+                                       "recompute its parameters");
+    std::string text;
+    try {
+        text = f.read_string_attr("experiment_file");
+    } catch (const std::runtime_error& e) {
+        throw InputError(where + ": " + e.what());
+    }
+    check_toml_depth(text, where);
+    return text;
+}
+
 // The parameters as the run resolved them: the experiments/<name>.toml text stored in data.h5,
 // at the recorded scale, with the recorded --set overrides (and today's defaults of parameters
 // added since, named on stderr).
-ParameterSet recorded_parameters(const Experiment& exp, const fs::path& h5, const json& summary, Scale scale,
-                                 const fs::path& tmp, std::vector<std::string>& added) {
-    const H5File f = H5File::open(h5.string());
+ParameterSet recorded_parameters(const Experiment& exp, const fs::path& h5, const std::string& toml_text,
+                                 const json& summary, Scale scale, const fs::path& tmp, std::vector<std::string>& added) {
     const fs::path file = tmp / (exp.name + ".toml");
-    std::ofstream(file) << f.read_string_attr("experiment_file");
-    if (const auto [text, names] = added_parameters(exp.name, file); !text.empty()) {
-        std::ofstream(file, std::ios::app) << "\n" << text;
-        added = names;
-        std::fprintf(stderr, "granrepro: verify %s: parameters added since the results were made take today's defaults: %s\n",
-                     exp.name.c_str(), joined(names).c_str());
+    const std::string where = h5.string() + ": experiment_file";
+    std::ofstream(file) << toml_text;
+    ParameterSet params;
+    try {
+        if (const auto [text, names] = added_parameters(exp.name, file); !text.empty()) {
+            std::ofstream(file, std::ios::app) << "\n" << text;
+            added = names;
+            std::fprintf(stderr, "granrepro: verify %s: parameters added since the results were made take today's defaults: %s\n",
+                         exp.name.c_str(), joined(names).c_str());
+        }
+        params = ParameterSet::load(file, scale);
+    } catch (const std::exception& e) { // named as the attribute, not as the temporary copy
+        const std::string msg = e.what();
+        throw InputError(msg.starts_with(file.string()) ? where + msg.substr(file.string().size()) : where + ": " + msg);
     }
-    ParameterSet params = ParameterSet::load(file, scale);
     const json sets = summary.value("overridden_parameters", json::object());
-    for (auto it = sets.begin(); it != sets.end(); ++it)
-        params.set(it.key() + "=" + (it.value().is_string() ? it.value().get<std::string>() : it.value().dump()));
+    for (auto it = sets.begin(); it != sets.end(); ++it) {
+        try {
+            params.set(it.key() + "=" + (it.value().is_string() ? it.value().get<std::string>() : it.value().dump()));
+        } catch (const InputError& e) {
+            throw InputError((h5.parent_path() / "summary.json").string() + ": overridden_parameters/" + it.key() + ": " + e.what());
+        }
+    }
     exp.validate(params);
     return params;
 }
 
+// The recomputed parameters against data.h5's /parameters (what check compared with summary.json):
+// an edited stored value is a difference, never a match. Parameters added since are left out.
+bool compare_parameters(const ParameterSet& params, const fs::path& h5, const std::vector<std::string>& added,
+                        bool same_version) {
+    json stored;
+    try {
+        stored = read_stored_parameters(H5File::open(h5.string()));
+    } catch (const std::runtime_error& e) {
+        if (dynamic_cast<const InputError*>(&e)) throw;
+        throw InputError(h5.string() + ": /parameters: " + e.what());
+    }
+    json now = json::object();
+    const json all = params.to_json();
+    for (auto it = all.begin(); it != all.end(); ++it)
+        if (std::find(added.begin(), added.end(), it.key()) == added.end()) now[it.key()] = it.value()["value"];
+    for (auto it = stored.begin(); it != stored.end(); ++it) {
+        if (!now.contains(it.key())) continue;
+        const json& n = now[it.key()];
+        it.value() = stored_parameter_as(it.value(), n);
+        // Older files store an integer as a float: the same number is the same parameter.
+        if (it.value().is_number() && n.is_number() && it.value().type() != n.type() && it.value() == n) it.value() = n;
+    }
+    Comparison c;
+    compare(stored, now, "/parameters", c);
+    return report("parameters (data.h5 /parameters against its experiment_file and overridden_parameters)", c, same_version);
+}
+
+// read_summary has checked it: an integer >= 0, or digits that fit 64 bits.
 std::uint64_t recorded_seed(const json& summary) {
     const json& s = summary.at("seed");
     if (s.is_number_unsigned() || s.is_number_integer()) return s.get<std::uint64_t>();
-    return std::stoull(s.get<std::string>()); // files before 2026-12: the seed as text
+    return std::strtoull(s.get<std::string>().c_str(), nullptr, 10); // files before 2026-12: the seed as text
+}
+
+// /points/records by field, before any is used: a malformed record is bad input naming the file
+// and the field (not nlohmann's type_error, exit 1).
+void check_records(const json& records, const fs::path& h5) {
+    const std::string where = h5.string() + ": /points/records";
+    for (std::size_t i = 0; i < records.size(); ++i) {
+        const json& r = records[i];
+        auto bad = [&](const std::string& field, const std::string& want) {
+            throw InputError(where + ": record " + std::to_string(i) + (field.empty() ? "" : ": '" + field + "'") + " must be " + want);
+        };
+        if (!r.is_object()) bad("", "an object");
+        if (!r.contains("sweep") || !r["sweep"].is_string()) bad("sweep", "a string");
+        if (!r.contains("point") || !r["point"].is_number_integer() || r["point"].get<long long>() < 0) bad("point", "an integer >= 0");
+        if (!r.contains("outcome")) bad("outcome", "present");
+        if (r.contains("inputs") && !r["inputs"].is_string()) bad("inputs", "a string");
+        for (const char* f : {"resumed", "compacted", "persisted"})
+            if (r.contains(f) && !r[f].is_boolean()) bad(f, "true or false");
+        if (!r.contains("cost") || !r["cost"].is_object()) bad("cost", "an object");
+        for (const char* f : {"cpu_s", "wall_s"})
+            if (r["cost"].contains(f) && !r["cost"][f].is_number()) bad(std::string("cost/") + f, "a number");
+    }
 }
 
 json scalars_through_json(const Result& r) { return json::parse(scalars_json(r).dump()); }
@@ -218,6 +323,11 @@ void report_claims(const std::string& name, const json& before, const json& afte
     if (n == 0 && !moved.empty()) std::printf("  no claim reads the moved scalars\n");
 }
 
+// A time in summary.json (read_summary has checked: a number or null), NaN where not known.
+double seconds_of(const json& summary, const char* field) {
+    return summary.contains(field) && summary[field].is_number() ? summary[field].get<double>() : NAN;
+}
+
 void list_points(const std::string& name, const json& summary, const json& records, long version) {
     const std::string head = name + " (" + summary.value("scale", "?") + " scale, seed " + summary["seed"].dump() + ", " +
                              summary.value("code_version", "?") + ")";
@@ -227,8 +337,8 @@ void list_points(const std::string& name, const json& summary, const json& recor
         return;
     }
     std::printf("%s: %zu stored points; whole run %s s wall, %s s CPU (%s points resumed)\n", head.c_str(), records.size(),
-                number(summary.value("total_wall_time_s", NAN), "%.1f").c_str(),
-                number(summary.value("total_cpu_time_s", NAN), "%.1f").c_str(),
+                number(seconds_of(summary, "total_wall_time_s"), "%.1f").c_str(),
+                number(seconds_of(summary, "total_cpu_time_s"), "%.1f").c_str(),
                 summary.contains("resumed_points") ? summary["resumed_points"].dump().c_str() : "?");
     std::printf("%6s  %-18s %10s %10s  %-7s %s\n", "point", "sweep", "CPU s", "wall s", "resumed", "inputs");
     for (const auto& r : records) {
@@ -254,6 +364,7 @@ struct Verification {
     bool same_version = false;
     std::string versions, where;
     std::vector<std::string> added; // parameters the results' TOML lacks
+    const ParameterSet* params = nullptr; // recomputed from the stored experiment file
 };
 
 // Results written before point storage, of an experiment without a distributed sweep (under 2 s
@@ -267,6 +378,7 @@ int verify_whole(const Verification& v, RunContext& ctx) {
     std::printf("verify %s: the whole experiment (%s scale, seed %llu; results written before point storage)\n",
                 name.c_str(), to_string(v.scale), static_cast<unsigned long long>(v.seed));
     std::printf("  %s\n", v.versions.c_str());
+    const bool params_same = compare_parameters(*v.params, v.h5, v.added, v.same_version);
     const Result r = v.exp.run(ctx);
     Comparison c;
     const json before = v.summary.at("scalars"), after = scalars_through_json(r);
@@ -284,6 +396,7 @@ int verify_whole(const Verification& v, RunContext& ctx) {
         std::printf("  tables: not compared (results written before content hashes)\n");
     }
     if (!c.diffs.empty()) report_claims(name, before, after, c, v.scale);
+    same = same && params_same;
     std::printf("verify %s: %s\n", name.c_str(), same ? "reproduced" : "differs");
     return same ? 0 : 1;
 }
@@ -370,10 +483,16 @@ int verify_experiment(const VerifyOptions& opt) {
     const Experiment& exp = find_experiment(opt.experiment);
     const std::string& name = exp.name;
     Verification v(exp, opt);
-    v.summary = read_checked_summary(name, opt.out);
+    v.summary = read_checked_summary(name, opt.out); // check's validation of both files
     v.h5 = opt.out / name / "data.h5";
-    v.version = H5File::open(v.h5.string()).read_long_attr("schema_version");
+    try {
+        v.version = H5File::open(v.h5.string()).read_long_attr("schema_version");
+    } catch (const std::runtime_error& e) {
+        if (dynamic_cast<const InputError*>(&e)) throw;
+        throw InputError(v.h5.string() + ": schema_version: " + e.what());
+    }
     v.records = read_points_records(v.h5);
+    check_records(v.records, v.h5);
     if (opt.list) {
         list_points(name, v.summary, v.records, v.version);
         return 0;
@@ -384,8 +503,10 @@ int verify_experiment(const VerifyOptions& opt) {
     // A build from a dirty tree ("-dirty") is not a version: its code is not known.
     const auto dirty = [](const std::string& s) { return s.find("dirty") != std::string::npos; };
     v.same_version = recorded_version == code_version() && !dirty(recorded_version);
+    const std::string toml_text = recorded_experiment_file(v.h5); // refused before a temporary folder exists
     const TempDir tmp;
-    const ParameterSet params = recorded_parameters(exp, v.h5, v.summary, v.scale, tmp.path, v.added);
+    const ParameterSet params = recorded_parameters(exp, v.h5, toml_text, v.summary, v.scale, tmp.path, v.added);
+    v.params = &params;
     RunContext ctx{params, v.scale, v.seed, opt.threads, true, tmp.path / "work", 1e12};
     v.where = (opt.out / name).string();
     v.versions = "code: recorded " + recorded_version + ", now " + code_version() +
@@ -404,6 +525,7 @@ int verify_experiment(const VerifyOptions& opt) {
                 rerun.point, v.records.size(), rerun.sweep.c_str(), to_string(v.scale), static_cast<unsigned long long>(v.seed),
                 number(recorded_cpu >= 0 ? recorded_cpu : NAN, "%.3g").c_str());
     std::printf("  %s\n", v.versions.c_str());
+    const bool params_same = compare_parameters(params, v.h5, v.added, v.same_version);
     std::fflush(stdout);
     std::optional<Result> result;
     try {
@@ -411,7 +533,7 @@ int verify_experiment(const VerifyOptions& opt) {
     } catch (const PointRerunDone&) {
     }
     if (!rerun.computed) throw std::runtime_error("verify " + name + ": the experiment ran no sweep point");
-    const bool same = compare_point(v, rerun, rec, result);
+    const bool same = compare_point(v, rerun, rec, result) && params_same;
     std::printf("verify %s: point %ld %s\n", name.c_str(), rerun.point,
                 same ? (v.same_version ? "reproduced bit for bit" : "reproduced, value by value") : "differs");
     return same ? 0 : 1;

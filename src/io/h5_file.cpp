@@ -3,7 +3,11 @@
 #include <algorithm>
 
 #include <cctype>
+#include <cstring>
+#include <memory>
 #include <stdexcept>
+
+#include "core/untrusted_file.hpp"
 
 #include "io/write_error.hpp"
 
@@ -112,9 +116,23 @@ template <> hid_t native_type<std::uint8_t>() { return H5T_NATIVE_UINT8; }
 template <> hid_t native_type<std::uint32_t>() { return H5T_NATIVE_UINT32; }
 template <> hid_t native_type<std::uint64_t>() { return H5T_NATIVE_UINT64; }
 
+// An attribute read from a results folder is untrusted: its dataspace and type are checked before
+// a value is read into a buffer sized for one (an array read there overflowed the heap).
+H5Object open_single_attr(hid_t obj, const std::string& name) {
+    H5Object a(check(H5Aopen(obj, name.c_str(), H5P_DEFAULT), "open attr " + name), &H5Aclose);
+    const H5Object sp(check(H5Aget_space(a.id()), "attr space " + name), &H5Sclose);
+    if (H5Sget_simple_extent_npoints(sp.id()) != 1 || H5Sget_simple_extent_type(sp.id()) == H5S_NULL)
+        throw std::runtime_error("attribute " + name + " holds " + std::to_string(H5Sget_simple_extent_npoints(sp.id())) +
+                                 " values, not one");
+    return a;
+}
+
 template <class T>
 T read_scalar_attr(hid_t obj, const std::string& name) {
-    H5Object a(check(H5Aopen(obj, name.c_str(), H5P_DEFAULT), "open attr " + name), &H5Aclose);
+    const H5Object a = open_single_attr(obj, name);
+    const H5Object t(check(H5Aget_type(a.id()), "attr type " + name), &H5Tclose);
+    if (const H5T_class_t c = H5Tget_class(t.id()); c != H5T_INTEGER && c != H5T_FLOAT)
+        throw std::runtime_error("attribute " + name + " is not a number");
     T v = 0;
     check(H5Aread(a.id(), native_type<T>(), &v), "read attr " + name);
     return v;
@@ -147,6 +165,9 @@ H5File H5File::create(const std::string& path) {
 }
 
 H5File H5File::open(const std::string& path) {
+    // HDF5 opens by name and would follow a symlink or block on a FIFO: every file opened here is
+    // read from a results folder or a checkpoint, so only a regular file is opened.
+    require_regular_file(path, "HDF5 file");
     silence_hdf5();
     return H5File(check(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), "open " + path), &H5Fclose);
 }
@@ -245,6 +266,7 @@ template std::vector<std::int32_t> H5Object::read_array(const std::string&) cons
 template std::vector<std::uint8_t> H5Object::read_array(const std::string&) const;
 template std::vector<std::uint32_t> H5Object::read_array(const std::string&) const;
 template std::vector<std::uint64_t> H5Object::read_array(const std::string&) const;
+template std::vector<long> H5Object::read_array(const std::string&) const;
 
 long H5Object::read_long_attr(const std::string& name) const { return read_scalar_attr<long>(id_, name); }
 std::uint64_t H5Object::read_u64_attr(const std::string& name) const {
@@ -252,15 +274,37 @@ std::uint64_t H5Object::read_u64_attr(const std::string& name) const {
 }
 double H5Object::read_double_attr(const std::string& name) const { return read_scalar_attr<double>(id_, name); }
 
-std::string H5Object::read_text(const std::string& name) const {
+std::string H5Object::read_text(const std::string& name, std::size_t max_bytes) const {
+    // Sized before it is read: a few kB of deflated zeros expand to any size.
+    if (dataset_size(name) > max_bytes)
+        throw std::runtime_error(name + " is larger than its cap of " + std::to_string(max_bytes >> 20) + " MiB (docs/schema.md)");
     const std::vector<unsigned char> bytes = read_bytes(name);
     return {bytes.begin(), bytes.end()};
 }
 
+// A scalar string, fixed-length (what we write) or variable-length (h5py's default), of at most
+// kMaxTextFileBytes; anything else (an array of strings, a number, a huge string) is refused.
 std::string H5Object::read_string_attr(const std::string& name) const {
-    H5Object a(check(H5Aopen(id_, name.c_str(), H5P_DEFAULT), "open attr " + name), &H5Aclose);
-    H5Object t(H5Aget_type(a.id()), &H5Tclose);
-    std::string s(H5Tget_size(t.id()), '\0');
+    const H5Object a = open_single_attr(id_, name);
+    const H5Object t(check(H5Aget_type(a.id()), "attr type " + name), &H5Tclose);
+    if (H5Tget_class(t.id()) != H5T_STRING) throw std::runtime_error("attribute " + name + " is not a string");
+    const std::string too_large = "attribute " + name + " is larger than its cap of " +
+                                  std::to_string(kMaxTextFileBytes >> 20) + " MiB (docs/schema.md)";
+    if (check(H5Tis_variable_str(t.id()), "attr type " + name) > 0) {
+        const H5Object mem(check(H5Tcopy(H5T_C_S1), "string type"), &H5Tclose);
+        check(H5Tset_size(mem.id(), H5T_VARIABLE), "string type");
+        check(H5Tset_cset(mem.id(), H5Tget_cset(t.id())), "string type");
+        char* p = nullptr;
+        check(H5Aread(a.id(), mem.id(), &p), "read attr " + name);
+        const std::unique_ptr<char, herr_t (*)(void*)> owned(p, &H5free_memory);
+        if (!p) return {};
+        const std::size_t n = ::strnlen(p, kMaxTextFileBytes + 1);
+        if (n > kMaxTextFileBytes) throw std::runtime_error(too_large);
+        return {p, n};
+    }
+    const std::size_t size = H5Tget_size(t.id());
+    if (size > kMaxTextFileBytes) throw std::runtime_error(too_large);
+    std::string s(size, '\0');
     check(H5Aread(a.id(), t.id(), s.data()), "read attr " + name);
     while (!s.empty() && s.back() == '\0') s.pop_back();
     return s;

@@ -43,7 +43,11 @@ public:
 
     std::vector<double> read_dataset(const std::string& name) const { return read_array<double>(name); }
     std::vector<unsigned char> read_bytes(const std::string& name) const { return read_array<unsigned char>(name); }
-    std::string read_text(const std::string& name) const; // what compressed_text wrote
+    // What compressed_text wrote; refused (std::runtime_error) past max_bytes, before it is read.
+    std::string read_text(const std::string& name, std::size_t max_bytes) const;
+    // A scalar string attribute (fixed or variable length) of at most kMaxTextFileBytes; any other
+    // attribute (an array, a number) is refused with std::runtime_error naming it. The number
+    // readers likewise refuse anything but one number.
     std::string read_string_attr(const std::string& name) const;
     double read_double_attr(const std::string& name) const;
     long read_long_attr(const std::string& name) const;
@@ -81,7 +85,8 @@ private:
 class H5File : public H5Object {
 public:
     static H5File create(const std::string& path); // truncates
-    static H5File open(const std::string& path);   // read-only
+    // Read-only; a symlink or a non-regular file is refused with InputError (core/untrusted_file.hpp).
+    static H5File open(const std::string& path);
     // Flushes and closes; throws WriteError if the data did not reach the file.
     void close();
 

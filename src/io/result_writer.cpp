@@ -8,8 +8,10 @@
 #include <map>
 #include <sstream>
 
+#include "core/input_error.hpp"
 #include "core/provenance.hpp"
 #include "core/stable_hash.hpp"
+#include "core/untrusted_file.hpp"
 #include "io/durable_file.hpp"
 #include "io/h5_file.hpp"
 
@@ -338,7 +340,57 @@ void run_totals(Provenance& prov, const SweepPoints& points, double wall_s, doub
 nlohmann::json read_points_records(const std::filesystem::path& h5) {
     const H5File f = H5File::open(h5.string());
     if (!f.has("points")) return nlohmann::json::array();
-    return nlohmann::json::parse(f.open_group("points").read_text("records"));
+    const std::string where = h5.string() + ": /points/records";
+    std::string text;
+    try {
+        text = f.open_group("points").read_text("records", kMaxPointFileBytes);
+    } catch (const std::runtime_error& e) {
+        throw InputError(where + ": cannot be read (" + e.what() + ")");
+    }
+    nlohmann::json records = parse_untrusted_json(text, where);
+    if (!records.is_array()) throw InputError(where + ": not a JSON array of point records");
+    return records;
+}
+
+namespace {
+// One dataset of /parameters as written by write_result_h5: scalar float64 (real), scalar int64
+// (integer), scalar uint8 (flag), 1-D float64 (list of reals). Files before 2026-12 stored every
+// one as a 1-D dataset; read alike, as an array (see stored_parameter_as).
+nlohmann::json stored_parameter(const H5Object& g, const std::string& name) {
+    const H5Object d = open_dataset(g, name);
+    const H5Object t(H5Dget_type(d.id()), &H5Tclose);
+    const H5Object sp(H5Dget_space(d.id()), &H5Sclose);
+    if (t.id() < 0 || sp.id() < 0) throw std::runtime_error("parameter " + name + ": unreadable");
+    const H5S_class_t shape = H5Sget_simple_extent_type(sp.id());
+    const H5T_class_t kind = H5Tget_class(t.id());
+    const bool scalar = shape == H5S_SCALAR;
+    const bool list = shape == H5S_SIMPLE && H5Sget_simple_extent_ndims(sp.id()) == 1 &&
+                      H5Sget_simple_extent_npoints(sp.id()) <= (1 << 20);
+    if ((!scalar && !list) || (kind != H5T_FLOAT && kind != H5T_INTEGER))
+        throw std::runtime_error("parameter " + name + " in /parameters is neither a number, a flag nor a list of numbers");
+    nlohmann::json values;
+    if (kind == H5T_FLOAT) values = g.read_dataset(name);
+    else if (H5Tget_size(t.id()) == 1 && H5Tget_sign(t.id()) == H5T_SGN_NONE)
+        for (const std::uint8_t b : g.read_array<std::uint8_t>(name)) values.push_back(b != 0);
+    else values = g.read_array<long>(name);
+    if (!values.is_array()) values = nlohmann::json::array();
+    return scalar ? values.at(0) : values;
+}
+} // namespace
+
+nlohmann::json stored_parameter_as(const nlohmann::json& stored, const nlohmann::json& reference) {
+    if (stored.is_array() && stored.size() == 1 && !reference.is_array()) return stored[0];
+    return stored;
+}
+
+nlohmann::json read_stored_parameters(const H5Object& root) {
+    if (!root.has("parameters")) throw std::runtime_error("has no /parameters group");
+    const H5Object g = root.open_group("parameters");
+    nlohmann::json out = nlohmann::json::object();
+    for (const auto& name : g.children()) out[name] = stored_parameter(g, name);
+    for (const auto& a : g.attribute_names()) // text parameters, beside each parameter's source
+        if (!a.ends_with(".source") && a != "schema" && a != "schema_version") out[a] = g.read_string_attr(a);
+    return out;
 }
 
 nlohmann::json data_content_hash(const Result& result) {
@@ -375,7 +427,7 @@ nlohmann::json data_content_hash(const std::filesystem::path& h5) {
     if (f.has("points")) {
         // A compact copy whose large arrays were digested vouches with the full records' hash.
         const H5Object g = f.open_group("points");
-        const std::string records = g.read_text("records");
+        const std::string records = g.read_text("records", kMaxPointFileBytes);
         out["points"] = g.has_attr("full_records_hash") ? g.read_string_attr("full_records_hash") : points_hash(records);
     }
     return out;
@@ -403,10 +455,12 @@ std::vector<std::string> write_compact_result_h5(const std::filesystem::path& sr
         const H5Object pin = in.open_group("points");
         const H5Object pout = out.group("points");
         for (const auto& a : pin.attribute_names()) pin.copy_attr_to(a, pout);
-        const std::string text = pin.read_text("records");
-        nlohmann::json records = nlohmann::json::parse(text);
+        const std::string text = pin.read_text("records", kMaxPointFileBytes);
+        nlohmann::json records = parse_untrusted_json(text, src.string() + ": /points/records");
+        if (!records.is_array()) throw std::runtime_error("/points/records: not a JSON array");
         bool any = false;
         for (auto& r : records) {
+            if (!r.is_object()) throw std::runtime_error("/points/records: a record is not a JSON object");
             bool changed = false;
             nlohmann::json c = compact_outcome(r["outcome"], kMaxPointArrayValues, &changed);
             if (!changed) continue;

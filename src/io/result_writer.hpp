@@ -28,6 +28,8 @@
 
 namespace granrepro {
 
+class H5Object;
+
 struct Provenance {
     std::string experiment, paper, experiment_file_text;
     Scale scale = Scale::Quick;
@@ -58,8 +60,16 @@ std::string points_hash(const std::string& records_text);
 // spans of the points each computed (start of its first to end of its last), so concurrent
 // shards count once; their serial parts outside points are not known and left out.
 void run_totals(Provenance& prov, const SweepPoints& points, double wall_s, double cpu_s);
-// The stored points of a result file (empty if it has none: written before schema 3).
+// The stored points of a result file (empty if it has none: written before schema 3), read
+// bounded (kMaxPointFileBytes, kMaxJsonDepth); refused (InputError) if they are not an array.
 nlohmann::json read_points_records(const std::filesystem::path& h5);
+// data.h5's /parameters as {name: value} (reals and integers as numbers, flags as booleans, lists
+// as arrays, text as strings); refused (std::runtime_error naming the parameter) if /parameters is
+// missing or holds a value of another layout.
+nlohmann::json read_stored_parameters(const H5Object& root);
+// A stored value as a parameter of `reference`'s kind: files before 2026-12 stored a number as a
+// 1-D dataset of one value.
+nlohmann::json stored_parameter_as(const nlohmann::json& stored, const nlohmann::json& reference);
 
 // summary_hash: summary_content_hash() of the summary.json written beside it (root attribute
 // summary_json_hash).
