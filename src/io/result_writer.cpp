@@ -448,7 +448,13 @@ std::vector<std::string> write_compact_result_h5(const std::filesystem::path& sr
     const H5File in = H5File::open(src.string());
     in.require_schema("granrepro-result", 1, 3);
     H5File out = H5File::create(dst.string());
-    for (const auto& a : in.attribute_names()) in.copy_attr_to(a, out);
+    // A compact copy of a compact copy (export of paper_figures/): its own omissions carry over
+    // into the new listing, the two compaction attributes are written once, below.
+    std::string listing = in.has_attr("omitted_tables") ? in.read_string_attr("omitted_tables") : "none";
+    if (listing == "none") listing.clear();
+    if (in.has_attr("compacted_to_max_values")) max_values = std::min<std::size_t>(max_values, std::size_t(std::max(0L, in.read_long_attr("compacted_to_max_values"))));
+    for (const auto& a : in.attribute_names())
+        if (a != "omitted_tables" && a != "compacted_to_max_values") in.copy_attr_to(a, out);
     for (const char* g : {"parameters", "scalars", "provenance"})
         if (in.has(g)) in.copy_to(g, out);
     if (in.has("points")) {
@@ -479,7 +485,6 @@ std::vector<std::string> write_compact_result_h5(const std::filesystem::path& sr
     const H5Object tables_in = in.open_group("tables");
     const H5Object tables_out = out.group("tables");
     std::vector<std::string> omitted;
-    std::string listing;
     for (const auto& t : tables_in.children()) {
         const H5Object g = tables_in.open_group(t);
         std::size_t n = 0;

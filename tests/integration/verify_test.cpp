@@ -90,6 +90,15 @@ TEST(Verify, FreshResultsReproduceBitForBitAndListTheirCosts) {
     const TempPath exported("verify-fresh-export");
     ASSERT_EQ(run("export brake-failure --out " + out.string() + " --to " + exported.string()).code, 0);
     EXPECT_EQ(run("verify brake-failure --point 2 --out " + exported.string()).code, 0);
+    // A copy of the copy (a reviewer exporting paper_figures/): once exit 2 "attribute already
+    // exists" (omitted_tables); now its omissions carry over and check accepts it.
+    const TempPath again("verify-fresh-export-again");
+    const Outcome twice = run("export brake-failure --max-table-values 10 --out " + exported.string() + " --to " + again.string());
+    ASSERT_EQ(twice.code, 0) << twice.err;
+    EXPECT_EQ(run("check brake-failure --out " + again.string()).code, 0);
+    const H5File f = H5File::open((again / "brake-failure" / "data.h5").string());
+    EXPECT_NE(f.read_string_attr("omitted_tables"), "none");
+    EXPECT_EQ(f.read_long_attr("compacted_to_max_values"), 10);
 }
 
 // Broken on purpose: a stored value that the code does not compute is named, exit 1; a stored
