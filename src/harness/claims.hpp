@@ -86,4 +86,9 @@ std::string format_deviation_explanations(const std::vector<ClaimResult>& result
 nlohmann::json claims_to_json(const std::vector<ClaimResult>& results);
 bool all_pass(const std::vector<ClaimResult>& results); // known deviations and skips do not fail
 
+// Claims carry no figure of their own; their `source` cites the paper's figures ("text below
+// Fig. 4", "Figs. 4, 5", "Fig. 10(a)"). True if it cites the figure numbered like the end of
+// `figure_id` ("schaefer95-fig4", "luding98-fig02"): what `figure` shows of a run's claims.
+bool cites_figure(const Claim& claim, const std::string& figure_id);
+
 } // namespace granrepro
