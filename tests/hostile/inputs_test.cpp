@@ -133,6 +133,14 @@ TEST(HostileInputsLists, DeclaredNameDecimalsDecideWhatIsARepeat) {
     EXPECT_EQ(run_argv({"impact-parameter", "--dry-run", "--set", "restitutions=0.81,0.84"}).code, 0);
 }
 
+// Two lists that share a time: pipe-arching records a frame of both once and names its table
+// pnc_t0.050 once, so the after-arch times would shift against their list.
+TEST(HostileInputsLists, PipeArchingBeforeAndAfterTimesMustNotShareATime) {
+    expect_refusal(run_argv({"pipe-arching", "--dry-run", "--set", "dist_times_after=0.05,0.065"}), 2,
+                   {"dist_times_before 0.05 s and dist_times_after 0.05 s", "must not share a time"});
+    EXPECT_EQ(run_argv({"pipe-arching", "--dry-run", "--set", "dist_times_after=0.055,0.065"}).code, 0);
+}
+
 // Issue 40 §4: emergency-brake --set vx_list=16 (and 24) ran past 60 s while --dry-run said 0: at
 // the default kN_scan entry 200 the grain goes through the wall and every shot runs to max_steps.
 TEST(HostileInputsEmergencyBrake, AShotThroughTheWallIsRefusedFastWithAndWithoutDryRun) {
