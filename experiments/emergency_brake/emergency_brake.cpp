@@ -65,6 +65,23 @@ void validate(const ParameterSet& p) {
         p.reject(std::vector<std::string>{"vy_max", "vx_list", "kN_scan", "k_N", "m_free", "steps_per_contact"},
                  "vy_max and every v_x^i must be at most d_wall / (2 dt) = " + number_text(0.5 * s.d_wall / dt_max) +
                      " m/s (dt = " + number_text(dt_max) + " s at the softest k_N): faster grains skip through the wall");
+    // A shot whose grain can reach a wall grain's centre goes through the wall and never comes
+    // back: it runs to max_steps (vx_list=16 with the default kN_scan entry 200 took 22 s for five
+    // such shots, issue 40) and its Δv_y means nothing, so its cost has no bound. The head-on
+    // overlap peaks below v_x sqrt(m_free/k_N) (undamped; damping only lowers it).
+    auto refuse_piercing = [&](double vx, double k, const char* law) {
+        const double overlap = vx * std::sqrt(s.m_free / k);
+        if (!(overlap < s.reach()))
+            p.reject(std::vector<std::string>{"vx_list", law, "m_free", "d_free", "d_wall"},
+                     "at v_x^i = " + number_text(vx) + " m/s and k_N = " + number_text(k) + " N/m (" + law +
+                         ") the head-on overlap reaches v_x sqrt(m_free/k_N) = " + number_text(overlap) +
+                         " m, not below (d_free + d_wall)/2 = " + number_text(s.reach()) +
+                         " m: the grain can pass through the wall and its shots run to max_steps (" +
+                         number_text(double(ImpactSetup{}.max_steps)) + " steps each); v_x^i must be below " +
+                         number_text(s.reach() * std::sqrt(k / s.m_free)) + " m/s there");
+    };
+    refuse_piercing(*vx_max, s.k_N, "k_N");
+    for (double k : s.kN_scan) refuse_piercing(s.vx_list.front(), k, "kN_scan");
     // The slowest shot: the smallest v_x^i from x_start to the wall and a diameter into it, at
     // the time step of the stiffest law of the k_N scan.
     limit_shot_steps(p, {"x_start", "d_free", "vx_list", "kN_scan", "k_N", "m_free", "steps_per_contact"},

@@ -58,6 +58,14 @@ struct PipeArching {
         on_grid("snapshot_times", s.snapshot_times, fdt);
         on_grid("dist_times_before", s.dist_times_before, s.dist_dt);
         on_grid("dist_times_after", s.dist_times_after, s.dist_dt);
+        // A frame of both lists is recorded once (compute.cpp) and its table pnc_<time> would be
+        // one name: the Fig. 14 (b) times would shift against their list, or the run fail at its end.
+        for (double b : s.dist_times_before)
+            for (double a : s.dist_times_after)
+                if (frame_of(a, fdt) == frame_of(b, fdt) || tlabel(a) == tlabel(b))
+                    p.reject(std::vector<std::string>{"dist_times_before", "dist_times_after"},
+                             "dist_times_before " + number_text(b) + " s and dist_times_after " + number_text(a) +
+                                 " s are one frame or one name (" + tlabel(a) + "); the two lists must not share a time");
         if (s.dist_dt < fdt) p.reject("dist_dt", "must be >= frame_dt");
         // Each window becomes a frame count (long(ceil(t / frame_dt))): bounded by the run's frames
         // (limited above), it cannot overflow (t_detect_min = 1e308 crashed the run).

@@ -22,6 +22,7 @@
 #include "core/spawn.hpp"
 #include "harness/mpi_world.hpp"
 #include "data/interval.hpp"
+#include "data/printable.hpp"
 #include "harness/runner.hpp"
 #include "io/staged_directory.hpp"
 #include "io/write_error.hpp"
@@ -187,7 +188,19 @@ int run_all(const RunOptions& base) {
     VerdictCounts totals;
     // A failed claim (1) outranks a figure not drawn (kFigureNotDrawn).
     for (const auto& e : experiment_registry()) {
-        const int r = run_experiment(e.name, base, &totals);
+        // A rerun after an interruption goes on where it stopped: an experiment whose complete
+        // results of this very run are in place is checked, not computed again (every rank
+        // reads the same files, so all skip it together).
+        int r = 0;
+        if (complete_result(e.name, base)) {
+            if (mpi::rank() != 0) continue;
+            if (!base.quiet)
+                std::fprintf(stderr, "%s: complete results of this run in %s (same scale, seed, physics and parameters): not rerun\n",
+                             e.name.c_str(), (base.out / e.name).c_str());
+            r = check_experiment(e.name, base.out, {}, &totals);
+        } else {
+            r = run_experiment(e.name, base, &totals);
+        }
         rc = rc == 1 || r == 1 ? 1 : std::max(rc, r);
     }
     if (mpi::rank() == 0) std::printf("%stotals: %s\n", totals.headline().c_str(), totals.text().c_str());
@@ -236,7 +249,9 @@ void add_experiment_commands(CLI::App& app, CommonFlags& common, int& rc) {
         CLI::App* sub = app.add_subcommand(e.name, description);
         common.add_to(sub);
         if (e.distributed) common.add_points_to(sub);
-        sub->footer([name = e.name] { return parameter_help(name) + kExitCodes; });
+        // CLI11 prints a subcommand's footer function, then the footer it inherited from the
+        // app (the data-file and exit-code paragraphs): the exit codes come from there, once.
+        sub->footer([name = e.name] { return parameter_help(name); });
         sub->callback([&, name = e.name] {
             const RunOptions o = common.options();
             rc = common.dry_run ? dry_run(name, o) : run_experiment(name, o);
@@ -424,13 +439,15 @@ int parse_and_run(CLI::App& app, int argc, char** argv, const int& rc) {
         return app.exit(e);
     } catch (const CLI::ParseError& e) {
         std::string msg = e.what();
-        std::fprintf(stderr, "granrepro: %s\n", msg.substr(0, msg.find('\n')).c_str());
+        std::fprintf(stderr, "granrepro: %s\n", printable(msg.substr(0, msg.find('\n'))).c_str());
         return 2;
     } catch (const InputError& e) {
-        std::fprintf(stderr, "granrepro: %s\n", e.what());
+        // A refusal may quote a file's text (a claim id, a key, a path): one line, inert on a
+        // terminal whatever the file holds.
+        std::fprintf(stderr, "granrepro: %s\n", printable(e.what()).c_str());
         return 2;
     } catch (const WriteError& e) {
-        std::fprintf(stderr, "granrepro: error: %s\n", e.what());
+        std::fprintf(stderr, "granrepro: error: %s\n", printable(e.what()).c_str());
         // Not `return`: HDF5's exit handler would retry closing a file whose close failed for
         // want of space, and can crash doing so (rc 139 after the line above).
         std::fflush(nullptr);
@@ -442,7 +459,7 @@ int parse_and_run(CLI::App& app, int argc, char** argv, const int& rc) {
         std::fflush(stderr);
         return e.exit_code();
     } catch (const std::exception& e) {
-        std::fprintf(stderr, "granrepro: error: %s\n", e.what());
+        std::fprintf(stderr, "granrepro: error: %s\n", printable(e.what()).c_str());
         return 1;
     }
     return rc;

@@ -55,6 +55,10 @@ Interval Interval::parse(const std::string& text) {
     else if (!parse_double(a, iv.lo)) throw InputError("range '" + text + "': bad lower bound");
     if (b == "inf") iv.hi = inf;
     else if (!parse_double(b, iv.hi)) throw InputError("range '" + text + "': bad upper bound");
+    // "(1, 0)" holds no number: every value, the default included, would be refused with a
+    // message that blames the value.
+    if (iv.lo > iv.hi || (iv.lo == iv.hi && (iv.lo_open || iv.hi_open)))
+        throw InputError("range '" + text + "' is empty (written backwards? the lower bound comes first)");
     return iv;
 }
 

@@ -1,7 +1,10 @@
 #include "data/parameter_set.hpp"
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <sstream>
 #include <toml.hpp>
 
@@ -50,6 +53,45 @@ std::string toml_text(const toml::value& v) {
         return out;
     }
     return "?";
+}
+
+// Why `text` is no usable number although it reads as one, or "": strtod refuses a magnitude
+// beyond the doubles (1e400) and one below the smallest normal double (1e-308, subnormal: its
+// precision is gone and a product with it underflows to 0), where the plain refusal "must be a
+// number in [0, inf)" would leave the user guessing.
+std::string number_problem(const std::string& text) {
+    const std::string t = trim(text);
+    if (t.empty()) return {};
+    errno = 0;
+    char* end = nullptr;
+    const double x = std::strtod(t.c_str(), &end);
+    if (end != t.c_str() + t.size() || errno != ERANGE) return {};
+    if (std::abs(x) > 1) return t + " is beyond the largest double (~1.8e308)";
+    return t + " is subnormal (its magnitude is below 2.2e-308, the smallest normal double; use 0 or a normal number)";
+}
+
+// The entries of a list as the run names them: tables and scalars carry each entry's value in
+// their name ("collapse_beta100", "impacts_vx0.3"), written by number_text (6 significant
+// digits) or, where the experiment file says so (name_decimals), with that many decimals
+// ("r0.80"). Two entries with one name would make one table twice and fail the run at its end.
+std::string entry_name(const Parameter& p, double x) {
+    if (p.name_decimals < 0) return number_text(x);
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.*f", p.name_decimals, x);
+    return buf;
+}
+
+// "" or why the list repeats an entry (as the run names them).
+std::string repeated_entry(const Parameter& p) {
+    for (std::size_t i = 0; i < p.reals.size(); ++i)
+        for (std::size_t j = 0; j < i; ++j)
+            if (entry_name(p, p.reals[i]) == entry_name(p, p.reals[j]))
+                return "entries " + fmt(p.reals[j]) + " and " + fmt(p.reals[i]) + " are both named '" +
+                       entry_name(p, p.reals[i]) + "' in the results (" +
+                       (p.name_decimals < 0 ? std::string("6 significant digits")
+                                            : std::to_string(p.name_decimals) + " decimals") +
+                       "); each entry must differ there";
+    return {};
 }
 
 // A finite number in p's range.
@@ -153,6 +195,110 @@ std::string Parameter::allowed_text() const {
     return out;
 }
 
+namespace {
+
+// The numbers of a default as written: 1e400 (read by toml11 as 1.8e308) or 1e-400 (as 0) is
+// refused at its line, as is NaN, which no range holds and no run can use.
+void check_default_numbers(const toml::value& v, const std::string& file, const std::string& what) {
+    if (v.is_array()) {
+        for (const auto& e : v.as_array()) check_default_numbers(e, file, what);
+        return;
+    }
+    if (!v.is_floating()) return;
+    if (std::isnan(toml_number(v, file, what)))
+        throw InputError(toml_place(file, v) + ": " + what + " is NaN; a default must be a number");
+}
+
+// One [parameters.<name>] table: its texts, range, choices and the default at `scale`. Every
+// refusal starts with "<file>:<line>" of the offending value.
+Parameter read_parameter(const std::string& where, const std::string& name, const toml::value& spec, Scale scale) {
+    Parameter p;
+    p.name = name;
+    const std::string ctx = toml_place(where, spec) + ": parameter " + name;
+    if (!spec.is_table()) throw InputError(ctx + ": must be a table");
+    const auto& t = spec.as_table();
+    // file:line of one key's value, and the parameter named.
+    auto at = [&](const toml::value& v) { return toml_place(where, v) + ": parameter " + name; };
+    for (const auto& [key, v] : t)
+        if (key != "unit" && key != "source" && key != "help" && key != "range" && key != "choices" &&
+            key != "value" && key != "quick" && key != "paper" && key != "name_decimals" && key != "calibrated_on")
+            throw InputError(at(v) + ": unknown key '" + key +
+                             "'; allowed: unit, source, help, range, choices, value, quick, paper, name_decimals, calibrated_on");
+    auto str = [&](const char* key) -> std::string {
+        const auto it = t.find(key);
+        if (it == t.end()) return {};
+        if (!it->second.is_string()) throw InputError(at(it->second) + ": '" + key + "' must be a string");
+        return it->second.as_string().str;
+    };
+    p.unit = str("unit");
+    p.source = str("source");
+    p.help = str("help");
+    if (p.unit.empty() || p.source.empty()) throw InputError(ctx + ": every parameter needs a unit and a source");
+    const std::string range = str("range");
+    if (!range.empty()) {
+        p.has_range = true;
+        try {
+            p.range = Interval::parse(range);
+        } catch (const InputError& e) {
+            throw InputError(at(t.at("range")) + ": " + e.what());
+        }
+    }
+    if (t.count("choices")) {
+        try {
+            p.choices = toml::find<std::vector<std::string>>(spec, "choices");
+        } catch (const std::exception& e) {
+            throw InputError(toml_error_line(where, e.what()) + " (parameter " + name + ": choices must be a list of strings)");
+        }
+    }
+    if (t.count("name_decimals")) {
+        const toml::value& d = t.at("name_decimals");
+        if (!d.is_integer() || d.as_integer() < 0 || d.as_integer() > 17)
+            throw InputError(at(d) + ": name_decimals must be an integer in [0, 17] (the decimals of each entry in the run's names)");
+        p.name_decimals = int(d.as_integer());
+    }
+    const toml::value* quick = nullptr;
+    const toml::value* paper = nullptr;
+    if (t.count("value")) quick = paper = &t.at("value");
+    if (t.count("quick")) quick = &t.at("quick");
+    if (t.count("paper")) paper = &t.at("paper");
+    if (!quick || !paper) throw InputError(ctx + ": needs 'value' or both 'quick' and 'paper'");
+    const toml::value& chosen = scale == Scale::Quick ? *quick : *paper;
+    for (const toml::value* v : {quick, paper}) {
+        try {
+            kind_of(*v);
+        } catch (const InputError&) {
+            throw InputError(at(*v) + ": value has an unsupported type (a number, an integer, a string, true/false "
+                                      "or an array of numbers)");
+        }
+        check_default_numbers(*v, where, "parameter " + name);
+        if (v->is_array() && v->as_array().empty()) throw InputError(at(*v) + ": value is an empty array");
+    }
+    p.kind = kind_of(chosen);
+    if (p.kind == Parameter::Kind::Integer && kind_of(scale == Scale::Quick ? *paper : *quick) == Parameter::Kind::Real)
+        p.kind = Parameter::Kind::Real; // 1 and 1.5 at the two scales: a real parameter
+    for (const toml::value* v : {quick, paper}) {
+        // A range makes it a number (or a list of numbers): "abc" or true there is a typo,
+        // not a text parameter that the experiment would then read as a number.
+        const bool numeric = v->is_floating() || v->is_integer() ||
+                             (v->is_array() && std::all_of(v->as_array().begin(), v->as_array().end(), [](const auto& e) {
+                                  return e.is_floating() || e.is_integer();
+                              }));
+        if (p.has_range && !numeric)
+            throw InputError(at(*v) + ": value " + toml_text(*v) + " must be a number or a list of numbers (it has range " +
+                             p.range.text + ")");
+    }
+    p.quick_text = toml_text(*quick);
+    p.paper_text = toml_text(*paper);
+    if (!assign(p, toml_text(chosen)))
+        throw InputError(at(chosen) + ": default " + toml_text(chosen) + " is not " + p.allowed_text());
+    if (const std::string why = repeated_entry(p); !why.empty()) throw InputError(at(chosen) + ": default: " + why);
+    p.line = long(spec.location().line());
+    p.value_line = long(chosen.location().line());
+    return p;
+}
+
+} // namespace
+
 ParameterSet ParameterSet::load(const std::filesystem::path& file, Scale scale) {
     const std::string where = file.string();
     const toml::value root = parse_toml_file(file, "experiment file");
@@ -162,84 +308,13 @@ ParameterSet ParameterSet::load(const std::filesystem::path& file, Scale scale) 
     for (const auto& [key, v] : root.as_table())
         if (key != "name" && key != "paper" && key != "description" && key != "figure" && key != "parameters" &&
             key != "outputs" && key != "readings")
-            throw InputError(where + " (line " + std::to_string(v.location().line()) + "): unknown key '" + key +
+            throw InputError(toml_place(where, v) + ": unknown key '" + key +
                              "'; allowed: name, paper, description, [[figure]], [parameters.<name>], [outputs], [readings.<name>]");
     if (!root.contains("parameters") || !root.at("parameters").is_table())
         throw InputError(where + ": missing [parameters] table");
     std::vector<std::pair<std::uint_least32_t, Parameter>> ordered;
-    for (const auto& [name, spec] : root.at("parameters").as_table()) {
-        Parameter p;
-        p.name = name;
-        const std::string ctx = where + ": parameter " + name;
-        if (!spec.is_table()) throw InputError(ctx + ": must be a table");
-        const auto& t = spec.as_table();
-        for (const auto& [key, v] : t)
-            if (key != "unit" && key != "source" && key != "help" && key != "range" && key != "choices" &&
-                key != "value" && key != "quick" && key != "paper" && key != "calibrated_on")
-                throw InputError(ctx + " (line " + std::to_string(v.location().line()) + "): unknown key '" + key +
-                                 "'; allowed: unit, source, help, range, choices, value, quick, paper, calibrated_on");
-        auto str = [&](const char* key) -> std::string {
-            const auto it = t.find(key);
-            if (it == t.end()) return {};
-            if (!it->second.is_string())
-                throw InputError(ctx + " (line " + std::to_string(it->second.location().line()) + "): '" + key +
-                                 "' must be a string");
-            return it->second.as_string().str;
-        };
-        p.unit = str("unit");
-        p.source = str("source");
-        p.help = str("help");
-        if (p.unit.empty() || p.source.empty())
-            throw InputError(ctx + ": every parameter needs a unit and a source");
-        const std::string range = str("range");
-        auto line_of = [&](const char* key) { return " (line " + std::to_string(t.at(key).location().line()) + ")"; };
-        if (!range.empty()) {
-            p.has_range = true;
-            try {
-                p.range = Interval::parse(range);
-            } catch (const InputError& e) {
-                throw InputError(ctx + line_of("range") + ": " + e.what());
-            }
-        }
-        if (t.count("choices")) {
-            try {
-                p.choices = toml::find<std::vector<std::string>>(spec, "choices");
-            } catch (const std::exception& e) {
-                throw InputError(toml_error_line(where, e.what()) + " (parameter " + name + ": choices must be a list of strings)");
-            }
-        }
-        const toml::value* quick = nullptr;
-        const toml::value* paper = nullptr;
-        if (t.count("value")) quick = paper = &t.at("value");
-        if (t.count("quick")) quick = &t.at("quick");
-        if (t.count("paper")) paper = &t.at("paper");
-        if (!quick || !paper) throw InputError(ctx + ": needs 'value' or both 'quick' and 'paper'");
-        const toml::value& chosen = scale == Scale::Quick ? *quick : *paper;
-        try {
-            p.kind = kind_of(chosen);
-        } catch (const InputError&) {
-            throw InputError(ctx + ": value has an unsupported type");
-        }
-        if (p.kind == Parameter::Kind::Integer && kind_of(scale == Scale::Quick ? *paper : *quick) == Parameter::Kind::Real)
-            p.kind = Parameter::Kind::Real; // 1 and 1.5 at the two scales: a real parameter
-        for (const toml::value* v : {quick, paper}) {
-            // A range makes it a number (or a list of numbers): "abc" or true there is a typo,
-            // not a text parameter that the experiment would then read as a number.
-            const bool numeric = v->is_floating() || v->is_integer() ||
-                                 (v->is_array() && std::all_of(v->as_array().begin(), v->as_array().end(), [](const auto& e) {
-                                      return e.is_floating() || e.is_integer();
-                                  }));
-            if (p.has_range && !numeric)
-                throw InputError(ctx + " (line " + std::to_string(v->location().line()) + "): value " + toml_text(*v) +
-                                 " must be a number or a list of numbers (it has range " + p.range.text + ")");
-        }
-        p.quick_text = toml_text(*quick);
-        p.paper_text = toml_text(*paper);
-        if (!assign(p, toml_text(chosen)))
-            throw InputError(ctx + ": default " + toml_text(chosen) + " is not " + p.allowed_text());
-        p.line = long(spec.location().line());
-        ordered.emplace_back(spec.location().line(), std::move(p));
-    }
+    for (const auto& [name, spec] : root.at("parameters").as_table())
+        ordered.emplace_back(spec.location().line(), read_parameter(where, name, spec, scale));
     std::stable_sort(ordered.begin(), ordered.end(),
                      [](const auto& a, const auto& b) { return a.first < b.first; });
     for (auto& [line, p] : ordered) set.params_.push_back(std::move(p));
@@ -256,8 +331,18 @@ void ParameterSet::set(const std::string& assignment) {
     if (it == params_.end())
         throw InputError("--set " + name + ": unknown parameter; this experiment has: " +
                          joined(params_, [](const Parameter& p) { return p.name; }));
-    if (!assign(*it, value))
-        throw InputError("--set " + name + "=" + value + ": " + name + " must be " + it->allowed_text());
+    Parameter changed = *it;
+    if (!assign(changed, value)) {
+        // A number out of the doubles' reach is named as such, not as one outside the range.
+        std::string why;
+        std::stringstream items(value);
+        for (std::string item; why.empty() && std::getline(items, item, ',');) why = number_problem(item);
+        throw InputError("--set " + name + "=" + value + ": " + name + (why.empty() ? "" : ": " + why + "; " + name) +
+                         " must be " + it->allowed_text());
+    }
+    if (const std::string why = repeated_entry(changed); !why.empty())
+        throw InputError("--set " + name + "=" + value + ": " + name + ": " + why);
+    *it = std::move(changed);
     it->overridden = true;
 }
 
@@ -271,7 +356,7 @@ const Parameter& ParameterSet::get(const std::string& name) const {
 const Parameter& ParameterSet::find(const std::string& name, Parameter::Kind kind) const {
     const Parameter& p = get(name);
     if (p.kind != kind)
-        throw InputError(file_ + ": parameter " + name + " = " + p.value_text() + " must be " +
+        throw InputError(file_ + ":" + std::to_string(p.value_line) + ": parameter " + name + " = " + p.value_text() + " must be " +
                          (kind == Parameter::Kind::Text ? std::string("text") : kind_text(kind)));
     return p;
 }
@@ -306,7 +391,7 @@ void ParameterSet::limit_work(const std::vector<std::string>& names, double esti
 void ParameterSet::refuse_unread(const std::vector<std::string>& read) const {
     for (const auto& p : params_)
         if (std::find(read.begin(), read.end(), p.name) == read.end())
-            throw InputError(file_ + " (line " + std::to_string(p.line) + "): [parameters." + p.name +
+            throw InputError(file_ + ":" + std::to_string(p.line) + ": [parameters." + p.name +
                              "] is read by no code of this experiment (a typo or a leftover); remove it");
 }
 

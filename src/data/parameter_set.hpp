@@ -44,7 +44,12 @@ struct Parameter {
     std::vector<double> reals;
     std::string quick_text, paper_text; // defaults at both scales, for --help
     bool overridden = false;
-    long line = 0; // of its table in the experiment file, for messages
+    long line = 0;       // of its table in the experiment file, for messages
+    long value_line = 0; // of its default at the chosen scale
+    // A list's entries name the tables and scalars of the run: with number_text's 6 significant
+    // digits (-1), or with this many decimals (`name_decimals` in the experiment file). Entries
+    // must differ in their names.
+    int name_decimals = -1;
 
     std::string value_text() const;
     std::string allowed_text() const; // "a number in (0, 1] [1]" etc.

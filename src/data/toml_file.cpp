@@ -1,6 +1,9 @@
 #include "data/toml_file.hpp"
 
 #include <cctype>
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
 #include <sstream>
 #include <vector>
 
@@ -57,6 +60,29 @@ toml::value parse_toml_file(const std::filesystem::path& file, const std::string
     } catch (const std::exception& e) {
         throw InputError(toml_error_line(file.string(), e.what()));
     }
+}
+
+std::string toml_place(const std::string& file, const toml::value& v) {
+    return file + ":" + std::to_string(v.location().line());
+}
+
+double toml_number(const toml::value& v, const std::string& file, const std::string& what) {
+    if (v.is_integer()) return double(v.as_integer());
+    const double x = toml::get<double>(v); // throws toml::type_error for a non-number
+    // The token as written in the file: toml11 keeps its line, column (from 1) and length.
+    const toml::source_location loc = v.location();
+    std::string token;
+    if (loc.column() >= 1 && loc.column() - 1 < loc.line_str().size())
+        token = loc.line_str().substr(loc.column() - 1, loc.region());
+    std::erase(token, '_'); // TOML allows 1_000.5
+    errno = 0;
+    char* end = nullptr;
+    const double read = std::strtod(token.c_str(), &end);
+    if (!token.empty() && end == token.c_str() + token.size() && errno == ERANGE)
+        throw InputError(toml_place(file, v) + ": " + what + " = " + token +
+                         (std::abs(read) > 1 ? " is beyond the largest double (~1.8e308): an infinite or out-of-range number"
+                                             : " is subnormal (below 2.2e-308, the smallest normal double); write 0 or a normal number"));
+    return x;
 }
 
 } // namespace granrepro

@@ -1,11 +1,13 @@
 #include "harness/claims.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <sstream>
 #include <toml.hpp>
 
 #include "core/input_error.hpp"
+#include "data/printable.hpp"
 #include "data/toml_file.hpp"
 
 namespace granrepro {
@@ -38,19 +40,20 @@ std::string short_kind(const std::string& kind) {
     return kind; // "grid"
 }
 
-double number(const toml::value& v) {
-    if (v.is_integer()) return double(v.as_integer());
-    return toml::get<double>(v);
+// A number as written: 1e400 (which toml11 reads as 1.8e308) is refused at its file:line.
+double number(const toml::value& v, const std::string& file, const std::string& what) {
+    return toml_number(v, file, what);
 }
 
 // [lo, hi] with lo <= hi (inf and -inf allowed).
-Band parse_band(const toml::value& v, const std::string& where) {
+// `what` ("claim x: deviation_band") names it in a refusal at its file:line.
+Band parse_band(const toml::value& v, const std::string& where, const std::string& file, const std::string& what) {
     if (!v.is_array() || v.as_array().size() != 2)
         throw InputError(where + " must be [lo, hi]");
     const auto& a = v.as_array();
     if (!(a[0].is_integer() || a[0].is_floating()) || !(a[1].is_integer() || a[1].is_floating()))
         throw InputError(where + " must be [lo, hi] with two numbers (inf and -inf allowed)");
-    const Band b{number(a[0]), number(a[1])};
+    const Band b{number(a[0], file, what), number(a[1], file, what)};
     if (std::isnan(b.lo) || std::isnan(b.hi) || b.lo > b.hi)
         throw InputError(where + " must be [lo, hi] with lo <= hi");
     return b;
@@ -155,10 +158,12 @@ std::string line_of(const toml::value& v) { return " (line " + std::to_string(v.
 struct ClaimReader {
     const toml::value& c;
     std::string where; // "<file>: claim <id>"
+    std::string file;
+    std::string id; // printable
 
     std::optional<double> number_at(const char* key) const {
         if (!c.contains(key)) return std::nullopt;
-        const double x = number(c.at(key));
+        const double x = number(c.at(key), file, "claim " + id + ": " + key);
         if (std::isnan(x)) throw InputError(where + line_of(c.at(key)) + ": " + key + " is NaN");
         return x;
     }
@@ -210,10 +215,12 @@ void read_deviation(const ClaimReader& r, Claim& k) {
         if (b.is_table()) {
             for (const auto& [scale, band] : b.as_table()) {
                 r.check_scale(scale, "deviation_band");
-                k.deviation_band_by_scale[scale] = parse_band(band, r.where + ": deviation_band." + scale);
+                k.deviation_band_by_scale[scale] = parse_band(band, r.where + ": deviation_band." + scale, r.file,
+                                                              "claim " + r.id + ": deviation_band." + scale);
             }
         } else {
-            k.deviation_band = parse_band(b, r.where + ": deviation_band (or { quick = [lo, hi], paper = [lo, hi] })");
+            k.deviation_band = parse_band(b, r.where + ": deviation_band (or { quick = [lo, hi], paper = [lo, hi] })", r.file,
+                                          "claim " + r.id + ": deviation_band");
         }
     }
     if (c.contains("deviation_band_reason")) k.deviation_band_reason = toml::find<std::string>(c, "deviation_band_reason");
@@ -332,7 +339,7 @@ Claim read_claim(const toml::value& c, const std::string& where, const std::stri
                  const DeclaredOutputs* outputs, const std::vector<Claim>& earlier_claims) {
     Claim k;
     k.id = toml::find<std::string>(c, "id");
-    const ClaimReader r{c, where + ": claim " + k.id};
+    const ClaimReader r{c, where + ": claim " + printable(k.id), where, printable(k.id)};
     for (const auto& [key, v] : c.as_table())
         if (!std::count(std::begin(kClaimKeys), std::end(kClaimKeys), key))
             throw InputError(r.where + line_of(v) + ": unknown key '" + key + "'; allowed: " + joined(kClaimKeys));
@@ -425,15 +432,19 @@ std::string format_claim_table(const std::string& experiment, const std::vector<
         if (s.size() > w) s = s.substr(0, w - 1) + "~";
         return s + std::string(w - s.size(), ' ');
     };
-    os << "check " << experiment << "\n";
-    for (const auto& n : notes) os << "  " << n << "\n";
-    os << "  " << pad("claim", 34) << pad("paper / relation", 22) << pad("our band (deviation)", 22)
+    // The claim column is as wide as the longest id: an id is what a reader greps for in
+    // expected/, so it is never cut (the other columns hold numbers and may be).
+    std::size_t id_width = 34;
+    for (const auto& r : results) id_width = std::max(id_width, printable(r.claim.id).size() + 1);
+    os << "check " << printable(experiment) << "\n";
+    for (const auto& n : notes) os << "  " << printable(n) << "\n";
+    os << "  " << pad("claim", id_width) << pad("paper / relation", 22) << pad("our band (deviation)", 22)
        << pad("measured", 11) << pad("tolerance (kind)", 20) << "verdict\n";
     int explained = 0;
     for (const auto& r : results) {
         std::string measured = r.measured ? num(*r.measured) : "missing";
         if (r.measured && !std::isfinite(*r.measured)) measured = "non-finite";
-        os << "  " << pad(r.claim.id, 34) << pad(r.expected_text, 22) << pad(r.band_text, 22) << pad(measured, 11)
+        os << "  " << pad(printable(r.claim.id), id_width) << pad(r.expected_text, 22) << pad(r.band_text, 22) << pad(measured, 11)
            << pad(r.tolerance_text + " (" + short_kind(r.claim.tolerance_kind) + ")", 20) << to_string(r.verdict)
            << "\n";
         explained += !r.claim.known_deviation.empty() && r.verdict != Verdict::Pass && r.verdict != Verdict::Skipped;
@@ -441,7 +452,7 @@ std::string format_claim_table(const std::string& experiment, const std::vector<
     if (explained)
         os << "  (" << explained << " known deviation" << (explained == 1 ? "" : "s")
            << ": the study behind each and its band are in expected/; `granrepro check "
-           << experiment.substr(0, experiment.find(' ')) << " --explain` prints them)\n";
+           << printable(experiment.substr(0, experiment.find(' '))) << " --explain` prints them)\n";
     return os.str();
 }
 
@@ -449,12 +460,13 @@ std::string format_deviation_explanations(const std::vector<ClaimResult>& result
     std::ostringstream os;
     for (const auto& r : results) {
         if (r.claim.known_deviation.empty() || r.verdict == Verdict::Pass || r.verdict == Verdict::Skipped) continue;
-        os << "  " << r.claim.id << " (" << to_string(r.verdict) << ", band " << r.band_text << "):\n"
-           << "      known deviation (" << r.claim.status << "): " << r.claim.known_deviation << "\n"
-           << "      tolerance (" << r.claim.tolerance_kind << "): "
-           << (r.claim.tolerance_reason.empty() ? "(no reason beyond the known deviation)" : r.claim.tolerance_reason)
+        os << "  " << printable(r.claim.id) << " (" << to_string(r.verdict) << ", band " << r.band_text << "):\n"
+           << "      known deviation (" << printable(r.claim.status) << "): " << printable(r.claim.known_deviation) << "\n"
+           << "      tolerance (" << printable(r.claim.tolerance_kind) << "): "
+           << printable(r.claim.tolerance_reason.empty() ? "(no reason beyond the known deviation)" : r.claim.tolerance_reason)
            << "\n"
-           << "      band (" << r.claim.deviation_band_kind << "): " << r.claim.deviation_band_reason << "\n";
+           << "      band (" << printable(r.claim.deviation_band_kind) << "): " << printable(r.claim.deviation_band_reason)
+           << "\n";
     }
     return os.str();
 }
@@ -483,6 +495,42 @@ nlohmann::json claims_to_json(const std::vector<ClaimResult>& results) {
 
 bool all_pass(const std::vector<ClaimResult>& results) {
     return std::none_of(results.begin(), results.end(), [](const auto& r) { return r.verdict == Verdict::Fail; });
+}
+
+namespace {
+
+// The figure numbers a text cites: "Fig. 4", "Figs. 4, 5", "Fig. 4 and Fig. 5", "Fig. 10(a)".
+std::vector<int> cited_figures(const std::string& text) {
+    std::vector<int> out;
+    const std::size_t n = text.size();
+    auto digit = [&](std::size_t j) { return j < n && std::isdigit(static_cast<unsigned char>(text[j])); };
+    for (std::size_t i = text.find("Fig"); i != std::string::npos; i = text.find("Fig", i + 1)) {
+        std::size_t j = i + 3;
+        if (j < n && text[j] == 's') ++j;
+        if (j < n && text[j] == '.') ++j;
+        while (true) {
+            while (j < n && text[j] == ' ') ++j;
+            if (!digit(j)) break;
+            int v = 0;
+            for (; digit(j); ++j) v = std::min(v * 10 + (text[j] - '0'), 100000);
+            out.push_back(v);
+            if (j < n && text[j] == '(') j = std::min(n, text.find(')', j) == std::string::npos ? n : text.find(')', j) + 1);
+            if (text.compare(j, 2, ", ") == 0) j += 2;
+            else if (text.compare(j, 5, " and ") == 0) j += 5;
+            else break;
+        }
+    }
+    return out;
+}
+
+} // namespace
+
+bool cites_figure(const Claim& claim, const std::string& figure_id) {
+    const std::size_t digits = figure_id.find_last_not_of("0123456789") + 1;
+    if (digits >= figure_id.size()) return false;
+    const int number = std::stoi(figure_id.substr(digits, 6));
+    const std::vector<int> cited = cited_figures(claim.source);
+    return std::find(cited.begin(), cited.end(), number) != cited.end();
 }
 
 } // namespace granrepro

@@ -109,4 +109,9 @@ nlohmann::json claims_to_json(const std::vector<ClaimResult>& results);
 nlohmann::json headline_json(const VerdictCounts& counts);
 bool all_pass(const std::vector<ClaimResult>& results); // known deviations and skips do not fail
 
+// Claims carry no figure of their own; their `source` cites the paper's figures ("text below
+// Fig. 4", "Figs. 4, 5", "Fig. 10(a)"). True if it cites the figure numbered like the end of
+// `figure_id` ("schaefer95-fig4", "luding98-fig02"): what `figure` shows of a run's claims.
+bool cites_figure(const Claim& claim, const std::string& figure_id);
+
 } // namespace granrepro

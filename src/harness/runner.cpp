@@ -456,6 +456,26 @@ std::vector<std::string> write_results(const Made& m, const RunOptions& opt, con
     return not_drawn;
 }
 
+// What `figure` shows of a run's claims: those whose source cites one of `figures` (claims name
+// no figure of their own; see cites_figure), with a note counting the others, whose verdicts
+// still decide the exit code. All of them for a plain run.
+std::vector<ClaimResult> figure_claims(const std::string& name, const std::vector<std::string>& figures,
+                                       const std::vector<ClaimResult>& verdicts, std::string& title,
+                                       std::vector<std::string>& notes) {
+    if (figures.empty()) return verdicts;
+    std::vector<ClaimResult> shown, others;
+    for (const auto& r : verdicts)
+        (std::any_of(figures.begin(), figures.end(), [&](const auto& f) { return cites_figure(r.claim, f); }) ? shown : others)
+            .push_back(r);
+    title += ", figure " + joined(figures);
+    VerdictCounts rest;
+    rest.add(others);
+    notes.push_back("the " + std::to_string(shown.size()) + " claims whose source cites " +
+                    (figures.size() == 1 ? "this figure" : "these figures") + "; the other " + std::to_string(others.size()) +
+                    " of " + name + ": " + rest.text() + " (`granrepro check " + name + "` lists every claim)");
+    return shown;
+}
+
 // The claim table on stdout and the exit code: 1 if a claim failed, kFigureNotDrawn if a figure
 // the command asked for was not drawn.
 int report_run(const std::string& name, const RunOptions& opt, const ParameterSet& params,
@@ -463,8 +483,14 @@ int report_run(const std::string& name, const RunOptions& opt, const ParameterSe
     nlohmann::json sets = nlohmann::json::object();
     for (const auto& p : params.all())
         if (p.overridden) sets[p.name] = p.value_text();
-    std::fputs(format_claim_table(name + " (" + to_string(opt.scale) + " scale)", verdicts, check_notes(sets, true)).c_str(),
-               stdout);
+    std::string title = name + " (" + to_string(opt.scale) + " scale)";
+    std::vector<std::string> notes = check_notes(sets, true);
+    const std::vector<ClaimResult> shown = figure_claims(name, opt.figures, verdicts, title, notes);
+    // `figure` names what it drew: the PNG is the command's result.
+    for (const auto& id : opt.figures)
+        if (std::find(not_drawn.begin(), not_drawn.end(), id) == not_drawn.end())
+            std::printf("figure %s: %s\n", id.c_str(), (opt.out / name / (id + ".png")).c_str());
+    std::fputs(format_claim_table(title, shown, notes).c_str(), stdout);
     std::fflush(stdout);
     if (totals) totals->add(verdicts);
     throw_if_interrupted(" after the results were written to " + (opt.out / name).string());
@@ -633,6 +659,27 @@ nlohmann::json read_checked_summary(const std::string& name, const fs::path& out
     const bool v = check_data_file(out / name / "data.h5", name, summary_path, summary);
     if (verified) *verified = v;
     return summary;
+}
+
+bool complete_result(const std::string& name, const RunOptions& opt) {
+    if (!opt.sets.empty() || !opt.figures.empty() || opt.sweep.mode != SweepPlan::Mode::All || !has_results(name, opt.out))
+        return false;
+    try {
+        bool verified = false;
+        const nlohmann::json summary = read_checked_summary(name, opt.out, &verified);
+        const nlohmann::json none = nlohmann::json::object();
+        if (!verified || summary["scale"] != to_string(opt.scale) || summary.value("seed", nlohmann::json()) != opt.seed ||
+            summary.value("physics_hash", "") != physics_hash() || summary.value("overridden_parameters", none) != none ||
+            summary.value("parameters", none) != resolve_parameters(name, opt).to_json())
+            return false;
+        for (const auto& f : experiment_info(name).figures) {
+            const fs::path png = opt.out / name / (f.id + ".png");
+            if (!fs::is_regular_file(fs::symlink_status(png)) || !png_complete(png)) return false;
+        }
+        return true;
+    } catch (const std::exception&) {
+        return false; // damaged or foreign: the run replaces it
+    }
 }
 
 int check_experiment(const std::string& name, const fs::path& out, const CheckOptions& opt, VerdictCounts* totals) {

@@ -58,6 +58,11 @@ inline constexpr int kFigureNotDrawn = 4;
 // previous run had rendered, so a figure run never deletes the experiment's other figures.
 // totals, if given, accumulates the verdicts.
 int run_experiment(const std::string& name, const RunOptions& opt, VerdictCounts* totals = nullptr);
+// True if OUT/<name>/ already holds what a run with `opt` would write: summary.json and data.h5
+// pass check's validation with their hashes verified, and are of this scale, seed, physics hash
+// and resolved parameters (no --set), with every figure of the experiment drawn whole. `all`
+// skips such an experiment (a rerun after an interruption resumes where it stopped).
+bool complete_result(const std::string& name, const RunOptions& opt);
 
 struct CheckOptions {
     bool explain = false;     // print the known-deviation texts and band reasons under the table
