@@ -316,7 +316,12 @@ def test_a_crafted_claims_file_is_refused(crafted):
     for change, field in ((("name", "../../escape"), "experiments[0].name"),
                           (("figures", [{"id": "../x", "caption": ""}]), "experiments[0].figures[0].id"),
                           (("claims", [{"id": 5}]), "experiments[0].claims[0].id"),
-                          (("notes", "not a list"), "experiments[0].notes")):
+                          (("notes", "not a list"), "experiments[0].notes"),
+                          (("claims", [{"id": "x", "role": "<b>"}]), "experiments[0].claims[0].role"),
+                          (("headline", [{"paper": "p", "statements": -1}]), "experiments[0].headline[0].statements"),
+                          (("headline", [{"paper": "p", "statements": 1, "reproduced": 1, "deviate": 0, "fail": 0,
+                                          "status": {"closed": 1}, "other": {}, "other_verdicts": {}}]),
+                           "experiments[0].headline[0].status names 'closed'")):
         j = json.loads(json.dumps(judged))
         j["experiments"][0][change[0]] = change[1]
         bad.write_text(json.dumps(j))
