@@ -18,7 +18,8 @@ from dataclasses import dataclass, field
 import h5py
 import numpy as np
 
-from .untrusted import MAX_POINT_FILE_BYTES, MAX_SUMMARY_BYTES, ResultsError, parse_json, read_file, require_regular_file
+from .untrusted import (MAX_POINT_FILE_BYTES, MAX_SUMMARY_BYTES, MAX_TEXT_FILE_BYTES, ResultsError, parse_json,
+                        read_file, require_regular_file)
 
 SCHEMA = "granrepro-result"
 SCHEMA_VERSION = 3  # the version this reader's writer emits
@@ -92,6 +93,15 @@ def _short(e: BaseException) -> str:
     return text[:160]
 
 
+def _variable_string(aid) -> bytes:
+    """The bytes of a scalar variable-length string attribute as stored, whatever its character set
+    says (decoded by the caller, which refuses what is not UTF-8); b"" for a null string."""
+    out = np.empty((), dtype=h5py.string_dtype("ascii"))
+    aid.read(out, mtype=h5py.h5t.py_create(out.dtype))
+    v = out[()]
+    return b"" if v is None else bytes(v)
+
+
 class _H5:
     """data.h5 opened for reading; every read names the file and the object in its refusal."""
 
@@ -102,7 +112,8 @@ class _H5:
         raise ResultsError(f"{self.path}: {what}; rerun the experiment to replace it")
 
     def attr(self, obj, where: str, name: str):
-        """A scalar attribute as the writer makes them: fixed-length UTF-8 string, integer or float."""
+        """A scalar attribute: a UTF-8 string (fixed-length as the writer makes them, or variable-length,
+        h5py's default, read as its value as the C++ readers read it), an integer or a float."""
         at = f"attribute '{name}' of {where}"
         try:
             aid = obj.attrs.get_id(name)
@@ -114,9 +125,15 @@ class _H5:
             n = int(np.prod(shape)) if shape else 0
             self.refuse(f"{at} is an array of {n} values; granrepro writes one value")
         if cls == h5py.h5t.STRING:
+            too_large = f"{at} is larger than its cap of {MAX_TEXT_FILE_BYTES >> 20} MiB (docs/schema.md)"
             if tid.is_variable_str():
-                self.refuse(f"{at} is a variable-length string; granrepro writes fixed-length strings")
-            raw = self._read(lambda: obj.attrs[name], at)
+                raw = self._read(lambda: _variable_string(aid), at)
+            elif tid.get_size() > MAX_TEXT_FILE_BYTES:
+                self.refuse(too_large)  # sized before it is read
+            else:
+                raw = self._read(lambda: obj.attrs[name], at)
+            if len(raw) > MAX_TEXT_FILE_BYTES:
+                self.refuse(too_large)
             try:
                 return bytes(raw).decode("utf-8")
             except UnicodeDecodeError:

@@ -134,11 +134,11 @@ def array_scale(c):
     return "attribute 'scale' of / is an array of 100000 values"
 
 
-def vl_scale(c):
+def vl_array_scale(c):
     with h5py.File(c.h5, "r+") as f:
         del f.attrs["scale"]
-        f.attrs["scale"] = "quick"  # h5py's default: a variable-length string
-    return "attribute 'scale' of / is a variable-length string"
+        f.attrs.create("scale", np.array(["quick", "quick"], dtype=h5py.string_dtype("utf-8")))
+    return "attribute 'scale' of / is an array of 2 values"
 
 
 def array_parameter_source(c):
@@ -156,7 +156,7 @@ def scalar_as_array(c):
 
 
 # Crashes of the C++ readers on this branch (issue 40 §1, another part): refused by Python alone.
-PYTHON_ONLY = [array_scale, vl_scale, array_parameter_source, scalar_as_array]
+PYTHON_ONLY = [array_scale, vl_array_scale, array_parameter_source, scalar_as_array]
 
 
 @pytest.mark.parametrize("edit", HANDED_ON + PYTHON_ONLY, ids=lambda e: e.__name__)
@@ -173,6 +173,45 @@ def test_a_crafted_data_h5_is_refused_by_granrepro_report(binary, crafted, edit)
     edit(crafted)
     expect_refusal(binary_report(binary, crafted), "data.h5")
     expect_nothing_written(crafted)
+
+
+def vl_scale(c, value):
+    with h5py.File(c.h5, "r+") as f:
+        del f.attrs["scale"]
+        f.attrs["scale"] = value  # h5py's default: a variable-length UTF-8 string
+        assert f.attrs.get_id("scale").get_type().is_variable_str()
+
+
+def check(binary, c):
+    return subprocess.run([binary, "check", EXP, "--out", str(c.results)], capture_output=True, text=True, timeout=120)
+
+
+def test_a_variable_length_string_is_read_as_its_value_as_the_cpp_readers_read_it(binary, crafted):
+    # h5py writes a str attribute as a variable-length string: `granrepro check` reads it as its
+    # value, and so does Python, the report and load() (issue 41): the same value is accepted ...
+    vl_scale(crafted, "quick")
+    r = check(binary, crafted)
+    assert r.returncode == 0 and "brake-failure (quick scale)" in r.stdout, r.stderr
+    assert granrepro.load(str(crafted.dir)).scale == "quick"
+    r = python_report(crafted)
+    assert r.returncode == 0 and "Traceback" not in r.stderr, r.stderr
+    # ... and another value is the same mismatch on both sides
+    shutil.rmtree(crafted.to)
+    vl_scale(crafted, "paper")
+    r = check(binary, crafted)
+    assert r.returncode == 2 and "'scale' is \"quick\" but data.h5 beside it has \"paper\"" in r.stderr, r.stderr
+    with pytest.raises(ResultsMismatch, match="'scale' is 'paper' but summary.json beside it has 'quick'"):
+        granrepro.load(str(crafted.dir))
+    expect_refusal(python_report(crafted), str(crafted.h5), "'scale' is 'paper'")
+    expect_nothing_written(crafted)
+
+
+def test_a_variable_length_string_that_is_not_utf8_is_refused(crafted):
+    with h5py.File(crafted.h5, "r+") as f:
+        f["provenance"].attrs.create("command_line", np.array(b"granrepro \xff brake-failure",
+                                                              dtype=h5py.string_dtype("utf-8")))
+        assert f["provenance"].attrs.get_id("command_line").get_type().is_variable_str()
+    expect_refusal(python_report(crafted), str(crafted.h5), "attribute 'command_line' of /provenance is not UTF-8")
 
 
 def test_an_edited_parameter_is_a_mismatch_not_a_value(crafted):
@@ -277,7 +316,12 @@ def test_a_crafted_claims_file_is_refused(crafted):
     for change, field in ((("name", "../../escape"), "experiments[0].name"),
                           (("figures", [{"id": "../x", "caption": ""}]), "experiments[0].figures[0].id"),
                           (("claims", [{"id": 5}]), "experiments[0].claims[0].id"),
-                          (("notes", "not a list"), "experiments[0].notes")):
+                          (("notes", "not a list"), "experiments[0].notes"),
+                          (("claims", [{"id": "x", "role": "<b>"}]), "experiments[0].claims[0].role"),
+                          (("headline", [{"paper": "p", "statements": -1}]), "experiments[0].headline[0].statements"),
+                          (("headline", [{"paper": "p", "statements": 1, "reproduced": 1, "deviate": 0, "fail": 0,
+                                          "status": {"closed": 1}, "other": {}, "other_verdicts": {}}]),
+                           "experiments[0].headline[0].status names 'closed'")):
         j = json.loads(json.dumps(judged))
         j["experiments"][0][change[0]] = change[1]
         bad.write_text(json.dumps(j))

@@ -1,6 +1,7 @@
 # granrepro report (python/granrepro/report) on quick-scale runs of brake-failure and
 # emergency-brake: every claim appears exactly once, every text is escaped, a missing figure is
 # reported, bad input exits 2 with one line, and a report replaces the previous one whole.
+import html
 import json
 import os
 import re
@@ -158,3 +159,154 @@ def test_the_committed_report_is_what_the_code_writes(binary, tmp_path):
     for n in os.listdir(committed):
         with open(os.path.join(committed, n), "rb") as a, open(fresh / n, "rb") as b:
             assert a.read() == b.read(), f"paper_figures/report/{n} differs from what the code writes now"
+
+
+# ---------------------------------------------------------------- issue 41: the report as a referee reads it
+
+
+def check_all_headline(binary, out, cwd=None) -> list[str]:
+    """The headline lines `granrepro check --all` prints after its tables: per paper its line and
+    its 'not in the headline' line, then the totals."""
+    r = subprocess.run([binary, "check", "--all", "--missing-ok", "--out", str(out)], capture_output=True, text=True,
+                       cwd=cwd)
+    assert r.returncode in (0, 1), r.stderr
+    lines = [line for line in r.stdout.splitlines() if line and not line.startswith((" ", "check "))]
+    assert lines and lines[-1].startswith("totals: "), r.stdout[-2000:]
+    return lines
+
+
+def headline_on(index: str) -> list[str]:
+    """The text of the summary page's headline lines, in page order."""
+    return [html.unescape(re.sub(r"<[^>]+>", "", m))
+            for m in re.findall(r'<p class="headline-line[^"]*">(.*?)</p>', index, re.S)]
+
+
+def deviation_boxes(text: str) -> dict:
+    """claim id -> (first sentence, the rest of the box) of each deviation box of a page."""
+    out = {}
+    for anchor, box in re.findall(r'<div class="deviation" id="dev-claim-[^"]*?--([^"]+)">(.*?)\n</div>', text, re.S):
+        first = re.match(r'\s*<p class="gist"><span class="gist-text">(.*?)</span>', box, re.S)
+        assert first, box[:300]
+        out[anchor] = (html.unescape(first.group(1)), box[first.end():])
+    return out
+
+
+@pytest.fixture(scope="module")
+def paper_report(binary, tmp_path_factory):
+    """A copy of the committed paper_figures (its report left out), with `granrepro report --out
+    paper_figures` and `check --all --explain` run in it as a reader would."""
+    root = tmp_path_factory.mktemp("paper")
+    shutil.copytree(PAPER_FIGURES, root / "paper_figures", ignore=shutil.ignore_patterns("report"))
+    r = subprocess.run([binary, "report", "--out", "paper_figures"], capture_output=True, text=True, cwd=root)
+    assert r.returncode == 0, r.stderr
+    return root
+
+
+def test_the_summary_opens_with_the_headline_check_all_prints(binary, paper_report):
+    index = page(paper_report / "paper_figures" / "report" / "index.html")
+    expected = check_all_headline(binary, "paper_figures", cwd=paper_report)
+    shown = headline_on(index)
+    assert sorted(shown) == sorted(expected)
+    # the papers' headlines first, in check's order; the other roles apart, after them; the totals last
+    papers = [line for line in expected if " statements \u2014 " in line]
+    assert shown[:len(papers)] == papers and shown[-1] == expected[-1]
+    assert index.index('class="headline-line') < index.index("<h2>")  # it opens the page
+    assert index.index('<div class="not-headline">') < index.index(", not in the headline: ")
+
+
+def test_the_headline_of_quick_runs_is_check_s_too(binary, quick_out, tmp_path):
+    r = report(binary, quick_out, tmp_path / "report")
+    assert r.returncode == 0, r.stderr
+    assert sorted(headline_on(page(tmp_path / "report" / "index.html"))) == sorted(check_all_headline(binary, quick_out))
+
+
+def test_each_deviation_box_opens_with_what_differs_by_how_much_and_its_status(binary, paper_report):
+    # check --explain names each DEVIATION's band and status; its table the measured value
+    r = subprocess.run([binary, "check", "--all", "--explain", "--out", "paper_figures"], capture_output=True,
+                       text=True, cwd=paper_report)
+    explained = {}
+    experiment = None
+    for line in r.stdout.splitlines():
+        if line.startswith("check "):
+            experiment = line.split()[1]
+            measured = {}
+        elif line.startswith("  claim "):  # the table's header: where its measured column is
+            columns = (line.index("measured"), line.index("tolerance (kind)"))
+        elif line.startswith("  ") and line.endswith("DEVIATION"):
+            measured[line.split()[0]] = line[columns[0]:columns[1]].strip()
+        m = re.match(r"  (\S+) \(DEVIATION, band (\[[^\]]*\])\):$", line)
+        if m:
+            explained[(experiment, m.group(1))] = [m.group(2), measured[m.group(1)], None]
+        m = re.match(r"      known deviation \((\w+)\): ", line)
+        if m:
+            explained[list(explained)[-1]][2] = m.group(1)
+    deviations = int(re.search(r"^totals: \d+ PASS, 0 FAIL, (\d+) DEVIATION", r.stdout, re.M).group(1))
+    assert len(explained) == deviations > 0  # every DEVIATION of paper_figures
+    for (exp, cid), (band, measured, status) in explained.items():
+        first, rest = deviation_boxes(page(paper_report / "paper_figures" / "report" / f"{exp}.html"))[cid]
+        assert first.startswith(f"{cid}: measured {measured} against the paper's "), first
+        assert f"band {band}" in first and first.endswith(f"; {status}."), first
+        assert status in ("settled", "inherent", "open")
+        # the long text folded below it
+        assert re.match(r'\s*<span class="verdict deviation">DEVIATION</span></p>\s*<p class="runs">[^\n]*</p>\s*<details>',
+                        rest), rest[:300]
+
+
+def test_a_deviation_sentence_from_the_claims_fields(quick_out, tmp_path):
+    results = copy_run(quick_out, tmp_path)
+    judged = judged_of(results, "brake-failure", id="normal_branch_k200000", measured=0.8, expected="0.7",
+                       tolerance="abs 0.05", deviation_band="[0.75, 0.85]", status="open", verdict="DEVIATION",
+                       known_deviation="One grid step off (aef77da).", role="reproduction")
+    make_report(str(results), judged, str(tmp_path / "report"), warn=lambda m: None)
+    text = page(tmp_path / "report" / "brake-failure.html")
+    first, rest = deviation_boxes(text)["normal_branch_k200000"]
+    assert first == "normal_branch_k200000: measured 0.8 against the paper's 0.7 ± 0.05 (0.1 above, +14%; " \
+                    "band [0.75, 0.85]); open."
+    details = rest[rest.index("<details>"):]
+    assert "One grid step off (aef77da)." in details  # folded
+    # which runs the text is about: the results' code version, and the commit the text names
+    with open(results / "brake-failure" / "summary.json") as f:
+        version = json.load(f)["code_version"]
+    runs = rest[:rest.index("<details>")]
+    assert f"code version <code>{version}</code>" in runs and "names commit <code>aef77da</code>" in runs, runs
+
+
+def test_claims_judged_before_issue_41_still_render(quick_out, tmp_path):
+    results = copy_run(quick_out, tmp_path)
+    judged = judged_of(results, "brake-failure")
+    for c in judged["experiments"][0]["claims"]:
+        c.pop("role", None)
+        c.pop("status", None)
+    model = make_report(str(results), judged, str(tmp_path / "report"), warn=lambda m: None)
+    assert all(c.role_shown == "—" for c in model["claims"])
+    index = page(tmp_path / "report" / "index.html")
+    assert '<span class="role none">—</span>' in index and "No headline: the claims carry no role" in index
+    assert headline_on(index) == [f"totals: {model['totals']['PASS']} PASS, {model['totals']['FAIL']} FAIL, "
+                                  f"{model['totals']['DEVIATION']} DEVIATION, {model['totals']['skipped']} skipped"]
+
+
+def test_roles_and_statuses_are_shown_and_filtered(binary, paper_report):
+    index = page(paper_report / "paper_figures" / "report" / "index.html")
+    rows = re.findall(r'<tr class="(v-[a-z]+ r-[a-z]+(?: s-[a-z]+)?)">', index)
+    counts = [[int(n) for n in re.findall(r"(\d+) (?:statements|open)\b", line)]
+              for line in check_all_headline(binary, "paper_figures", cwd=paper_report) if " statements " in line]
+    # each claim's row carries its role and, for a DEVIATION, its status: counted as check counts them
+    assert sum("r-reproduction" in r and "v-skipped" not in r for r in rows) == sum(n for n, _ in counts)
+    assert sum("r-reproduction s-open" in r for r in rows) == sum(o for _, o in counts) > 0
+    assert all("r-none" not in r for r in rows) and len(rows) == index.count('<span class="role ')
+    for option in ('value="r-identity"', 'value="r-calibration"', 'value="v-deviation"', 'value="s-open"'):
+        assert option in index, option
+
+
+def test_a_cited_table_appears_once_per_page(paper_report):
+    report_dir = paper_report / "paper_figures" / "report"
+    for name in os.listdir(report_dir):
+        if not name.endswith(".html"):
+            continue
+        text = page(report_dir / name)
+        shown = re.findall(r'<figure class="table" id="[^"]+">\s*<figcaption><code>tables/([^<]+)\.tsv', text)
+        assert len(shown) == len(set(shown)), (name, shown)
+        for anchor in re.findall(r'It cites <a href="#([^"]+)">', text):
+            assert f'<figure class="table" id="{anchor}">' in text, (name, anchor)
+    bistable = page(report_dir / "bistable-pipe.html")
+    assert bistable.count("It cites <a href=") >= 3  # steady_k2000 is cited by four boxes, shown in one

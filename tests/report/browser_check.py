@@ -1,8 +1,11 @@
 """The report in a real browser: `granrepro report` on a results folder, then headless Chromium
 (Debian `chromium`) loads every page. Fails on a console message (a script error), a local href
 or src that does not resolve (file, or #anchor in its page), an image that is not a PNG/JPEG/SVG
-file, or a figure the report lists as missing; saves screenshots of the summary and of one
-figure section into --work. --self-test then breaks one image path in a copy of a page and
+file, or a figure the report lists as missing; requires the summary page to open with the headline
+`granrepro check --all` prints for the same folder, as rendered text the reader sees (issue 41), and
+no page to be wider than a 1024-pixel window with every <details> open (wide tables scroll inside
+their box); saves screenshots of the
+summary and of one figure section into --work. --self-test then breaks one image path in a copy of a page and
 requires this check to fail on it.
 
     browser_check.py --binary build/granrepro --results paper_figures --work build/report-browser
@@ -132,6 +135,74 @@ def screenshots(report: str, work: str) -> list[str]:
     return problems
 
 
+PROBE = """<script>
+window.addEventListener("load", function () {
+  const seen = [];
+  for (const e of document.querySelectorAll(".headline-line")) {
+    const r = e.getBoundingClientRect(), style = getComputedStyle(e);
+    seen.push({text: e.innerText, visible: r.width > 0 && r.height > 0 && style.visibility === "visible"
+               && style.display !== "none" && parseFloat(style.opacity) > 0, top: r.top + window.scrollY});
+  }
+  for (const d of document.querySelectorAll("details")) d.open = true;  // the folded tables too
+  const out = document.createElement("pre");
+  out.id = "browser-check-probe";
+  out.textContent = JSON.stringify({lines: seen, scrollWidth: document.documentElement.scrollWidth,
+                                    width: window.innerWidth});
+  document.body.appendChild(out);
+});
+</script>"""
+
+
+def probe(page: str, work: str, width: int = 1024) -> dict:
+    """What the reader sees on a page: the headline lines (their rendered text, visible or not, how far
+    down) and the page's width, measured by a script in a copy of the page beside it."""
+    copy = os.path.join(os.path.dirname(page), ".probe-" + os.path.basename(page))
+    with open(page, encoding="utf-8") as f:
+        text = f.read()
+    with open(copy, "w", encoding="utf-8") as f:
+        f.write(text.replace("</body>", PROBE + "</body>"))
+    try:
+        url = "file://" + urllib.parse.quote(os.path.abspath(copy))
+        r = browser([f"--window-size={width},1400", "--dump-dom", url], os.path.join(work, "profile-probe"))
+    finally:
+        os.remove(copy)
+    m = re.search(r'<pre id="browser-check-probe">(.*?)</pre>', r.stdout, re.S)
+    if not m:
+        return {}
+    import html as html_module
+    import json
+    return json.loads(html_module.unescape(m.group(1)))
+
+
+def check_headline(binary: str, results: str, report: str, work: str) -> list[str]:
+    """The summary opens with check --all's headline lines (each visible, as rendered text, within the
+    first screen), and no page is wider than a 1024-pixel window, its folded parts open."""
+    r = subprocess.run([binary, "check", "--all", "--missing-ok", "--out", results], capture_output=True, text=True)
+    expected = [line for line in r.stdout.splitlines() if line and not line.startswith((" ", "check "))]
+    if not expected or not expected[-1].startswith("totals: "):
+        return [f"check --all --out {results} printed no headline (exit {r.returncode}): {r.stderr.strip()[:300]}"]
+    problems = []
+    seen = probe(os.path.join(report, "index.html"), work)
+    if not seen:
+        return ["index.html: the probe script did not run"]
+    lines = seen["lines"]
+    shown = [x["text"].strip() for x in lines]
+    if sorted(shown) != sorted(expected):
+        problems.append(f"index.html: the headline shown {shown} is not check --all's {expected}")
+    problems += [f"index.html: headline line {x['text']!r} is not visible" for x in lines if not x["visible"]]
+    problems += [f"index.html: headline line {x['text']!r} is {x['top']:.0f} px down, below the first screen"
+                 for x in lines if x["top"] > 1400]
+    if not problems:
+        print(f"browser_check: index.html shows check --all's headline: {' | '.join(shown)}")
+    for page in sorted(os.listdir(report)):
+        if page.endswith(".html") and not page.startswith("."):
+            p = seen if page == "index.html" else probe(os.path.join(report, page), work)
+            if p and p["scrollWidth"] > p["width"]:
+                problems.append(f"{page}: {p['scrollWidth']} px wide in a {p['width']} px window (a table that "
+                                "does not scroll inside its box)")
+    return problems
+
+
 def self_test(report: str, work: str) -> list[str]:
     """A copy of the report with one image path broken must fail the check."""
     copy = os.path.join(work, "broken-report")
@@ -169,7 +240,8 @@ def main() -> int:
     if r.returncode != 0:
         print(f"browser_check: granrepro report exited {r.returncode}", file=sys.stderr)
         return 1
-    problems = check_report(report, a.work) + screenshots(report, a.work)
+    problems = check_report(report, a.work) + check_headline(a.binary, a.results, report, a.work) \
+        + screenshots(report, a.work)
     if a.self_test and not problems:
         problems += self_test(report, a.work)
     for p in problems:

@@ -4,8 +4,12 @@ or copied) of the results in a folder, from the claims `granrepro report` judged
     python3 -m granrepro.report --results DIR --claims CLAIMS.json --to REPORTDIR
 
 CLAIMS.json ({"experiments": [{name, paper, description, figures: [{id, caption}], has_results,
-scale, notes, claims: [...]}]}, experiments in registry order, claims in summary.json's format) is
-written by `granrepro report`, which judges every claim as `granrepro check` does. Every text is
+scale, notes, headline: [...], claims: [...]}]}, experiments in registry order, claims in
+summary.json's format with each claim's role and each deviation's status, headline as
+headline_json in src/harness/claims.cpp) is written by `granrepro report`, which judges every claim
+as `granrepro check` does. The summary page opens with the headline `check --all` prints for the
+same folder (the experiments' headlines summed per paper); claims judged before issue 41 (no role,
+no headline) are shown with the role "—". Every text is
 escaped (Jinja2 autoescape): a results folder is data, never code. The report is written into a
 hidden staging folder beside REPORTDIR and switched into place when complete.
 
@@ -39,6 +43,9 @@ from ..untrusted import (MAX_IMAGE_BYTES, MAX_SUMMARY_BYTES, PDF_MAGIC, PNG_MAGI
 MARKER = ".granrepro-report"  # in every report folder: only such a folder is ever replaced
 MAX_TABLE_ROWS = 60           # rows of a cited table shown; the rest are counted
 VERDICTS = ("PASS", "FAIL", "DEVIATION", "skipped")
+ROLES = ("reproduction", "identity", "calibration", "validation")  # expected/README.md, "Roles and statuses"
+STATUSES = ("settled", "inherent", "open")
+OTHER_ROLES = ROLES[1:]  # not in the headline
 
 
 class BadInput(Exception):
@@ -55,6 +62,7 @@ class CitedTable:
     columns: list  # (name, unit)
     rows: list     # rows of formatted cells
     total_rows: int
+    anchor: str = ""  # its id on the page
 
 
 @dataclass
@@ -73,9 +81,26 @@ class ClaimRow:
     known_deviation: str = ""
     deviation_band_kind: str = ""
     deviation_band_reason: str = ""
+    role: str = ""         # "" for claims judged before issue 41 (shown as "—")
+    status: str = ""       # of a known deviation; "" if none or not stated
+    gist: str = ""         # the deviation box's first sentence (deviation_sentence)
     section: str = ""      # anchor of the section that shows it
     section_title: str = ""
-    cited: list = field(default_factory=list)  # CitedTable
+    cited: list = field(default_factory=list)  # CitedTable shown in this claim's box (first on its page)
+    cited_before: list = field(default_factory=list)  # (table name, anchor, claim id) shown in an earlier box
+    commits_named: list = field(default_factory=list)  # commits its deviation text names other than the runs'
+
+    @property
+    def role_shown(self) -> str:
+        return self.role or "—"
+
+    @property
+    def row_class(self) -> str:
+        """Classes of its row in a claims table: verdict, role and status (the summary's filters)."""
+        out = [self.verdict_class, "r-" + (self.role if self.role in ROLES else "none")]
+        if self.verdict == "DEVIATION":
+            out.append("s-" + (self.status if self.status in STATUSES else "none"))
+        return " ".join(out)
 
     @property
     def anchor(self) -> str:
@@ -115,6 +140,9 @@ class Experiment:
     figures: list = field(default_factory=list)
     other_claims: list = field(default_factory=list)
     totals: dict = field(default_factory=dict)
+    headline: dict | None = None  # the claims file's headline of this experiment, summed; None if it has none
+    code_version: str = ""        # of the runs shown (summary.json), "0.1.0+5bd938e"
+    commit: str = ""              # its commit, "5bd938e" ("" if it names none)
 
     @property
     def page(self) -> str:
@@ -131,6 +159,87 @@ def _totals(claims) -> dict:
         t[c.verdict] = t.get(c.verdict, 0) + 1
     t["total"] = len(claims)
     return t
+
+
+def _num4(x: float) -> str:
+    """A number as `granrepro check` prints it (4 significant digits)."""
+    return "nan" if math.isnan(x) else f"{x:.4g}"
+
+
+def _sig2(x: float) -> str:
+    """A difference to 2 significant digits, without an exponent between 1e-4 and 1e6."""
+    if x == 0 or not math.isfinite(x) or not 1e-4 <= abs(x) < 1e6:
+        return f"{x:.2g}"
+    digits = max(0, 1 - math.floor(math.log10(abs(x))))
+    text = f"{round(x, digits):.{digits}f}"
+    return text.rstrip("0").rstrip(".") if "." in text else text
+
+
+def _paper_text(expected: str, tolerance: str) -> tuple[str, float | None, float, float]:
+    """The paper's value or relation in words ("0.7 ± 0.05", "39 ± 5%", "range [1, inf]", "7, range
+    [5.56, 8.81]") from the claims file's texts, with its value and the bounds it accepts."""
+    m = re.fullmatch(r"\s*(?P<v>[^\s\[]+)?\s*(?:in \[(?P<lo>[^,\]]+), (?P<hi>[^\]]+)\])?\s*", expected or "")
+    value = lo = hi = None
+    try:
+        if m and m.group("v"):
+            value = float(m.group("v"))
+        if m and m.group("lo"):
+            lo, hi = float(m.group("lo")), float(m.group("hi"))
+    except ValueError:
+        m = None
+    if not m or (value is None and lo is None):
+        return (expected or "—"), None, -math.inf, math.inf
+    kind, _, tol_text = (tolerance or "").partition(" ")
+    try:
+        tol = float(tol_text)
+    except ValueError:
+        tol = None
+    text = f"{m.group('v')}" if value is not None else ""
+    lo_t, hi_t = -math.inf, math.inf
+    if value is not None and tol is not None and kind in ("abs", "rel"):
+        width = tol if kind == "abs" else tol * abs(value)
+        if tol > 0:
+            text += f" ± {tol_text}" if kind == "abs" else f" ± {tol * 100:g}%"
+        lo_t, hi_t = value - width, value + width
+    if lo is not None:
+        rng = (f"≥ {m.group('lo')}" if hi == math.inf and lo > -math.inf else
+               f"≤ {m.group('hi')}" if lo == -math.inf and hi < math.inf else f"range [{m.group('lo')}, {m.group('hi')}]")
+        text = f"{text}, {rng}" if text else rng
+        lo_t, hi_t = max(lo_t, lo), min(hi_t, hi)
+    return text, value, lo_t, hi_t
+
+
+def deviation_sentence(c: dict) -> str:
+    """The first sentence of a deviation box: what differs, by how much, the status. From the
+    claim's fields in the claims file: "normal_branch_k200000: measured 0.8 against the paper's
+    0.7 ± 0.05 (0.1 above, +14%; band [0.75, 0.85]); open." """
+    cid, verdict = c.get("id", ""), c.get("verdict", "")
+    paper, value, lo, hi = _paper_text(c.get("expected", ""), c.get("tolerance", ""))
+    measured = c.get("measured")
+    band = c.get("deviation_band") or ""
+    status = c.get("status") or "status not stated"
+    notes = []
+    if not isinstance(measured, (int, float)) or isinstance(measured, bool):
+        what = f"no measurement against the paper's {paper}"
+    else:
+        x = float(measured)
+        what = f"measured {_num4(x)} {'within' if lo <= x <= hi else 'against'} the paper's {paper}"
+        if x < lo or x > hi:
+            ref = value if value is not None else (lo if x < lo else hi)
+            d = abs(x - ref)
+            off = f"{_sig2(d)} {'below' if x < ref else 'above'}"
+            if value is not None and value != 0:
+                off += f", {(x - value) / abs(value):+.0%}"
+            notes.append(off)
+    if band:
+        notes.append(("band " if verdict == "DEVIATION" else "deviation band ") + band)
+    if verdict == "skipped":
+        notes.insert(0, "not judged at this scale")
+    elif verdict == "FAIL":
+        notes.append("FAIL: outside the band too" if band else "FAIL")
+    elif verdict == "PASS":
+        notes.insert(0, "PASS")
+    return f"{cid}: {what}" + (f" ({'; '.join(notes)})" if notes else "") + f"; {status}."
 
 
 def _number(v) -> str:
@@ -200,6 +309,93 @@ def cited_table(t) -> CitedTable:
         rows.append([_number(t[c][i].item() if hasattr(t[c][i], "item") else t[c][i]) if i < len(t[c]) else ""
                      for c in cols])
     return CitedTable(t.name, t.description, [(c, t.units.get(c, "")) for c in cols], rows, n)
+
+
+def place_cited_tables(e: Experiment, run) -> None:
+    """Each table the deviation texts of a page cite, shown once: in the box of the first claim (in
+    page order) that cites it; the later boxes refer to it."""
+    shown = {}
+    rows = [c for f in e.figures for c in f.claims] + e.other_claims
+    for c in rows:
+        if not c.known_deviation:
+            continue
+        for n in tables_cited(" ".join((c.known_deviation, c.deviation_band_reason, c.tolerance_reason)),
+                              run.tables.keys()):
+            if n in shown:
+                c.cited_before.append((n, *shown[n]))
+            else:
+                t = cited_table(run.tables[n])
+                t.anchor = f"table-{len(shown) + 1}"
+                shown[n] = (t.anchor, c.id)
+                c.cited.append(t)
+
+
+_COMMIT = re.compile(r"(?<![0-9A-Za-z_])(?=[0-9a-f]*[a-f])(?=[0-9a-f]*[0-9])[0-9a-f]{7,40}(?![0-9A-Za-z_])")
+
+
+def commits_in(text: str) -> list[str]:
+    """The git commits a text names (7 to 40 hex digits with a letter and a digit), each once, in order."""
+    return list(dict.fromkeys(_COMMIT.findall(text or "")))
+
+
+def _same_commit(a: str, b: str) -> bool:
+    return bool(b) and (a.startswith(b) or b.startswith(a))
+
+
+# ---------------------------------------------------------------- the headline (issue 41)
+
+
+def _zero_headline() -> dict:
+    return {"statements": 0, "reproduced": 0, "deviate": 0, "fail": 0, "status": {s: 0 for s in STATUSES},
+            "other": {r: 0 for r in OTHER_ROLES}, "other_verdicts": {v: 0 for v in ("PASS", "FAIL", "DEVIATION")}}
+
+
+def _add(into: dict, h: dict) -> None:
+    for k in ("statements", "reproduced", "deviate", "fail"):
+        into[k] += h.get(k, 0)
+    for k in ("status", "other", "other_verdicts"):
+        for name, n in (h.get(k) or {}).items():
+            into[k][name] = into[k].get(name, 0) + n
+
+
+def _sum(headlines) -> dict | None:
+    """The sum of headline counts (None where none is given; None if none is)."""
+    given = [h for h in headlines if h is not None]
+    if not given:
+        return None
+    out = _zero_headline()
+    for h in given:
+        _add(out, h)
+    return out
+
+
+def sum_headlines(entries) -> dict | None:
+    """An experiment's headline entries (one per paper its claims name) summed."""
+    return _sum(entries) if isinstance(entries, list) and entries else None
+
+
+def headline_lines(experiments: list, totals: dict) -> dict:
+    """The headline as `granrepro check --all` prints it for the same folder: per paper (the claims
+    file's headline entries grouped by paper and summed, papers in the order first seen), its line
+    and its line of the claims not in the headline, and the totals line of every claim."""
+    papers = {}
+    for x in experiments:
+        if not x.get("has_results"):
+            continue
+        for h in x.get("headline") or []:
+            _add(papers.setdefault(h["paper"], _zero_headline()), h)
+    lines, others = [], []
+    for paper, c in papers.items():
+        st, ot, ov = c["status"], c["other"], c["other_verdicts"]
+        lines.append(f"{paper}: {c['statements']} statements \u2014 {c['reproduced']} reproduced, {c['deviate']} deviate "
+                     f"({st.get('settled', 0)} settled, {st.get('inherent', 0)} inherent, {st.get('open', 0)} open)"
+                     + (f", {c['fail']} FAIL" if c["fail"] else ""))
+        others.append(f"{paper}, not in the headline: {ot.get('identity', 0)} identity, "
+                      f"{ot.get('calibration', 0)} calibration, {ot.get('validation', 0)} validation "
+                      f"({ov.get('PASS', 0)} PASS, {ov.get('FAIL', 0)} FAIL, {ov.get('DEVIATION', 0)} DEVIATION)")
+    return {"papers": lines, "others": others,
+            "totals": f"totals: {totals['PASS']} PASS, {totals['FAIL']} FAIL, {totals['DEVIATION']} DEVIATION, "
+                      f"{totals['skipped']} skipped"}
 
 
 # ---------------------------------------------------------------- images
@@ -340,9 +536,9 @@ def build_model(results: str, judged: dict, final_to: str, link_images: bool, wa
                            c.get("tolerance_kind", ""), c.get("tolerance_reason", ""), c.get("verdict", "FAIL"),
                            c.get("known_deviation", ""), c.get("deviation_band_kind", ""),
                            c.get("deviation_band_reason", ""))
-            cited = tables_cited(" ".join((row.known_deviation, row.deviation_band_reason, row.tolerance_reason)),
-                                 run.tables.keys()) if run else []
-            row.cited = [cited_table(run.tables[n]) for n in cited]
+            row.role, row.status = c.get("role") or "", (c.get("status") or "") if row.known_deviation else ""
+            if row.known_deviation:
+                row.gist = deviation_sentence(c)
             fid = figure_of_claim(name, c, fig_ids, overrides)
             if fid:
                 by_id[fid].claims.append(row)
@@ -350,19 +546,38 @@ def build_model(results: str, judged: dict, final_to: str, link_images: bool, wa
             else:
                 e.other_claims.append(row)
                 row.section, row.section_title = f"{name}-other", f"other claims of {name}"
+        if run is not None:
+            e.code_version = str(run.summary.get("code_version", "") or "")
+            e.commit = next(iter(commits_in(e.code_version)), "")
+            place_cited_tables(e, run)
+            for c in e.claims:
+                c.commits_named = [h for h in commits_in(" ".join((c.known_deviation, c.deviation_band_reason,
+                                                                     c.tolerance_reason)))
+                                   if not _same_commit(h, e.commit)]
         e.totals = _totals(e.claims)
+        e.headline = sum_headlines(x.get("headline")) if e.has_results else None
         experiments.append(e)
         prefixes = {fid.split("-")[0] for fid in fig_ids}
         for p in papers:
             if p["prefix"] in prefixes:
                 p["experiments"].append(e)
+    # in the order of the experiments (the registry's), as `check --all` prints its papers
+    papers.sort(key=lambda p: min((experiments.index(e) for e in p["experiments"]), default=len(experiments)))
+    for p, x in ((p, x) for p in papers for x in judged["experiments"] if x["name"] in {e.name for e in p["experiments"]}):
+        if "name" not in p and x.get("has_results") and x.get("headline"):
+            p["name"] = x["headline"][0]["paper"]  # "Luding 1998", as the headline names it
     for p in papers:
         p["totals"] = _totals([c for e in p["experiments"] for c in e.claims])
+        p["headline"] = _sum([e.headline for e in p["experiments"]])
+        p.setdefault("name", "")
     ordered = [e for p in papers for e in p["experiments"]]
     ordered += [e for e in experiments if e not in ordered]
     claims = [c for e in ordered for c in e.claims]
+    totals = _totals(claims)
     return {"papers": [p for p in papers if p["experiments"]], "experiments": experiments, "claims": claims,
-            "totals": _totals(claims), "results": shown, "verdicts": VERDICTS,
+            "totals": totals, "results": shown, "verdicts": VERDICTS, "roles": ROLES, "statuses": STATUSES,
+            "headline": headline_lines(judged["experiments"], totals),
+            "all_headline": _sum([e.headline for e in experiments]),
             "missing_results": [e.name for e in experiments if not e.has_results],
             "missing_figures": [(e, f) for e in experiments for f in e.figures if f.missing and e.has_results],
             "scales": sorted({e.scale for e in experiments if e.scale}),
@@ -373,12 +588,20 @@ def build_model(results: str, judged: dict, final_to: str, link_images: bool, wa
 # ---------------------------------------------------------------- writing
 
 
+def breakable(text: str):
+    """The text escaped, with a line break allowed after each '_' (a long claim id in a narrow column)."""
+    import markupsafe
+
+    return markupsafe.escape(text).replace("_", markupsafe.Markup("_<wbr>"))
+
+
 def render(model: dict, staging: str) -> None:
     import jinja2
 
     env = jinja2.Environment(loader=jinja2.PackageLoader("granrepro.report", "templates"),
                              autoescape=True, undefined=jinja2.StrictUndefined,
                              trim_blocks=True, lstrip_blocks=True)
+    env.filters["breakable"] = breakable
     pages = {"index.html": env.get_template("index.html.j2").render(**model)}
     for e in model["experiments"]:
         if e.has_results:  # an experiment without results is listed on the summary, without a page
@@ -507,6 +730,32 @@ def make_report(results: str, judged: dict, to: str, warn=None) -> dict:
 _NAME = re.compile(r"[a-z0-9][a-z0-9-]{0,63}")  # an experiment or figure id: also a file name here
 _CLAIM_TEXTS = ("statement", "source", "expected", "tolerance", "tolerance_reason", "tolerance_kind", "verdict",
                 "known_deviation", "deviation_band", "deviation_band_kind", "deviation_band_reason")
+_COUNTS = ("statements", "reproduced", "deviate", "fail")
+_COUNT_NAMES = {"status": STATUSES, "other": OTHER_ROLES, "other_verdicts": ("PASS", "FAIL", "DEVIATION")}
+_MAX_COUNT = 10**6
+
+
+def _count(where: str, v) -> None:
+    if not isinstance(v, int) or isinstance(v, bool) or not 0 <= v <= _MAX_COUNT:
+        raise BadInput(f"{where} must be a count (an integer from 0 to {_MAX_COUNT})")
+
+
+def _validate_headline(at: str, headline) -> None:
+    """An experiment's headline as `granrepro report` writes it (headline_json): absent in claims
+    files of before issue 41."""
+    _field(at, headline, list, "an array")
+    for k, h in enumerate(headline or []):
+        where = f"{at}[{k}]"
+        _field(where, h, dict, "an object", optional=False)
+        _field(f"{where}.paper", h.get("paper"), str, "text", optional=False)
+        for key in _COUNTS:
+            _count(f"{where}.{key}", h.get(key))
+        for key, names in _COUNT_NAMES.items():
+            _field(f"{where}.{key}", h.get(key), dict, "an object", optional=False)
+            for name, n in h[key].items():
+                if name not in names:
+                    raise BadInput(f"{where}.{key} names '{printable(name)[:40]}'; allowed: {', '.join(names)}")
+                _count(f"{where}.{key}.{name}", n)
 
 
 def _field(where: str, value, kind, what: str, optional: bool = True):
@@ -541,11 +790,16 @@ def validate_judged(judged, file: str) -> None:
             _field(f"{at}.figures[{j}].caption", f.get("caption"), str, "text")
         for j, n in enumerate(x.get("notes") or []):
             _field(f"{at}.notes[{j}]", n, str, "text", optional=False)
+        _validate_headline(f"{at}.headline", x.get("headline"))
         for j, c in enumerate(x.get("claims") or []):
             _field(f"{at}.claims[{j}]", c, dict, "an object", optional=False)
             _field(f"{at}.claims[{j}].id", c.get("id"), str, "text", optional=False)
             for k in _CLAIM_TEXTS:
                 _field(f"{at}.claims[{j}].{k}", c.get(k), str, "text")
+            # absent in claims judged before issue 41 (shown as "—"); else one of expected/README.md's
+            for k, allowed in (("role", ROLES), ("status", STATUSES)):
+                if c.get(k) is not None and c[k] not in allowed:
+                    raise BadInput(f"{at}.claims[{j}].{k} must be one of {', '.join(allowed)}")
             _field(f"{at}.claims[{j}].measured", c.get("measured"), (int, float), "a number or null")
 
 
