@@ -28,7 +28,7 @@ table=$(for ((s = 1; s <= n; s++)); do
   "$bin" check --all --missing-ok --out "$out/seed$s" 2> /dev/null || true
 done | awk -v n="$n" '
   /^check / { ex = $2; next }
-  /^  claim / || /^  \(/ || /^totals/ || NF < 2 { next }
+  !/^  / || /^  claim / || /^  \(/ || NF < 2 { next } # claim rows only: not the headline, totals or notes
   { v = $NF; if (v == "skipped") next; id = ex "/" $1; seen[id]++; count[id, v]++ }
   END {
     printf "%-52s %5s %9s %5s  (of %d seeds)\n", "claim", "PASS", "DEVIATION", "FAIL", n

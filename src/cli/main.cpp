@@ -203,7 +203,7 @@ int run_all(const RunOptions& base) {
         }
         rc = rc == 1 || r == 1 ? 1 : std::max(rc, r);
     }
-    if (mpi::rank() == 0) std::printf("%stotals: %s\n", totals.headline().c_str(), totals.text().c_str());
+    if (mpi::rank() == 0) std::fputs(totals.closing().c_str(), stdout);
     return rc;
 }
 

@@ -145,6 +145,11 @@ void VerdictCounts::add(const std::vector<ClaimResult>& results) {
     add_to_headline(papers, results);
 }
 
+std::string VerdictCounts::closing() const {
+    return headline() + "totals: " + text() + "\n" +
+           (skipped ? "(skipped: claims stated for the other scale; their values are shown for information, not judged)\n" : "");
+}
+
 std::string VerdictCounts::text() const {
     return std::to_string(pass) + " PASS, " + std::to_string(fail) + " FAIL, " + std::to_string(deviation) +
            " DEVIATION, " + std::to_string(skipped) + " skipped";

@@ -86,6 +86,9 @@ struct VerdictCounts {
     // "Luding 1998: N statements — P reproduced, D deviate (s settled, i inherent, o open)" and,
     // on its own line, "Luding 1998, not in the headline: ..." per paper.
     std::string headline() const;
+    // What check --all and all close with: the headline, "totals: <text()>", and, when some were
+    // skipped, one line saying what skipped means (README, "Resuming, checking, verifying").
+    std::string closing() const;
 };
 
 // Throws InputError naming the file, the claim and the key for a malformed claim, including a

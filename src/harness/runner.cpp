@@ -721,7 +721,7 @@ int check_all(const fs::path& out, const CheckOptions& opt) {
         if (has_results(e.name, out)) rc |= check_experiment(e.name, out, opt, &totals);
         else missing.push_back(e.name);
     }
-    std::printf("%stotals: %s\n", totals.headline().c_str(), totals.text().c_str());
+    std::fputs(totals.closing().c_str(), stdout);
     std::fflush(stdout);
     if (!missing.empty()) {
         std::fprintf(stderr, "granrepro: check --all: no results in %s for %zu experiment%s: %s%s\n", out.c_str(),

@@ -274,6 +274,17 @@ Verdict deviation_verdict(const nlohmann::json& scalars, Scale scale, std::size_
     return evaluate_claims(claims, scalars, scale).at(claim).verdict;
 }
 
+TEST(Claims, TheClosingLinesSayWhatSkippedMeansOnlyWhenSomeWereSkipped) {
+    VerdictCounts counts;
+    counts.pass = 3;
+    EXPECT_NE(counts.closing().find("totals: 3 PASS, 0 FAIL, 0 DEVIATION, 0 skipped\n"), std::string::npos);
+    EXPECT_EQ(counts.closing().find("(skipped:"), std::string::npos);
+    counts.skipped = 2;
+    const std::string text = counts.closing();
+    EXPECT_NE(text.find("totals: 3 PASS, 0 FAIL, 0 DEVIATION, 2 skipped\n(skipped: claims stated for the other scale"), std::string::npos)
+        << text;
+}
+
 TEST(Claims, DeviationWithinPaperTolerancePasses) {
     EXPECT_EQ(deviation_verdict({{"x", 1.05}}, Scale::Quick, 0), Verdict::Pass);
     EXPECT_EQ(deviation_verdict({{"y", 12.0}}, Scale::Quick, 1), Verdict::Pass);
