@@ -170,7 +170,7 @@ def check_all_headline(binary, out, cwd=None) -> list[str]:
     r = subprocess.run([binary, "check", "--all", "--missing-ok", "--out", str(out)], capture_output=True, text=True,
                        cwd=cwd)
     assert r.returncode in (0, 1), r.stderr
-    lines = [line for line in r.stdout.splitlines() if line and not line.startswith((" ", "check "))]
+    lines = [line for line in r.stdout.splitlines() if line and not line.startswith((" ", "check ", "("))]
     assert lines and lines[-1].startswith("totals: "), r.stdout[-2000:]
     return lines
 
