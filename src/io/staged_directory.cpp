@@ -68,7 +68,7 @@ void rename_or_throw(const fs::path& from, const fs::path& to, const fs::path& s
 namespace {
 // The kernel's pseudo-filesystems: a directory there may pass access(2) for root, but nothing a
 // run writes can be created in it (`--out /proc/self` used to pass --dry-run, then fail).
-bool pseudo_filesystem(const fs::path& dir) {
+bool on_kernel_pseudo_fs(const fs::path& dir) {
     struct statfs s {};
     if (::statfs(dir.c_str(), &s) != 0) return false;
     for (const auto magic : {PROC_SUPER_MAGIC, SYSFS_MAGIC, CGROUP_SUPER_MAGIC, CGROUP2_SUPER_MAGIC, DEBUGFS_MAGIC})
@@ -86,7 +86,7 @@ void check_output_directory(const fs::path& dir, const std::string& flag) {
         existing = existing.has_parent_path() && existing.parent_path() != existing ? existing.parent_path() : fs::path(".");
     const std::string which = existing == dir ? std::string() : " (" + existing.string() + ")";
     if (!fs::is_directory(existing, ec)) throw InputError(shown + "not a directory" + which);
-    if (pseudo_filesystem(existing))
+    if (on_kernel_pseudo_fs(existing))
         throw InputError(shown + "on a kernel pseudo-filesystem (/proc, /sys), not a place for results" + which);
     if (::access(existing.c_str(), W_OK | X_OK) != 0) throw InputError(shown + "directory is not writable" + which);
 }
