@@ -18,6 +18,7 @@ struct DriftArrays {
     double *x, *y, *vx, *vy, *vpx, *vpy, *ux, *uy, *fx, *fy;
     const double* inv_mass;
     double h, dt, len, g;  // half step, step [s], periodic length [m], gravity [m/s^2]
+    double hp;             // half of the last step, whose closing kick is pending [s] (h unless dt changed)
     double cpx, cpy;       // reference displacement of the rebuild test [m]
 };
 
@@ -45,9 +46,9 @@ template <class V, class M>
 // fields, so reading those inside the loop would reload them at every group).
 template <class V>
 struct DriftConsts {
-    V zero, h, dt, len, neg_len, g, cpx, cpy;
+    V zero, h, hp, dt, len, neg_len, g, cpx, cpy;
     explicit DriftConsts(const DriftArrays& a)
-        : zero{}, h(zero + a.h), dt(zero + a.dt), len(zero + a.len), neg_len(zero - a.len), g(zero + a.g),
+        : zero{}, h(zero + a.h), hp(zero + a.hp), dt(zero + a.dt), len(zero + a.len), neg_len(zero - a.len), g(zero + a.g),
           cpx(zero + a.cpx), cpy(zero + a.cpy) {}
 };
 
@@ -64,8 +65,8 @@ template <bool Pending, class V>
     lanes_load(vx, a.vx + i);
     lanes_load(vy, a.vy + i);
     if constexpr (Pending) {
-        vx = vx + c.h * ax;
-        vy = vy + c.h * ay;
+        vx = vx + c.hp * ax;
+        vy = vy + c.hp * ay;
     }
     vx = vx + c.h * ax;
     vy = vy + c.h * ay;

@@ -74,7 +74,8 @@ class PipeEngine {
 
 public:
     PipeEngine(NormalLaw normal, ShearLaw shear, PipeGeometry geo, double dt, double skin)
-        : normal_(normal), shear_(shear), geo_(geo), dt_(dt), skin_(skin) {
+        : normal_(normal), shear_(shear), geo_(geo), dt_(dt), dt_closing_(dt), skin_(skin) {
+        if (!(dt > 0)) throw std::invalid_argument("time step must be positive");
         const double n = geo.length / geo.wall_spacing;
         if (std::abs(n - std::round(n)) > 1e-9 * n)
             throw std::invalid_argument("pipe length must be a multiple of the wall spacing");
@@ -111,6 +112,13 @@ public:
     const ShearLaw& shear_law() const { return shear_; }
     double time() const { return t_; }
     double dt() const { return dt_; }
+    // The step of the following steps (velocity Verlet with a variable step: the pending closing
+    // half kick of the last step keeps that step's dt/2, the next one opens with the new dt/2).
+    // Unchanged steps give the same bits as before.
+    void set_dt(double dt) {
+        if (!(dt > 0)) throw std::invalid_argument("time step must be positive");
+        dt_ = dt;
+    }
     long steps() const { return steps_; }
     long list_builds() const { return builds_; }
     long exact_rebuild_tests() const { return exact_tests_; }
@@ -120,10 +128,10 @@ public:
     const std::vector<double>& x() const { return by_id(out_[0], [&](std::size_t i) { return x_[i]; }); }
     const std::vector<double>& y() const { return by_id(out_[1], [&](std::size_t i) { return y_[i]; }); }
     const std::vector<double>& vx() const {
-        return by_id(out_[2], [&](std::size_t i) { return kick_pending() ? vx_[i] + 0.5 * dt_ * accel_x(i) : vx_[i]; });
+        return by_id(out_[2], [&](std::size_t i) { return kick_pending() ? vx_[i] + 0.5 * dt_closing_ * accel_x(i) : vx_[i]; });
     }
     const std::vector<double>& vy() const {
-        return by_id(out_[3], [&](std::size_t i) { return kick_pending() ? vy_[i] + 0.5 * dt_ * accel_y(i) : vy_[i]; });
+        return by_id(out_[3], [&](std::size_t i) { return kick_pending() ? vy_[i] + 0.5 * dt_closing_ * accel_y(i) : vy_[i]; });
     }
     const std::vector<double>& radius() const { return by_id(out_[4], [&](std::size_t i) { return rad_[i]; }); }
     const std::vector<double>& mass() const { return by_id(out_[5], [&](std::size_t i) { return mass_[i]; }); }
@@ -338,6 +346,7 @@ private:
         if (tid == 0) {
             finish_step_stats(true);
             t_ += dt_;
+            dt_closing_ = dt_;
             ++steps_;
         }
     }
@@ -353,7 +362,7 @@ private:
         Scratch& s = scratch_[std::size_t(tid)];
         const pipe_detail::DriftArrays a{x_.data(), y_.data(), vx_.data(), vy_.data(), vpx_.data(), vpy_.data(),
                                          dispx_.data(), dispy_.data(), fx_.data(), fy_.data(), inv_mass_.data(),
-                                         0.5 * dt_, dt_, geo_.length, geo_.gravity, s.cprev_x, s.cprev_y};
+                                         0.5 * dt_, dt_, geo_.length, geo_.gravity, 0.5 * dt_closing_, s.cprev_x, s.cprev_y};
         const pipe_detail::DriftSums sums = s.kick_pending ? pipe_detail::drift<true>(a, begin_of(tid), end_of(tid))
                                                            : pipe_detail::drift<false>(a, begin_of(tid), end_of(tid));
         s.sum_x = sums.sx;
@@ -835,7 +844,7 @@ private:
     NormalLaw normal_;
     ShearLaw shear_;
     PipeGeometry geo_;
-    double dt_, skin_;
+    double dt_, dt_closing_, skin_; // this step's, and the last step's (its closing half kick pending) [s]
     double t_ = 0;
     long steps_ = 0, builds_ = 0, exact_tests_ = 0;
     bool need_build_ = true;
