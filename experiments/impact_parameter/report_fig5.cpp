@@ -7,6 +7,7 @@
 
 #include "analysis/seed_stats.hpp"
 #include "analysis/stress_shape.hpp"
+#include "data/parameter_set.hpp"
 #include "experiments/impact_parameter/spec.hpp"
 #include "theory/kinetic_theory.hpp"
 
@@ -51,6 +52,17 @@ void fig5_stress(Result& res, const ImpactSpec& s, const PointResult& pr, const 
             add_row(t, {(ix + 0.5) * cell, (iy + 0.5) * cell, -c.sigma_min, -c.sigma_max, h1 * c.axis_min.x(), h1 * c.axis_min.y(),
                         h2 * c.axis_max.x(), h2 * c.axis_max.y(), static_cast<double>(c.collisions), c.pressure()});
         }
+}
+
+// The caption of Fig. 5: sigma_max "measured in arbitrary units" of the left, middle and right panels.
+constexpr double kFig5SigmaMax080 = 0.894, kFig5SigmaMax090 = 0.568, kFig5SigmaMax095 = 1.56;
+
+// Share of the finite values of v below x (NaN for none).
+double share_below(const std::vector<double>& v, double x) {
+    double n = 0, below = 0;
+    for (double y : v)
+        if (std::isfinite(y)) { n += 1; below += (y < x); }
+    return n > 0 ? below / n : NAN;
 }
 
 // Index of r in rs, or -1 when it is not swept.
@@ -105,6 +117,7 @@ void fig5_orderings(Result& res, const ImpactSpec& s, const std::vector<PointRes
     res.scalar("v_rms_ratio_080_over_095", f8.v_rms / f95.v_rms, "1", "rms speed at t_end, r=0.8 over r=0.95");
     const double ns = static_cast<double>(s.n_seeds());
     double n_090_lowest = 0, n_095_highest = 0, ordered = 0, reversed = 0, stress_order = 0, r89 = 0, r895 = 0;
+    std::vector<double> q9, q95; // per seed: sigma_max(0.9) and sigma_max(0.95) over sigma_max(0.8)
     for (std::size_t seed = 0; seed < s.n_seeds(); ++seed) {
         const PointResult &p8 = at(s, pts, seed, std::size_t(k8)), &p9 = at(s, pts, seed, std::size_t(k9)),
                           &p95 = at(s, pts, seed, std::size_t(k95));
@@ -117,6 +130,22 @@ void fig5_orderings(Result& res, const ImpactSpec& s, const std::vector<PointRes
         stress_order += (c > a && a > b);
         r89 += std::log(a / b) / ns;
         r895 += std::log(a / c) / ns;
+        q9.push_back(p9.sigma_max / p8.sigma_max);
+        q95.push_back(p95.sigma_max / p8.sigma_max);
+    }
+    // The caption's sigma_max in arbitrary units, as ratios to the left panel (one run each): the
+    // single-run rule (expected/README.md) asks the paper's ratio to lie between our 10th and 90th
+    // percentiles over seeds, i.e. a share of seeds below it in [0.1, 0.9].
+    const struct { const char *name, *what; const std::vector<double>& q; double paper; } ratios[] = {
+        {"sigma_max_ratio_090_over_080", "0.9", q9, kFig5SigmaMax090 / kFig5SigmaMax080},
+        {"sigma_max_ratio_095_over_080", "0.95", q95, kFig5SigmaMax095 / kFig5SigmaMax080}};
+    for (const auto& q : ratios) {
+        const std::string n = q.name, what = q.what;
+        res.scalar(n + "_median", median(q.q), "1", "sigma_max(r=" + what + ")/sigma_max(r=0.8) per seed, median over seeds");
+        res.scalar(n + "_q10", quantile(q.q, 0.1), "1", "its 10th percentile over seeds");
+        res.scalar(n + "_q90", quantile(q.q, 0.9), "1", "its 90th percentile over seeds");
+        res.scalar(n + "_fraction_below_paper", share_below(q.q, q.paper), "1",
+                   "share of seeds whose ratio lies below the caption's " + number_text(q.paper, 4) + " (Fig. 5: 0.568, 1.56 over 0.894)");
     }
     res.scalar("seeds_sigma_max_090_lowest", n_090_lowest / ns, "1",
                "fraction of seeds where sigma_max(0.9) is the smallest of the three (as in the paper)");
@@ -151,10 +180,14 @@ void fig5_eddies(Result& res, const ImpactSpec& s, const std::vector<PointResult
         }
         res.scalar("eddy_pair_fraction_" + lb, found / ns, "1",
                    "fraction of seeds whose strongest co-rotating eddy pair at t_end beats at least eddy_significance of its velocity shuffles");
+        res.scalar("eddy_pair_fraction_err_" + lb, std::sqrt(found / ns * (1.0 - found / ns) / ns), "1",
+                   "binomial standard error of eddy_pair_fraction, sqrt(f (1 - f) / seeds)");
         res.scalar("eddy_strength_mean_" + lb, e_sum, "1", "eddy-pair strength E at t_end, mean over seeds");
         res.scalar("eddy_core_pressure_ratio_median_" + lb, median(ratios), "1",
                    "mean Eq. (9) pressure (0.5-1 s) of the stress cells in the two eddy cores over that of the other cells, median over seeds with a significant pair");
         res.scalar("eddy_core_pressure_ratio_seeds_" + lb, static_cast<double>(ratios.size()), "1", "seeds entering that median");
+        res.scalar("eddy_core_pressure_ratio_sem_" + lb, mean_sd(ratios).sem, "1",
+                   "standard error of the mean of that ratio over the seeds with a significant pair (NaN below two)");
         res.scalar("eddy_core_pressure_ratio_median_all_" + lb, median(all), "1",
                    "the same ratio for every seed's strongest co-rotating pair, significant or not, median over seeds");
         // Sec. 3.2's stress statements (Fig. 5 bottom): anisotropy outside the eddy cores over inside,
