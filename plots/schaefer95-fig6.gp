@@ -1,7 +1,11 @@
 # Schäfer & Wolf (1995) Fig. 6: steady-state mean velocity in a vertical pipe against e_N for each
-# k_N, from slow starts (filled symbols) and fast starts (open symbols, shifted right by 0.006 in
-# e_N so that coinciding states stay visible). A run that reached no steady state within its budget
-# is drawn as an arrow pointing up from its last speed (outcome 1: free fall, 2: still drifting).
+# k_N, from slow starts (filled symbols, solid lines) and fast starts (filled symbols, dashed lines,
+# shifted right by 0.006 in e_N so that coinciding states stay visible), at the run's time step
+# (time_step; by default dt resolving the passage of a grain along the wall grains). Open symbols,
+# dotted lines, shifted by 0.012: the fast starts at Eq. (5)'s step, t_col/50 throughout (the
+# paper's stated Δt; columns *_fast_eq5), whose fast states lock to the step (issue 42). A run that
+# reached no steady state is drawn as an arrow pointing up from its last speed (outcome 1: free
+# fall, 2: still drifting or past v_abort).
 # Lines join a start's states within one regime (normal or emergency brake) only.
 # Dotted lines: v_crit of each k_N (Eq. 8: v_crit = v_crit_2000 sqrt(k_N / 2000 N/m)), the border
 # between the normal regime and brake failure.
@@ -27,7 +31,9 @@ do for [i=1:words(tables)] { if (strstrt(word(tables, i), 'steady_k') == 1) { st
 kname(i) = word(steady, i)[9:]
 file(i) = datadir.'/'.word(steady, i).'.tsv'
 # A start's steady speed if its regime is em (0 normal, 1 emergency brake), else NaN.
-regv(s, em) = (column("v_".s) == column("v_".s) && (column("impact_contacts_".s) >= 2 ? 1 : 0) == em) ? column("v_".s) : NaN
+# (The Eq. (5) runs have no impact count: their steady states are drawn as one series, em = 1.)
+regime(s) = (s eq "fast_eq5") ? 1 : (column("impact_contacts_".s) >= 2 ? 1 : 0)
+regv(s, em) = (column("v_".s) == column("v_".s) && regime(s) == em) ? column("v_".s) : NaN
 colors = "#0072B2 #D55E00 #009E73"
 filled = "7 5 9"
 open = "6 4 8"
@@ -37,12 +43,13 @@ open = "6 4 8"
 cmd = "plot '+' using (0.5):(1) every ::0::0 with dots lc rgb 'white' notitle"
 do for [i=1:words(steady)] {
   f = file(i)
-  do for [s in "slow fast"] {
-    shift = (s eq "fast") ? "0.006" : "0"
-    style = sprintf("with linespoints pt %s ps %s lw 1.5 dt %s lc rgb '%s'", (s eq "slow") ? word(filled, i) : word(open, i), \
-      (s eq "slow") ? "1.3" : "1.5", (s eq "slow") ? "1" : "2", word(colors, i))
+  do for [s in "slow fast fast_eq5"] {
+    shift = (s eq "fast") ? "0.006" : ((s eq "fast_eq5") ? "0.012" : "0")
+    style = sprintf("with linespoints pt %s ps %s lw 1.5 dt %s lc rgb '%s'", (s eq "fast_eq5") ? word(open, i) : word(filled, i), \
+      (s eq "slow") ? "1.3" : "1.1", (s eq "slow") ? "1" : ((s eq "fast") ? "2" : "3"), word(colors, i))
+    label = (s eq "fast_eq5") ? "fast start, Eq. (5) Δt" : s." start"
     # Every series has its legend entry, whether or not it has a steady state to draw.
-    cmd = cmd.sprintf(", NaN %s title 'k_N = %s N/m, %s start'", style, kname(i), s)
+    cmd = cmd.sprintf(", NaN %s title 'k_N = %s N/m, %s'", style, kname(i), label)
     # The line joins states of one regime only (Fig. 5's criterion: fewer than two wall grains
     # per impact is the normal regime, two or more the emergency brake), so a start that lands on
     # the other branch at the next e_N is not drawn as a line through the gap between the branches.
@@ -55,7 +62,7 @@ do for [i=1:words(steady)] {
     stats f using (column("outcome_".s) > 0 ? 1 : 0) nooutput
     if (STATS_sum > 0) {
       cmd = cmd.sprintf(", file(%d) using ($1 + %s):(column('outcome_%s') > 0 ? column('v_last_%s') : NaN):(0):(column('v_last_%s') * 0.6) with vectors head %s size screen 0.008,20 lw 1.5 lc rgb '%s' notitle", \
-        i, shift, s, s, s, (s eq "slow") ? "filled" : "empty", word(colors, i))
+        i, shift, s, s, s, (s eq "fast_eq5") ? "empty" : "filled", word(colors, i))
     }
   }
 }
@@ -76,7 +83,7 @@ do for [fmt in "png pdf"] {
   set object 1 rect from paper_edge - 0.025, graph 0 to paper_edge + 0.025, graph 1 fillcolor rgb "#ededed" fillstyle solid noborder behind
   set object 2 rect from graph 0, first paper_fast_lo to graph 1, first paper_fast_hi fillcolor rgb "#ededed" fillstyle solid noborder behind
   set arrow 1 from paper_edge, graph 0 to paper_edge, graph 1 nohead dt 2 lw 2 lc rgb "#999999" back
-  set title "vertical pipe, width 2 cm, φ = 0.55, μ = 0.5"
+  set title "vertical pipe, width 2 cm, φ = 0.55, μ = 0.5; filled: the run's time step (time\\_step), open: Eq. (5)'s Δt = t_{col}/50"
   set grid lc rgb "#dddddd"
   set logscale y
   set format y "%g"

@@ -30,13 +30,37 @@ namespace bistable_pipe_detail {
 
 std::vector<Task> make_tasks(const BistablePipeSpec& b) {
     const auto &ks = b.kN_list, &es = b.eN_list;
+    const double ws = b.time_step == "wall" ? b.wall_steps : 0.0;
     std::vector<Task> tasks;
     for (double k : ks)
         for (double e : es)
-            for (bool fast : {false, true}) tasks.push_back({k, e, fast, b.length});
+            for (bool fast : {false, true}) tasks.push_back({k, e, fast, b.length, ws, kFig6});
     // The length check: the second k_N at its largest e_N, slow start, at a second pipe length.
-    if (b.length_check > 0) tasks.push_back({ks.size() > 1 ? ks[1] : ks[0], es.back(), false, b.length_check});
+    const double k_check = ks.size() > 1 ? ks[1] : ks[0];
+    if (b.length_check > 0) tasks.push_back({k_check, es.back(), false, b.length_check, ws, kLengthCheck});
+    // Beside the resolved fast starts, the same starts at Eq. (5)'s step (the paper's), where the
+    // wall rule can take over before the plug reaches v_abort; elsewhere the two runs are one.
+    if (ws > 0) {
+        const PipeSpec s = pipe_spec(b, 0);
+        for (double k : ks)
+            for (double e : es)
+                if (b.wall_spacing / (ws * pipe_time_step(s, pipe_law(k, e, b.m_mean))) < b.v_abort)
+                    tasks.push_back({k, e, true, b.length, 0.0, kEq5});
+    }
+    // Convergence: one fast start again with every step halved (Eq. 5's and the wall rule's).
+    if (b.dt_check_eN > 0) tasks.push_back({k_check, b.dt_check_eN, true, b.length, 2 * ws, kDtCheck, 2.0});
     return tasks;
+}
+
+long find_task(const std::vector<Task>& tasks, int role, double k, double e, bool fast) {
+    for (std::size_t i = 0; i < tasks.size(); ++i)
+        if (tasks[i].role == role && tasks[i].k == k && tasks[i].e == e && tasks[i].fast == fast) return long(i);
+    return -1;
+}
+
+std::string series_name(const Task& t) {
+    static const char* const suffix[] = {"", "_length_check", "_eq5", "_dt_check"};
+    return "series_k" + number_text(t.k) + "_e" + number_text(t.e) + (t.fast ? "_fast" : "_slow") + suffix[t.role];
 }
 
 // Fig. 6 as a protocol (harness/protocol.hpp): one sweep point per pipe run (Task).
@@ -72,8 +96,10 @@ struct BistablePipe {
         for (double k : b.kN_list)
             for (double e : b.eN_list) {
                 const double dt = pipe_time_step(s, pipe_law(k, e, s.m_mean)); // build_pipe's step
-                p.limit_work({"budget_tcol", "budget_min", "steps_per_contact", "kN_list", "eN_list", "phi", "width", "length", "d_mean"},
-                             double(n) * time_budget(b, k, e) / dt, kMaxGrainSteps, "grain-steps in one run");
+                p.limit_work({"budget_tcol", "budget_min", "steps_per_contact", "time_step", "wall_steps", "v_abort", "dt_check_eN",
+                              "kN_list", "eN_list", "phi", "width", "length", "d_mean"},
+                             double(n) * time_budget(b, k, e) / smallest_time_step(b, dt) * (b.dt_check_eN > 0 ? 2 : 1),
+                             kMaxGrainSteps, "grain-steps in one run");
                 // One sample per step at most: sample_dt = 1e-300 overflowed window/sample_dt and
                 // crashed the drift fit.
                 if (!(b.sample_dt >= dt))
@@ -81,6 +107,9 @@ struct BistablePipe {
                              "sample_dt must be at least the time step dt = " + number_text(dt) + " s (k_N = " +
                                  number_text(k) + " N/m, e_N = " + number_text(e) + "): one sample per step");
             }
+        if (b.dt_check_eN > 0 && std::find(b.eN_list.begin(), b.eN_list.end(), b.dt_check_eN) == b.eN_list.end())
+            p.reject(std::vector<std::string>{"dt_check_eN", "eN_list"},
+                     "dt_check_eN must be 0 (off) or one of eN_list: its run is compared with that Fig. 6 run");
         if (b.wall_spacing - b.d_wall >= b.d_mean * (1 - b.polydispersity))
             p.reject(std::vector<std::string>{"wall_spacing", "d_wall", "d_mean", "polydispersity"},
                      "the gaps between wall grains (wall_spacing - d_wall) must be narrower than the smallest grain, "
@@ -113,12 +142,11 @@ struct BistablePipe {
         std::vector<long> order = index_order(tasks.size());
         auto key = [&](long i) {
             const Task& t = tasks[std::size_t(i)];
-            return std::make_tuple(t.fast, t.length, t.e, t.k);
+            return std::make_tuple(t.fast, t.length, t.e, t.k, t.role);
         };
         std::stable_sort(order.begin(), order.end(), [&](long x, long y) { return key(x) > key(y); });
         return order;
     }
-    // Each point's random stream is its grid index.
     static RunResult compute(const Spec& b, const std::vector<Task>& tasks, long i, const PointContext& ctx) {
         const Task& t = tasks[std::size_t(i)];
         PipeSpec s = pipe_spec(b, ctx.seed);
@@ -127,7 +155,12 @@ struct BistablePipe {
         s.geo.length = std::round(t.length / s.geo.wall_spacing) * s.geo.wall_spacing;
         s.v0 = t.fast ? b.fast_v0 : b.slow_v0;
         s.agitation = std::min(b.agitation, b.agitation_vcrit * v_crit(b, t.k));
-        s.stream = std::uint64_t(i);
+        s.wall_steps = t.wall_steps;
+        s.steps_per_contact *= t.refine;
+        // Each point's random stream is its grid index; a comparison run (Eq. 5, half the step)
+        // takes the stream of the Fig. 6 run it repeats, so that the two start alike.
+        const long same = find_task(tasks, kFig6, t.k, t.e, t.fast);
+        s.stream = std::uint64_t(t.role >= kEq5 && same >= 0 ? same : i);
         return run_pipe(s, time_budget(b, t.k, t.e), b.eq9_window, b.hold_distance);
     }
     static Result report(const Spec& b, const std::vector<Task>& tasks, const Swept<RunResult>& swept, const RunContext& ctx) {
@@ -137,7 +170,7 @@ struct BistablePipe {
         // The paper's t_col at k_N = 200000 N/m refers to e_N = 0.70 (gamma scaled with sqrt(k_N)).
         r.scalar("t_col_k200000_e0.70", pipe_law(200000.0, 0.70, b.m_mean).collision_time(b.m_mean), "s",
                  "free-wall contact duration at k_N = 2e5 N/m, e_N = 0.70 (Eq. 4)");
-        report_fig6(r, b, pipe_spec(b, ctx.seed), results);
+        report_fig6(r, b, pipe_spec(b, ctx.seed), tasks, results);
         report_eq9_windows(r, tasks, results);
         report_series(r, b, tasks, results);
         r.scalar("grains", double(results.front().grains), "1", "free grains in the pipe (first run)");

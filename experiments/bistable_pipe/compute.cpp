@@ -22,7 +22,8 @@ PipeSpec pipe_spec(const BistablePipeSpec& b, std::uint64_t seed) {
             .d_mean = b.d_mean, .polydispersity = b.polydispersity, .m_mean = b.m_mean, .phi = b.phi, .mu = b.mu,
             .friction_normal = *parse_friction_normal(b.friction_normal), .agitation = b.agitation,
             .steps_per_contact = b.steps_per_contact, .skin = b.skin, .window = b.window, .drift_tol = b.drift_tol,
-            .t_average = b.t_average, .sample_dt = b.sample_dt, .v_abort = b.v_abort, .seed = seed};
+            .t_average = b.t_average, .sample_dt = b.sample_dt, .v_abort = b.v_abort,
+            .wall_steps = b.time_step == "wall" ? b.wall_steps : 0.0, .seed = seed};
 }
 
 namespace {
@@ -166,16 +167,19 @@ RunResult run_pipe(const PipeSpec& s, double t_budget, double eq9_window, double
     // diameter inward from the wall grains' crests; a grain counts whole when its centre is inside.
     const double layer_in = s.geo.wall_radius + s.d_mean, layer_area = 2 * s.d_mean * s.geo.length;
     double xi = 0; // largest overlap ratio since the last sample
+    const double dt_eq5 = eng.dt();
+    r.dt_min = dt_eq5;
     auto sample = [&](long, double) {
         if (eng.time() + 0.5 * eng.dt() < next) return true; // the budget ran out first
         r.xq.push_back(xi);
         r.xi_max = std::max(r.xi_max, xi);
         xi = 0;
         next += s.sample_dt;
-        double v = 0, sx = 0, near = 0;
+        double v = 0, sx = 0, near = 0, v2max = 0;
         for (std::size_t i = 0; i < n; ++i) {
             v += eng.vy()[i];
             sx += eng.vx()[i] * eng.vx()[i];
+            v2max = std::max(v2max, eng.vx()[i] * eng.vx()[i] + eng.vy()[i] * eng.vy()[i]);
             const double x = eng.x()[i], rad = eng.radius()[i];
             if (x < layer_in || x > s.geo.width - layer_in) near += M_PI * rad * rad;
         }
@@ -184,6 +188,15 @@ RunResult run_pipe(const PipeSpec& s, double t_budget, double eq9_window, double
         r.v.push_back(v / double(n));
         r.sx.push_back(std::sqrt(sx / double(n)));
         walls.take(eng);
+        // The step of the next samples (time_step = "wall"): Eq. (5) resolves a head-on contact but
+        // not a grain sliding past the wall grains at 100 m/s and more, which touches each for
+        // only one or two steps of t_col/50; the fast states then lock where one wall period
+        // takes a whole number of steps (issue 42). S steps per wall-grain passage of the fastest
+        // grain resolve it (scripts/studies/bistable_pipe_dt.md).
+        if (s.wall_steps > 0) {
+            eng.set_dt(std::min(dt_eq5, s.geo.wall_spacing / (s.wall_steps * std::max(std::sqrt(v2max), 1e-300))));
+            r.dt_min = std::min(r.dt_min, eng.dt());
+        }
         if (std::abs(r.v.back()) > s.v_abort) return true;
         const std::size_t m = r.t.size();
         if (m <= per_window) return false;
@@ -215,6 +228,7 @@ RunResult run_pipe(const PipeSpec& s, double t_budget, double eq9_window, double
     const std::size_t m = r.t.size();
     r.steps = eng.steps();
     r.list_builds = eng.list_builds();
+    r.dt_final = eng.dt();
     r.v_final = r.v.back();
     r.t_final = r.t.back();
     r.accel_final = m > per_window ? slope(r.t, r.v, m - per_window) : NAN;

@@ -16,14 +16,15 @@ namespace {
 // The columns of one k_N's table of Fig. 6, per start (0 slow, 1 fast) over e_N, and the
 // construction's link for the slow start at the largest e_N.
 enum SteadyColumn { kV, kVLast, kOutcome, kTEnd, kBalance, kSigmaVx, kNdot, kDvy, kVConstruction, kImpactSlope,
-                    kContacts, kVyImpact, kVConstructionVxin, kReach, kBuildsPerStep, kXiSteady, kPhiWall, kColumns };
+                    kContacts, kVyImpact, kVConstructionVxin, kReach, kBuildsPerStep, kXiSteady, kPhiWall, kStepsPerWall,
+                    kColumns };
 struct KColumns { std::vector<double> col[2][kColumns]; double link_top = NAN; };
 // Over all runs: the worst Eq. (9) balance, the smallest impact-curve slope, steady states.
 struct Totals { double worst_balance = 0, min_slope = INFINITY; int steady = 0; };
 
 // One k_N of Fig. 6: both starts against e_N, with outcomes, Eq. (9) and the construction.
 KColumns table_k(Result& r, const BistablePipeSpec& b, const PipeSpec& base, std::size_t ki, const std::string& kt,
-                 const std::vector<RunResult>& results, Totals& tot) {
+                 const std::vector<Task>& tasks, const std::vector<RunResult>& results, Totals& tot) {
     const auto& es = b.eN_list;
     KColumns c;
     for (std::size_t ei = 0; ei < es.size(); ++ei)
@@ -38,7 +39,9 @@ KColumns table_k(Result& r, const BistablePipeSpec& b, const PipeSpec& base, std
                                           ok ? rr.ndot : NAN, ok ? rr.dvy : NAN, cons.v, cons.slope, cons.contacts,
                                           ok ? rr.vy_in : NAN, cons.v_vxin, cons.reach,
                                           double(rr.list_builds) / double(std::max(1L, rr.steps)), ok ? rr.xi_steady : NAN,
-                                          ok ? rr.phi_wall : NAN};
+                                          ok ? rr.phi_wall : NAN,
+                                          // steps while the plug passes one wall grain at its last speed
+                                          base.geo.wall_spacing / (std::abs(rr.v_final) * rr.dt_final)};
             for (int j = 0; j < kColumns; ++j) c.col[f][j].push_back(row[j]);
             if (ok) {
                 ++tot.steady;
@@ -51,10 +54,33 @@ KColumns table_k(Result& r, const BistablePipeSpec& b, const PipeSpec& base, std
     const char* names[kColumns] = {"v", "v_last", "outcome", "t_end", "eq9_balance", "sigma_vx", "ndot", "dvy",
                                    "v_construction", "impact_slope", "impact_contacts", "vy_impact",
                                    "v_construction_vxin", "construction_reach", "list_builds_per_step", "xi_max_steady",
-                                   "phi_wall"};
-    const char* units[kColumns] = {"m/s", "m/s", "1", "s", "1", "m/s", "1/s", "m/s", "m/s", "s", "1", "m/s", "m/s", "1", "1", "1", "1"};
+                                   "phi_wall", "steps_per_wall"};
+    const char* units[kColumns] = {"m/s", "m/s", "1", "s", "1", "m/s", "1/s", "m/s", "m/s", "s", "1", "m/s", "m/s", "1", "1", "1", "1", "1"};
     for (int f = 0; f < 2; ++f)
         for (int j = 0; j < kColumns; ++j) t.add(std::string(names[j]) + (f ? "_fast" : "_slow"), units[j]).values = c.col[f][j];
+    // The fast starts at Eq. (5)'s step, drawn beside the resolved ones (time_step = "wall"): their
+    // own runs where the wall rule can take over below v_abort, else the fast run itself when the
+    // rule never changed its step (then the two runs are one).
+    std::vector<double> ev, el, eo, es5, ex;
+    for (std::size_t ei = 0; ei < es.size(); ++ei) {
+        const long own = find_task(tasks, kEq5, b.kN_list[ki], es[ei], true);
+        const RunResult& fast = results[(ki * es.size() + ei) * 2 + 1];
+        const double dt5 = pipe_time_step(base, pipe_law(b.kN_list[ki], es[ei], base.m_mean));
+        const RunResult* rr = own >= 0 ? &results[std::size_t(own)] : (fast.dt_min >= dt5 ? &fast : nullptr);
+        const bool ok = rr && rr->outcome == kSteady;
+        ev.push_back(ok ? -rr->v_mean : NAN);
+        el.push_back(rr ? -rr->v_final : NAN);
+        eo.push_back(rr ? double(rr->outcome) : NAN);
+        es5.push_back(rr ? base.geo.wall_spacing / (std::abs(rr->v_final) * rr->dt_final) : NAN);
+        ex.push_back(ok ? rr->sigma_vx : NAN);
+    }
+    t.add({{"v_fast_eq5", "m/s", ev}, {"v_last_fast_eq5", "m/s", el}, {"outcome_fast_eq5", "1", eo},
+           {"steps_per_wall_fast_eq5", "1", es5}, {"sigma_vx_fast_eq5", "m/s", ex}});
+    int eq5_states = 0;
+    for (std::size_t ei = 0; ei < es.size(); ++ei) eq5_states += ev[ei] >= v_crit(b, b.kN_list[ki]); // NaN: false
+    r.scalar("fast_branch_fraction_eq5_" + kt, double(eq5_states) / double(es.size()), "1",
+             "fraction of e_N values whose fast start at Eq. (5)'s step (t_col / steps_per_contact throughout) reached a "
+             "steady state above v_crit");
     return c;
 }
 
@@ -150,25 +176,29 @@ void report_branch_k(Result& r, const std::vector<double>& es, const std::string
 // fraction that ended above it (a fast steady state, or still faster than v_crit at the end).
 void report_vcrit_crossings_k(Result& r, const std::string& kt, std::vector<RunResult>::const_iterator runs,
                               std::size_t count, double v_crit) {
-    int crossed = 0, ended_fast = 0;
+    int crossed = 0, ended_fast = 0, settled_fast = 0;
     for (std::size_t j = 0; j < count; ++j) {
         const RunResult& rr = runs[long(j)];
         // "Becomes faster": starts below v_crit (a fast start begins above it and may only fall back).
         if (rr.v.empty() || -rr.v.front() > v_crit || -*std::min_element(rr.v.begin(), rr.v.end()) <= v_crit) continue;
         ++crossed;
         ended_fast += (rr.outcome == kSteady ? -rr.v_mean : -rr.v_final) > v_crit;
+        settled_fast += rr.outcome == kSteady && -rr.v_mean > v_crit;
     }
     r.scalar("vcrit_crossings_" + kt, crossed, "1", "runs that started below v_crit and whose mean speed exceeded it at some sample");
     r.scalar("vcrit_crossings_end_fast_" + kt, crossed ? double(ended_fast) / crossed : NAN, "1",
              "fraction of those runs that ended above v_crit (fast steady state, or faster than v_crit at the end)");
+    r.scalar("vcrit_crossings_settled_fast_" + kt, crossed ? double(settled_fast) / crossed : NAN, "1",
+             "fraction of those runs that ended in a steady state above v_crit (the emergency brake of the Summary)");
 }
 
 // Eq. (9)'s argument: the volume fraction near the wall is "essentially a constant for fixed global
-// volume fraction". Over every steady state (all k_N, both starts, one global phi): its spread.
-void report_near_wall_phi(Result& r, const std::vector<RunResult>& results) {
+// volume fraction". Over every steady state of Fig. 6 (all k_N, both starts, one global phi): its spread.
+void report_near_wall_phi(Result& r, const std::vector<Task>& tasks, const std::vector<RunResult>& results) {
     std::vector<double> pw;
-    for (const RunResult& rr : results)
-        if (rr.outcome == kSteady && std::isfinite(rr.phi_wall)) pw.push_back(rr.phi_wall);
+    for (std::size_t i = 0; i < results.size(); ++i)
+        if (const RunResult& rr = results[i]; tasks[i].role == kFig6 && rr.outcome == kSteady && std::isfinite(rr.phi_wall))
+            pw.push_back(rr.phi_wall);
     const auto [lo, hi] = std::minmax_element(pw.begin(), pw.end());
     const double mean = mean_sd(pw).mean;
     r.scalar("near_wall_phi_mean", mean, "1", "mean area fraction of the layer one diameter inside the wall crests, steady states");
@@ -179,12 +209,35 @@ void report_near_wall_phi(Result& r, const std::vector<RunResult>& results) {
 } // namespace
 
 
-void report_fig6(Result& r, const BistablePipeSpec& b, const PipeSpec& base, const std::vector<RunResult>& results) {
+// The fast start run again with every step halved (dt_check_eN) against its Fig. 6 run: the
+// relative change of the steady speed if both settled, else of the speed at the end of the
+// shorter run (both accelerating, or one settled: a change of outcome shows as a large change).
+void report_dt_check(Result& r, const std::vector<Task>& tasks, const std::vector<RunResult>& results) {
+    const long chk = long(tasks.size()) - 1;
+    if (chk < 0 || tasks[std::size_t(chk)].role != kDtCheck) return;
+    const Task& t = tasks[std::size_t(chk)];
+    const RunResult &a = results[std::size_t(find_task(tasks, kFig6, t.k, t.e, true))], &h = results[std::size_t(chk)];
+    double change;
+    if (a.outcome == kSteady && h.outcome == kSteady) {
+        change = std::abs(h.v_mean - a.v_mean) / std::abs(a.v_mean);
+    } else {
+        const std::size_t n = std::min(a.v.size(), h.v.size()); // samples at the same times
+        change = n ? std::abs(h.v[n - 1] - a.v[n - 1]) / std::abs(a.v[n - 1]) : NAN;
+    }
+    r.scalar("dt_check_change", change, "1",
+             "the fast start at dt_check_eN (k_N = kN_list[1]) with every step halved against its Fig. 6 run: relative "
+             "change of the steady speed if both settled, else of the speed at the end of the shorter run");
+    r.scalar("dt_check_same_outcome", a.outcome == h.outcome ? 1.0 : 0.0, "1",
+             "1 if that run and its Fig. 6 run end alike (steady, free fall or unsettled)");
+}
+
+void report_fig6(Result& r, const BistablePipeSpec& b, const PipeSpec& base, const std::vector<Task>& tasks,
+                 const std::vector<RunResult>& results) {
     const auto &ks = b.kN_list, &es = b.eN_list;
     Totals tot;
     for (std::size_t ki = 0; ki < ks.size(); ++ki) { // one row of the figure
         const std::string kt = "k" + number_text(ks[ki]);
-        const KColumns c = table_k(r, b, base, ki, kt, results, tot);
+        const KColumns c = table_k(r, b, base, ki, kt, tasks, results, tot);
         const double vc = v_crit(b, ks[ki]);
         report_states_k(r, es, kt, c, vc);
         for (bool fast : {false, true}) report_branch_k(r, es, kt, c, vc, fast);
@@ -198,7 +251,8 @@ void report_fig6(Result& r, const BistablePipeSpec& b, const PipeSpec& base, con
             if (const double x = results[ki * es.size() * 2 + j].xi_steady; std::isfinite(x)) xs = std::isnan(xs) ? x : std::max(xs, x);
         r.scalar("xi_max_steady_over_d_" + kt, xs, "1", "the same over the steady states only (NaN: none)");
     }
-    report_near_wall_phi(r, results);
+    report_near_wall_phi(r, tasks, results);
+    report_dt_check(r, tasks, results);
     r.scalar("steady_runs", tot.steady, "1", "runs that reached a steady state");
     // Softer grains brake earlier: the k_N = 200 fast branch against the k_N = 2000 one at the same
     // e_N (geometric mean of the speed ratio over the e_N where both fast starts settled above v_crit).
@@ -225,7 +279,7 @@ void report_fig6(Result& r, const BistablePipeSpec& b, const PipeSpec& base, con
              "smallest slope dΔv_y/dv of the impact curve at a steady state's speed (Eq. 9 argument: > 0)");
     if (b.length_check > 0) {
         const RunResult& at_length = results[((ks.size() > 1 ? 1 : 0) * es.size() + es.size() - 1) * 2];
-        const RunResult& at_check = results.back();
+        const RunResult& at_check = results[std::size_t(find_task(tasks, kLengthCheck, ks[ks.size() > 1 ? 1 : 0], es.back(), false))];
         r.scalar("length_check_ratio", (at_length.outcome == kSteady && at_check.outcome == kSteady) ? at_check.v_mean / at_length.v_mean : NAN, "1",
                  "steady speed at length_check over that at length (same k_N, e_N, slow start)");
     }
@@ -237,6 +291,7 @@ void report_eq9_windows(Result& r, const std::vector<Task>& tasks, const std::ve
     std::vector<double> wk, wn, wd, ws, wv, lx, ly, ld, lnd; // every window; those for the power-law fits
     for (std::size_t i = 0; i < tasks.size(); ++i)
         for (std::size_t j = 0; j < results[i].w_ndot.size(); ++j) {
+            if (tasks[i].role != kFig6 && tasks[i].role != kLengthCheck) break; // the model's runs only
             const double n = results[i].w_ndot[j], d = results[i].w_dvy[j], sx = results[i].w_sx[j];
             wk.push_back(tasks[i].k);
             wn.push_back(n);
@@ -261,12 +316,9 @@ void report_eq9_windows(Result& r, const std::vector<Task>& tasks, const std::ve
     r.scalar("eq9_windows", double(lx.size()), "1", "windows in those fits");
 }
 
-void report_series(Result& r, const BistablePipeSpec& b, const std::vector<Task>& tasks, const std::vector<RunResult>& results) {
+void report_series(Result& r, const BistablePipeSpec&, const std::vector<Task>& tasks, const std::vector<RunResult>& results) {
     for (std::size_t i = 0; i < tasks.size(); ++i) {
-        const bool length_check = b.length_check > 0 && i + 1 == tasks.size();
-        const std::string name = "series_k" + number_text(tasks[i].k) + "_e" + number_text(tasks[i].e) +
-                                 (tasks[i].fast ? "_fast" : "_slow") + (length_check ? "_length_check" : "");
-        Table& ts = r.table(name, "mean velocity and rms v_x against time");
+        Table& ts = r.table(series_name(tasks[i]), "mean velocity and rms v_x against time");
         ts.add("t", "s").values = results[i].t;
         ts.add({{"v_down", "m/s", column(results[i].v, std::negate<>())}, {"sigma_vx", "m/s", results[i].sx}});
     }

@@ -22,6 +22,9 @@ struct BistablePipeSpec {
     double steps_per_contact = 0, skin = 0, budget_tcol = 0, budget_min = 0; // skin [m]; budget in contact durations t_col (Eq. 4); [s]
     double window = 0, t_average = 0, sample_dt = 0, eq9_window = 0, drift_tol = 0; // [s]; drift_tol [m/s^2]
     double hold_distance = 0, agitation_vcrit = 0; // [m]: a steady state holds while falling this far; [1]
+    std::string time_step;  // "eq5": dt = t_col / steps_per_contact; "wall": also resolve the wall-grain passage
+    double wall_steps = 0;  // [1] steps per wall-grain passage of the fastest grain (time_step = "wall")
+    double dt_check_eN = 0; // [1] the fast start at this e_N (k_N = kN_list[1]) again at 2 wall_steps; 0 = off
     template <class V> void fields(V&& v) {
         v("width", width); v("length", length); v("length_check", length_check); v("d_wall", d_wall); v("phi", phi);
         v("wall_spacing", wall_spacing); v("d_mean", d_mean); v("polydispersity", polydispersity); v("m_mean", m_mean);
@@ -30,7 +33,8 @@ struct BistablePipeSpec {
         v("v_abort", v_abort); v("steps_per_contact", steps_per_contact); v("skin", skin); v("budget_tcol", budget_tcol); v("budget_min", budget_min);
         v("window", window); v("t_average", t_average); v("sample_dt", sample_dt); v("eq9_window", eq9_window);
         v("drift_tol", drift_tol); v("hold_distance", hold_distance);
-        v("agitation_vcrit", agitation_vcrit);
+        v("agitation_vcrit", agitation_vcrit); v("time_step", time_step); v("wall_steps", wall_steps);
+        v("dt_check_eN", dt_check_eN);
     }
 };
 
@@ -39,6 +43,12 @@ PipeSpec pipe_spec(const BistablePipeSpec& b, std::uint64_t seed);
 
 // v_crit of Eq. (8) at k_N, from Fig. 3's maximum at 2000 N/m (v_crit ∝ sqrt(k_N)) [m/s].
 inline double v_crit(const BistablePipeSpec& b, double k) { return b.v_crit_2000 * std::sqrt(k / 2000.0); }
+
+// The smallest time step a run may take: Eq. (5)'s, or under time_step = "wall" the wall-grain
+// passage resolved at v_abort, the fastest a run goes (the work bound of validate()) [s].
+inline double smallest_time_step(const BistablePipeSpec& b, double dt_eq5) {
+    return b.time_step == "wall" ? std::min(dt_eq5, b.wall_spacing / (b.wall_steps * b.v_abort)) : dt_eq5;
+}
 
 // The run's time budget: budget_tcol free-wall contact durations (Eq. 4) at its own k_N, e_N, and
 // at least budget_min: the stiffest pipe's flows take seconds to settle, not contact durations.
@@ -53,6 +63,8 @@ struct RunResult {
     double t_steady = NAN, v_mean = NAN, v_final = NAN, t_final = NAN, accel_final = NAN;
     double sigma_vx = NAN, ndot = NAN, dvy = NAN, vx_in = NAN, vy_in = NAN;
     long grains = 0, steps = 0, list_builds = 0; // Verlet-list builds: the cost of fast flows (issue 26)
+    double dt_final = NAN;    // the time step at the end of the run [s] (it varies under time_step = "wall")
+    double dt_min = NAN;      // the smallest time step of the run [s]
     double xi_max = 0;        // largest overlap over the run, relative to the smaller diameter [1]
     double xi_steady = NAN;   // the same over the steady state [1]
     double phi_wall = NAN;    // near-wall area fraction over the steady state [1]
@@ -63,14 +75,23 @@ struct RunResult {
         f("outcome", outcome); f("t_steady", t_steady); f("v_mean", v_mean); f("v_final", v_final);
         f("t_final", t_final); f("accel_final", accel_final); f("sigma_vx", sigma_vx); f("ndot", ndot); f("dvy", dvy);
         f("vx_in", vx_in); f("vy_in", vy_in); f("grains", grains);
-        f("steps", steps); f("list_builds", list_builds); f("xi_max", xi_max); f("xi_steady", xi_steady); f("phi_wall", phi_wall);
+        f("steps", steps); f("list_builds", list_builds); f("dt_final", dt_final); f("dt_min", dt_min); f("xi_max", xi_max); f("xi_steady", xi_steady); f("phi_wall", phi_wall);
         f("t", t); f("v", v); f("sx", sx); f("pw", pw); f("xq", xq);
         f("w_ndot", w_ndot); f("w_dvy", w_dvy); f("w_sx", w_sx); f("w_v", w_v);
     }
 };
 
-// One sweep point: a pipe run at k_N, e_N from a slow or a fast start, at a pipe length.
-struct Task { double k, e; bool fast; double length; };
+// One sweep point: a pipe run at k_N, e_N from a slow or a fast start, at a pipe length, with
+// steps per wall-grain passage wall_steps (0: Eq. (5)'s step throughout), every step divided by
+// refine. Its role: a state of
+// Fig. 6 (the spec's time step), the length check, the fast start at Eq. (5)'s step drawn beside
+// it (time_step = "wall" only), or the fast start at half the step (dt_check_eN).
+enum TaskRole { kFig6 = 0, kLengthCheck = 1, kEq5 = 2, kDtCheck = 3 };
+struct Task { double k, e; bool fast; double length; double wall_steps; int role; double refine = 1; }; // refine: dt / refine
+// The index of the task of that role, k_N, e_N and start; -1 if there is none.
+long find_task(const std::vector<Task>& tasks, int role, double k, double e, bool fast);
+// The series table of a task (its role named at the end).
+std::string series_name(const Task& t);
 
 // compute.cpp: one start of the pipe until steady, free fall, v_abort or the end of its budget.
 RunResult run_pipe(const PipeSpec& s, double t_budget, double eq9_window, double hold_distance);
@@ -94,7 +115,8 @@ struct Construction {
 Construction construct(const PipeSpec& base, double k, double e, const RunResult& rr);
 
 // report.cpp: Fig. 6 over every k_N, the estimates below Eq. (9), and every run's time series.
-void report_fig6(Result& r, const BistablePipeSpec& b, const PipeSpec& base, const std::vector<RunResult>& results);
+void report_fig6(Result& r, const BistablePipeSpec& b, const PipeSpec& base, const std::vector<Task>& tasks,
+                 const std::vector<RunResult>& results);
 void report_eq9_windows(Result& r, const std::vector<Task>& tasks, const std::vector<RunResult>& results);
 void report_series(Result& r, const BistablePipeSpec& b, const std::vector<Task>& tasks, const std::vector<RunResult>& results);
 

@@ -26,6 +26,9 @@ struct PipeSpec {
     double skin = 0.1e-3;          // Verlet skin [m]
     // Run control (used by the experiment): [s], [m/s^2], [s], [s], [m/s]
     double window = 0.3, drift_tol = 0.3, t_average = 0.3, sample_dt = 0.005, v_abort = 300;
+    // The time-step rule (used by the experiment): 0 keeps Eq. (5)'s dt for the whole run; S > 0
+    // also caps dt at wall_spacing / (S v_max), S steps while the fastest grain passes one wall grain.
+    double wall_steps = 0;
     std::uint64_t seed = 1, stream = 0;
 };
 
