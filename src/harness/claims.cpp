@@ -24,7 +24,7 @@ const char* to_string(Verdict v) {
 namespace {
 std::string num(double x) { return number_text(x, 4); }
 
-std::string band_text(const Band& b) { return "[" + num(b.lo) + ", " + num(b.hi) + "]"; }
+std::string band_text(const Band& b) { return b.absent ? "absent" : "[" + num(b.lo) + ", " + num(b.hi) + "]"; }
 
 const std::string kClaimKeys[] = {"id",      "statement",       "source",         "measured",
                                   "paper",   "rel_tol",         "abs_tol",        "min",
@@ -48,8 +48,9 @@ double number(const toml::value& v, const std::string& file, const std::string& 
 // [lo, hi] with lo <= hi (inf and -inf allowed).
 // `what` ("claim x: deviation_band") names it in a refusal at its file:line.
 Band parse_band(const toml::value& v, const std::string& where, const std::string& file, const std::string& what) {
+    if (v.is_string() && v.as_string() == "absent") return Band{0, 0, true};
     if (!v.is_array() || v.as_array().size() != 2)
-        throw InputError(where + " must be [lo, hi]");
+        throw InputError(where + " must be [lo, hi] or \"absent\"");
     const auto& a = v.as_array();
     if (!(a[0].is_integer() || a[0].is_floating()) || !(a[1].is_integer() || a[1].is_floating()))
         throw InputError(where + " must be [lo, hi] with two numbers (inf and -inf allowed)");
@@ -244,6 +245,10 @@ void read_deviation(const ClaimReader& r, Claim& k) {
     if (k.deviation_band_reason.empty())
         throw InputError(r.where + ": known_deviation needs deviation_band_reason (where the band comes from)");
     k.deviation_band_kind = r.kind("deviation_band_kind", kDeviationBandKinds);
+    bool any_absent = k.deviation_band && k.deviation_band->absent;
+    for (const auto& [scale, band] : k.deviation_band_by_scale) any_absent = any_absent || band.absent;
+    if (any_absent != (k.deviation_band_kind == "absent"))
+        throw InputError(r.where + ": deviation_band = \"absent\" and deviation_band_kind = \"absent\" go together");
 }
 
 // The claim's role, and a known deviation's status (expected/README.md, "Roles"): missing or
@@ -423,7 +428,10 @@ std::vector<ClaimResult> evaluate_claims(const std::vector<Claim>& claims, const
         if (ok && c.max) ok = *r.measured <= *c.max;
         if (!c.applies_to(scale)) r.verdict = Verdict::Skipped;
         else if (ok) r.verdict = Verdict::Pass;
-        else if (finite && band && band->contains(*r.measured)) r.verdict = Verdict::KnownDeviation;
+        // A deviation band holds a finite value, or ("absent") the lack of one: the run wrote the
+        // scalar as NaN (no state to measure it on); a scalar the run did not write still fails.
+        else if (band && (finite ? band->contains(*r.measured) : band->absent && scalars.contains(c.measured)))
+            r.verdict = Verdict::KnownDeviation;
         else r.verdict = Verdict::Fail;
         out.push_back(std::move(r));
     }

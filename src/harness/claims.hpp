@@ -9,6 +9,7 @@
 // value lies in its band for the run's scale -> DEVIATION; else FAIL. A missing or non-finite
 // measurement FAILs every claim; a claim restricted (scales) to other scales is skipped.
 #pragma once
+#include <cmath>
 #include <filesystem>
 #include <map>
 #include <nlohmann/json.hpp>
@@ -23,7 +24,7 @@ namespace granrepro {
 
 // The allowed values of tolerance_kind and deviation_band_kind (expected/README.md explains them).
 inline constexpr const char* kToleranceKinds[] = {"paper_precision", "error_bar", "grid", "physical_bound"};
-inline constexpr const char* kDeviationBandKinds[] = {"seed_spread", "error_bar", "grid", "single_run"};
+inline constexpr const char* kDeviationBandKinds[] = {"seed_spread", "error_bar", "grid", "single_run", "absent"};
 // What a claim is (expected/README.md, "Roles"): only reproductions make the headline.
 inline constexpr const char* kClaimRoles[] = {"reproduction", "identity", "calibration", "validation"};
 // How far a known deviation is understood: settled by a decisive run, inherent to the model or
@@ -31,9 +32,12 @@ inline constexpr const char* kClaimRoles[] = {"reproduction", "identity", "calib
 inline constexpr const char* kDeviationStatuses[] = {"settled", "inherent", "open"};
 
 // A closed interval [lo, hi]; either end may be infinite.
+// A known deviation's band: [lo, hi], or "absent": the measured quantity does not exist in our
+// runs (a property of a branch that no run reaches: no value, or NaN); a value appearing leaves it.
 struct Band {
     double lo = 0, hi = 0;
-    bool contains(double x) const { return x >= lo && x <= hi; }
+    bool absent = false;
+    bool contains(double x) const { return absent ? !std::isfinite(x) : x >= lo && x <= hi; }
 };
 
 struct Claim {

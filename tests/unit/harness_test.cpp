@@ -312,6 +312,24 @@ TEST(Claims, DeviationWithoutScalarFails) {
     EXPECT_EQ(deviation_verdict({{"y", INFINITY}}, Scale::Paper, 1), Verdict::Fail); // even with hi = inf
 }
 
+// deviation_band = "absent": the quantity does not exist in our runs (a property of a branch no run
+// reaches). The run's NaN (null in summary.json) is the deviation; any value, or a scalar the run
+// did not write at all, fails; the band goes with deviation_band_kind = "absent" only.
+TEST(Claims, AbsentBandHoldsOnlyTheLackOfAValue) {
+    const test::TempDir dir;
+    const std::string claim = "experiment = \"e\"\n[[claim]]\nid = \"a\"\nrole = \"reproduction\"\nstatement = \"s\"\n"
+                              "source = \"s\"\nmeasured = \"z\"\nmin = 2.0\ntolerance_reason = \"r\"\n"
+                              "tolerance_kind = \"physical_bound\"\nknown_deviation = \"no state\"\nstatus = \"settled\"\n"
+                              "deviation_band = \"absent\"\ndeviation_band_reason = \"r\"\n";
+    const auto claims = load_claims(write(dir.path / "e.toml", claim + "deviation_band_kind = \"absent\"\n"), "e");
+    EXPECT_EQ(evaluate_claims(claims, {{"z", nullptr}}, Scale::Quick)[0].verdict, Verdict::KnownDeviation);
+    EXPECT_EQ(evaluate_claims(claims, {{"z", 3.0}}, Scale::Quick)[0].verdict, Verdict::Pass);
+    EXPECT_EQ(evaluate_claims(claims, {{"z", 1.0}}, Scale::Quick)[0].verdict, Verdict::Fail);
+    EXPECT_EQ(evaluate_claims(claims, nlohmann::json::object(), Scale::Quick)[0].verdict, Verdict::Fail);
+    EXPECT_EQ(evaluate_claims(claims, {{"z", nullptr}}, Scale::Quick)[0].band_text, "absent");
+    EXPECT_THROW(load_claims(write(dir.path / "e.toml", claim + "deviation_band_kind = \"grid\"\n"), "e"), InputError);
+}
+
 TEST(Claims, FailingDeviationFailsTheRunAndTheTableShowsTheBand) {
     const test::TempDir dir;
     const auto claims = load_claims(write(dir.path / "e.toml", kDeviationClaims), "e");
