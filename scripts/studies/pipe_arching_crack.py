@@ -20,14 +20,14 @@ window of the wall-to-wall detector's opening_max_after) and over every snapshot
 hot wall disk (t_precursor) to t_end.
 """
 import json
-import math
+import os
 import sys
 from pathlib import Path
 
 import h5py
 import numpy as np
 
-DEPTH = 10.0  # d, = below_depth of experiments/pipe-arching.toml
+DEPTH = float(os.environ.get("DEPTH", "10"))  # d; 10 = below_depth of experiments/pipe-arching.toml
 
 
 def records(h5):

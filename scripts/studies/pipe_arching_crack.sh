@@ -9,7 +9,8 @@
 #
 # Environment: GRANREPRO (default ./build/granrepro), SEEDS (default 16), OUT (default
 # out-studies/pipe-arching-crack), COMMITTED (default paper_figures/pipe-arching/data.h5), PY
-# (default /usr/bin/python3, with h5py and numpy), NICE (default 15).
+# (default /usr/bin/python3, with h5py and numpy), NICE (default 15), DEPTH (how far below the initiating
+# disk's centre the local opening is searched, default 10 d; the .md reports 3 and 20 d too).
 #
 # Per config (default; epsilon=0.8; epsilon=0.95; beta0=0.0; beta0=0.6; every other parameter at its
 # paper-scale value) two kinds of run, both paper scale, --threads 1, kept in $OUT/<config>/ and
