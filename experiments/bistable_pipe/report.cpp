@@ -66,7 +66,10 @@ KColumns table_k(Result& r, const BistablePipeSpec& b, const PipeSpec& base, std
         const long own = find_task(tasks, kEq5, b.kN_list[ki], es[ei], true);
         const RunResult& fast = results[(ki * es.size() + ei) * 2 + 1];
         const double dt5 = pipe_time_step(base, pipe_law(b.kN_list[ki], es[ei], base.m_mean));
-        const RunResult* rr = own >= 0 ? &results[std::size_t(own)] : (fast.dt_min >= dt5 ? &fast : nullptr);
+        // Under time_step = eq5 the fast run is itself at Eq. (5)'s step: nothing to draw beside it.
+        const RunResult* rr = b.time_step == "eq5"             ? nullptr
+                              : own >= 0                      ? &results[std::size_t(own)]
+                              : fast.dt_min >= dt5 ? &fast : nullptr;
         const bool ok = rr && rr->outcome == kSteady;
         ev.push_back(ok ? -rr->v_mean : NAN);
         el.push_back(rr ? -rr->v_final : NAN);
