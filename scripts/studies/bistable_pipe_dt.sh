@@ -10,7 +10,8 @@
 #       --set wall_steps=S --set length_check=0
 #   starts on the Eq. (5) fast branch (the wall rule, S = 32): fast_v0 = the Eq. (5) state's speed,
 #   agitation A = 0.3, 1 and 3 m/s (agitation_vcrit lifted so that A is used as given):
-#     ... --set time_step=wall --set fast_v0=V --set agitation=A --set agitation_vcrit=1e6
+#     ... --set time_step=wall --set fast_v0=V --set agitation=A --set agitation_vcrit=1e6 --set dt_check_eN=0
+#   (each such run also makes the same start at Eq. (5)'s step, the *_fast_eq5 columns)
 #
 # PARTS selects (default all): fixed, wall, branch. Runs go to $OUT/<part>/<name>/ (default
 # out-studies/bistable-pipe-dt); a finished run is reused. Then one table row per start:
@@ -54,67 +55,75 @@ for part in $parts; do
       IFS=: read -r k e v <<< "$kev"
       for a in ${A_LIST:-0.3 1 3}; do
         run branch "k${k}_e${e}_v${v}_a$a" --set kN_list=$k --set "eN_list=$e" --set time_step=wall \
-          --set wall_steps=32 --set fast_v0=$v --set agitation=$a --set agitation_vcrit=1e6
+          --set wall_steps=32 --set fast_v0=$v --set agitation=$a --set agitation_vcrit=1e6 --set dt_check_eN=0
       done
     done ;;
   esac
 done
-/usr/bin/python3 - "$out" <<'PY'
-import glob, json, os, sys
-out = sys.argv[1]
-def rows(path):
-    lines = [l.rstrip("\n").split("\t") for l in open(path) if not l.startswith("#")]
-    head = lines[0]
-    return [dict(zip(head, l)) for l in lines[1:]]
-def accel(series):
-    pts = [(float(r["t"]), float(r["v_down"])) for r in rows(series)]
-    if len(pts) < 3:
-        return float("nan")
-    t_end = pts[-1][0]
-    last = [p for p in pts if p[0] >= t_end - 1.0]
-    n = len(last)
-    mt = sum(p[0] for p in last) / n
-    mv = sum(p[1] for p in last) / n
-    sxx = sum((p[0] - mt) ** 2 for p in last)
-    return sum((p[0] - mt) * (p[1] - mv) for p in last) / sxx if sxx > 0 else float("nan")
+/usr/bin/python3 - "$out" ${EXTRA:-} <<'PY'
+# One row per start of every run under $out/<part>/<name>/ (and of the results folders named
+# after it, e.g. paper_figures for t_col/50), read from data.h5 and summary.json.
+import glob, json, math, os, sys
+import h5py
 names = {0: "steady", 1: "free fall", 2: "unsettled"}
 def eq5_step(p, k, e):
     # Eq. (4): gamma_N from e_N for the free-wall pair (m_mean); dt = t_col of the lightest free-free
     # pair / steps_per_contact (scenarios/pipe_setup.cpp). For runs made before time_step existed.
-    import math
     m, L = p["m_mean"], -math.log(e)
     gamma = 2 * L * math.sqrt(k / m) / math.sqrt(math.pi ** 2 + L ** 2)
     m_red = 0.5 * m * (1 - p["polydispersity"]) ** 2
     return math.pi / math.sqrt(k / m_red - 0.25 * gamma ** 2) / p["steps_per_contact"]
+def accel(t, v):
+    # slope of the mean speed over the last second of the run
+    pts = [(a, b) for a, b in zip(t, v) if a >= t[-1] - 1.0]
+    n = len(pts)
+    if n < 3:
+        return float("nan")
+    mt, mv = sum(a for a, _ in pts) / n, sum(b for _, b in pts) / n
+    sxx = sum((a - mt) ** 2 for a, _ in pts)
+    return sum((a - mt) * (b - mv) for a, b in pts) / sxx
+out, extra = sys.argv[1], sys.argv[2:]
+folders = sorted(glob.glob(os.path.join(out, "*", "*", "bistable-pipe"))) + [os.path.join(x, "bistable-pipe") for x in extra]
 table = []
-for run_dir in sorted(glob.glob(os.path.join(out, "*", "*", "bistable-pipe"))):
-    part, name = run_dir.split(os.sep)[-3:-1]
+for run_dir in folders:
+    label = os.path.relpath(os.path.dirname(run_dir), out) if run_dir.startswith(out) else os.path.dirname(run_dir)
     s = json.load(open(os.path.join(run_dir, "summary.json")))
-    p = s["parameters"]
+    p = {k: (v["value"] if isinstance(v, dict) else v) for k, v in s["parameters"].items()}
     ts = p.get("time_step", "eq5")
     rule = ("t_col/%g" % p["steps_per_contact"]) if ts == "eq5" else ("wall S=%g" % p["wall_steps"])
-    for steady in glob.glob(os.path.join(run_dir, "tables", "steady_k*.tsv")):
-        k = steady.split("steady_k")[1][:-4]
-        for r in rows(steady):
-            for start in ("slow", "fast"):
-                e = r["e_N"]
-                o = int(float(r["outcome_" + start]))
-                v = float(r["v_" + start]) if o == 0 else float(r["v_last_" + start])
-                ser = os.path.join(run_dir, "tables", "series_k%s_e%s_%s.tsv" % (k, e, start))
-                a = accel(ser) if os.path.exists(ser) else float("nan")
-                sx = float(r["sigma_vx_" + start])
-                table.append((int(k), float(e), part, rule, start, p["fast_v0"] if start == "fast" else p["slow_v0"],
-                              p["agitation"], names[o], v, float(r["t_end_" + start]), a,
-                              float(r["steps_per_wall_" + start]) if "steps_per_wall_" + start in r
-                              else p["wall_spacing"] / (abs(v) * eq5_step(p, float(k), float(e))),
-                              sx, s["total_cpu_time_s"]))
-table.sort(key=lambda x: (-x[0], x[1], x[4], x[2], x[3], x[5], x[6]))
-print("| k_N | e_N | part | time step | start | v0 (m/s) | agitation (m/s) | outcome | speed (m/s) | t_end (s) | accel (m/s²) | steps/wall | σ_vx (m/s) | CPU s (run) |")
-print("|---:|---:|---|---|---|---:|---:|---|---:|---:|---:|---:|---:|---:|")
+    h = h5py.File(os.path.join(run_dir, "data.h5"), "r")
+    for tname in sorted(h["tables"]):
+        if not tname.startswith("steady_k"):
+            continue
+        k, tab = tname[len("steady_k"):], h["tables"][tname]
+        starts = [("slow", "slow", rule), ("fast", "fast", rule)]
+        if "v_fast_eq5" in tab and ts == "wall":
+            starts.append(("fast_eq5", "fast", "t_col/%g (beside)" % p["steps_per_contact"]))
+        for i, e in enumerate(tab["e_N"][:]):
+            for col, start, rl in starts:
+                o = tab["outcome_" + col][i]
+                if o != o:
+                    continue
+                o = int(o)
+                v = tab["v_" + col][i] if o == 0 else tab["v_last_" + col][i]
+                suffix = {"slow": "_slow", "fast": "_fast", "fast_eq5": "_fast_eq5"}[col]
+                ser = "series_k%s_e%s%s" % (k, ("%.10g" % e), suffix)
+                # the acceleration tells a run that did not settle (a steady run's last second holds its approach)
+                a = accel(h["tables"][ser]["t"][:], h["tables"][ser]["v_down"][:]) if ser in h["tables"] and o != 0 else float("nan")
+                spw = tab["steps_per_wall_" + col][i] if "steps_per_wall_" + col in tab else \
+                    p["wall_spacing"] / (abs(v) * eq5_step(p, float(k), float(e)))
+                sx = tab["sigma_vx_" + col][i]
+                t_end = tab["t_end_" + col][i] if "t_end_" + col in tab else float("nan")
+                table.append((s["scale"], int(float(k)), float(e), label, rl, start,
+                              p["fast_v0"] if start == "fast" else p["slow_v0"], p["agitation"], names[o], v, t_end, a,
+                              spw, sx))
+table.sort(key=lambda x: (x[0], -x[1], x[2], x[5], x[4], x[6], x[7], x[3]))
+print("| scale | k_N | e_N | run | time step | start | v0 (m/s) | agitation (m/s, before the v_crit cap) | outcome | speed (m/s) | t_end (s) | accel (m/s², not steady) | steps/wall | σ_vx (m/s) |")
+print("|---|---:|---:|---|---|---|---:|---:|---|---:|---:|---:|---:|---:|")
 for t in table:
-    print("| %d | %.3g | %s | %s | %s | %g | %g | %s | %.4g | %.3g | %+.2f | %.3g | %.3g | %.0f |" % t)
+    print(("| %s | %d | %.3g | %s | %s | %s | %g | %g | %s | %.4g | %.3g | %+.2f | %.3g | %.3g |" % t).replace("nan", "–"))
 with open(os.path.join(out, "bistable_pipe_dt.tsv"), "w") as f:
-    f.write("k_N\te_N\tpart\trule\tstart\tv0\tagitation\toutcome\tspeed\tt_end\taccel\tsteps_per_wall\tsigma_vx\tcpu_run\n")
+    f.write("scale\tk_N\te_N\trun\trule\tstart\tv0\tagitation\toutcome\tspeed\tt_end\taccel\tsteps_per_wall\tsigma_vx\n")
     for t in table:
         f.write("\t".join(str(x) for x in t) + "\n")
 PY
