@@ -121,7 +121,7 @@ table.sort(key=lambda x: (x[0], -x[1], x[2], x[5], x[4], x[6], x[7], x[3]))
 print("| scale | k_N | e_N | run | time step | start | v0 (m/s) | agitation (m/s, before the v_crit cap) | outcome | speed (m/s) | t_end (s) | accel (m/s², not steady) | steps/wall | σ_vx (m/s) |")
 print("|---|---:|---:|---|---|---|---:|---:|---|---:|---:|---:|---:|---:|")
 for t in table:
-    print(("| %s | %d | %.3g | %s | %s | %s | %g | %g | %s | %.4g | %.3g | %+.2f | %.3g | %.3g |" % t).replace("nan", "–"))
+    print(("| %s | %d | %.3g | %s | %s | %s | %g | %g | %s | %.4g | %.3g | %+.2f | %.3g | %.3g |" % t).replace("+nan", "–").replace("nan", "–"))
 with open(os.path.join(out, "bistable_pipe_dt.tsv"), "w") as f:
     f.write("scale\tk_N\te_N\trun\trule\tstart\tv0\tagitation\toutcome\tspeed\tt_end\taccel\tsteps_per_wall\tsigma_vx\n")
     for t in table:
