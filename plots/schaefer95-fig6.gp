@@ -87,7 +87,7 @@ do for [fmt in "png pdf"] {
   set object 1 rect from paper_edge - 0.025, graph 0 to paper_edge + 0.025, graph 1 fillcolor rgb "#ededed" fillstyle solid noborder behind
   set object 2 rect from graph 0, first paper_fast_lo to graph 1, first paper_fast_hi fillcolor rgb "#ededed" fillstyle solid noborder behind
   set arrow 1 from paper_edge, graph 0 to paper_edge, graph 1 nohead dt 2 lw 2 lc rgb "#999999" back
-  set title "vertical pipe, width 2 cm, φ = 0.55, μ = 0.5; filled: the run's time step (time\\_step), open: Eq. (5)'s Δt = t_{col}/50 if it differs"
+  set title "vertical pipe, width 2 cm, φ = 0.55, μ = 0.5; filled: the run's time step, open: Eq. (5)'s where it differs"
   set grid lc rgb "#dddddd"
   set logscale y
   set format y "%g"
