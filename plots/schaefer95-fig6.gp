@@ -51,7 +51,7 @@ do for [i=1:words(steady)] {
     # Every series has its legend entry, whether or not it has a steady state to draw; the Eq. (5)
     # fast starts only where they were run (time_step = wall; under eq5 the fast start is one).
     stats f using (column("outcome_".s) == column("outcome_".s) ? 1 : 0) nooutput
-    if (s ne "fast_eq5" || STATS_sum > 0) {
+    if ((s ne "fast_eq5") + (STATS_sum > 0) > 0) {
       cmd = cmd.sprintf(", NaN %s title 'k_N = %s N/m, %s'", style, kname(i), label)
     }
     # The line joins states of one regime only (Fig. 5's criterion: fewer than two wall grains
