@@ -81,9 +81,11 @@ KColumns table_k(Result& r, const BistablePipeSpec& b, const PipeSpec& base, std
            {"steps_per_wall_fast_eq5", "1", es5}, {"sigma_vx_fast_eq5", "m/s", ex}});
     int eq5_states = 0;
     for (std::size_t ei = 0; ei < es.size(); ++ei) eq5_states += ev[ei] >= v_crit(b, b.kN_list[ki]); // NaN: false
-    r.scalar("fast_branch_fraction_eq5_" + kt, double(eq5_states) / double(es.size()), "1",
+    // Under time_step = eq5 no comparison run exists (the fast column is itself at Eq. (5)'s step):
+    // NaN, not a fraction of zero.
+    r.scalar("fast_branch_fraction_eq5_" + kt, b.time_step == "eq5" ? NAN : double(eq5_states) / double(es.size()), "1",
              "fraction of e_N values whose fast start at Eq. (5)'s step (t_col / steps_per_contact throughout) reached a "
-             "steady state above v_crit");
+             "steady state above v_crit (NaN under time_step = eq5: the fast column itself is at that step)");
     return c;
 }
 
