@@ -31,6 +31,7 @@ DsmcConfig dsmc_config(const CoolingSpec& c, double L) {
     cfg.step_factor = c.dsmc_step_factor;
     cfg.free_volume = c.dsmc_free_volume;
     cfg.free_volume_block = std::uint32_t(c.dsmc_free_volume_block);
+    cfg.rcp_fraction = c.dsmc_rcp_fraction;
     cfg.displacement = c.dsmc_displacement;
     cfg.partner = c.dsmc_partner;
     cfg.no_repeat_partner = c.dsmc_no_repeat;

@@ -150,8 +150,9 @@ Result report_all(const CoolingSpec& c, std::uint64_t seed, const Setups& setups
     add_impact_parameter(res, ed);
     add_structure_tables(res, ed, snaps, c.rho, "ed");
     add_seed_tables(res, eds, snaps, "ed");
-    add_ed_g(res, ed, snaps, c.t0());
+    add_ed_g(res, eds, snaps, c.t0());
     add_ed_sk(res, eds, snaps, c.sk_k_max, theory::hard_disk_structure_factor_zero(c.rho));
+    add_sk_change_intervals(res, eds, dss, snaps, c.sk_k_max);
     if (c.velocity_correlation) add_velocity_correlation(res, c, eds, "ed");
     if (c.run_dsmc) add_dsmc(res, c, setups[0], eds, dss);
     return res;

@@ -50,6 +50,7 @@ struct CoolingSpec {
     double departure_level = 0;
     bool run_ed = true, run_dsmc = true;
     double dsmc_cell_diameters = 0, dsmc_mft_fraction = 0, dsmc_step_factor = 0;
+    double dsmc_rcp_fraction = 0; // V_0's packing fraction in the free-volume factor (Sec. 2.4: 0.82)
     DsmcFreeVolume dsmc_free_volume = DsmcFreeVolume::off; DsmcPartner dsmc_partner = DsmcPartner::uniform;
     long dsmc_free_volume_block = 0;
     bool dsmc_no_repeat = false, dsmc_displacement = false;
@@ -66,6 +67,7 @@ struct CoolingSpec {
         v("dsmc_step_factor", dsmc_step_factor), v("dsmc_free_volume", dsmc_free_volume);
         v("dsmc_partner", dsmc_partner), v("dsmc_free_volume_block", dsmc_free_volume_block);
         v("dsmc_no_repeat", dsmc_no_repeat), v("dsmc_displacement", dsmc_displacement);
+        v("dsmc_rcp_fraction", dsmc_rcp_fraction);
         v("velocity_correlation", velocity_correlation);
     }
 
@@ -188,8 +190,9 @@ void add_impact_parameter(Result& res, const Trace& ed);
 double small_k_S(const Trace& tr, const Snapshot& at, double k_max);
 void add_structure_tables(Result& res, const Trace& tr, const std::vector<double>& snaps, double rho, const char* name);
 void add_velocity_correlation(Result& res, const CoolingSpec& c, const std::vector<Trace>& trs, const char* name);
-void add_ed_g(Result& res, const Trace& ed, const std::vector<double>& snaps, double t0);
+void add_ed_g(Result& res, const std::vector<Trace>& eds, const std::vector<double>& snaps, double t0);
 void add_ed_sk(Result& res, const std::vector<Trace>& eds, const std::vector<double>& snaps, double k_small, double s_eq);
+void add_sk_change_intervals(Result& res, const std::vector<Trace>& eds, const std::vector<Trace>& dss, const std::vector<double>& snaps, double k_small);
 void add_sk_agreement(Result& res, const std::vector<Trace>& eds, const std::vector<Trace>& dss, const std::vector<double>& snaps, double k_small);
 void add_cell_imprint(Result& res, const CoolingSpec& c, const Setup& s, const std::vector<Trace>& eds, const std::vector<Trace>& dss);
 

@@ -54,7 +54,7 @@ Fig8Run fig8_run(const Trace& tr, double cth, const ParameterStudySpec& s) {
 }
 
 // One fig8_r: statistics over the seeds.
-struct Fig8Row { double r, c_fit, c_err, c_th, dev, dev_err, onset, max_aniso, early_aniso; };
+struct Fig8Row { double r, c_fit, c_err, c_th, dev, dev_err, onset, max_aniso, early_aniso, onset_q25, onset_q75; };
 std::vector<Fig8Row> report_fig8_rows(Result& res, const ParameterStudySpec& s, const Sweep& sw) {
     std::vector<Fig8Row> rows;
     for (std::size_t a = 0; a < s.fig8_r.size(); ++a) {
@@ -65,7 +65,11 @@ std::vector<Fig8Row> report_fig8_rows(Result& res, const ParameterStudySpec& s, 
         const Fig8Row& f = rows.emplace_back(Fig8Row{r, c.mean, c.sem, cth, dev.mean, dev.sem,
                                                      median(column(runs, &Fig8Run::onset), NonFinite::censored),
                                                      mean_sd(column(runs, &Fig8Run::max_aniso)).mean,
-                                                     mean_sd(column(runs, &Fig8Run::early_aniso)).mean});
+                                                     mean_sd(column(runs, &Fig8Run::early_aniso)).mean,
+                                                     // quartiles of the onset over seeds: its scatter, to
+                                                     // judge an ordering of medians (never = +inf, NaN)
+                                                     quantile(column(runs, &Fig8Run::onset), 0.25, NonFinite::censored),
+                                                     quantile(column(runs, &Fig8Run::onset), 0.75, NonFinite::censored)});
         const std::string rv = number_text(r), rl = "_r" + rv;
         res.scalar("c_fit" + rl, f.c_fit, "1", "fitted c of K/K0 = exp(-c C/N) over the first exp_fit_efolds, seed mean, r = " + rv);
         res.scalar("c_fit_err" + rl, f.c_err, "1", "its standard error over the seeds");
@@ -107,7 +111,8 @@ void report_fig8_summary(Result& res, const std::vector<Fig8Row>& rows) {
         {"r", &Fig8Row::r}, {"c_fit", &Fig8Row::c_fit}, {"c_fit_err", &Fig8Row::c_err}, {"c_theory", &Fig8Row::c_th},
         {"line_departure", &Fig8Row::dev}, {"line_departure_err", &Fig8Row::dev_err},
         {"aniso_onset_cn_median", &Fig8Row::onset}, {"aniso_max_mean", &Fig8Row::max_aniso},
-        {"aniso_early_mean", &Fig8Row::early_aniso}};
+        {"aniso_early_mean", &Fig8Row::early_aniso}, {"aniso_onset_cn_q25", &Fig8Row::onset_q25},
+        {"aniso_onset_cn_q75", &Fig8Row::onset_q75}};
     for (const auto& [name, field] : columns) t.add(name, "1").values = column(rows, field);
     double worst_early = 0, smallest_dev_strong = INFINITY, largest_dev_weak = -INFINITY, max_strong = 1, c_viol = 0;
     for (const Fig8Row& a : rows) {

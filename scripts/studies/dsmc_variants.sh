@@ -31,10 +31,13 @@ declare -A variants=(
   [cells5-cell]="dsmc_cell_diameters=5 dsmc_free_volume=cell dsmc_free_volume_block=1 dsmc_displacement=true dsmc_partner=uniform dsmc_no_repeat=false dsmc_mft_fraction=0"
   [cells10-cell]="dsmc_cell_diameters=10 dsmc_free_volume=cell dsmc_free_volume_block=1 dsmc_displacement=true dsmc_partner=uniform dsmc_no_repeat=false dsmc_mft_fraction=0"
   [cells10-cell-norepeat]="dsmc_cell_diameters=10 dsmc_free_volume=cell dsmc_free_volume_block=1 dsmc_displacement=true dsmc_partner=uniform dsmc_no_repeat=true dsmc_mft_fraction=0"
+  # The default with the free-volume factor set to Henderson's g(d) = 1.5833 (rho/(1 - s_*) = 0.6786
+  # instead of 0.82): DSMC at the Enskog rate, ED's (issue 43 §3; scripts/studies/cooling_dsmc_rate.sh).
+  [cells10-enskog]="dsmc_cell_diameters=10 dsmc_free_volume=mean dsmc_rcp_fraction=0.6786 dsmc_displacement=true dsmc_partner=uniform dsmc_no_repeat=false dsmc_mft_fraction=0"
   # Without the dense-gas corrections (a dilute Boltzmann gas at rho = 0.25).
   [plain-nearest]="dsmc_cell_diameters=2 dsmc_free_volume=off dsmc_displacement=false dsmc_partner=nearest dsmc_no_repeat=true dsmc_mft_fraction=0"
 )
-order=(paper paper-mean cells10 norepeat nearest nearest-step nearest-block3 nearest-cells10 cells5-cell cells10-cell cells10-cell-norepeat plain-nearest)
+order=(paper paper-mean cells10 cells10-enskog norepeat nearest nearest-step nearest-block3 nearest-cells10 cells5-cell cells10-cell cells10-cell-norepeat plain-nearest)
 if (($#)); then order=("$@"); fi
 seeds=${SEEDS:-3}
 # A cooling run whose claims may fail (exit 1: DSMC variants are meant to depart) but which must
