@@ -58,17 +58,55 @@ void lattice_state(SeedRun& out, const std::vector<Vec2>& lat, const std::vector
     out.lattice_broken_below = start[r] > 0 ? double(lost(0, start[r])) / double(start[r]) : NAN;
 }
 
+// The engine of the column: disks at pos with velocities vel from t0 on, side walls at x = 0 and
+// x = x_right, the floor, gravity g_y; elastic and smooth (Sec. 5: r = r_w = 1, mu = mu_w = 0).
+EdEngine column_engine(const Pipe& s, const std::vector<Vec2>& pos, const std::vector<Vec2>& vel, double x_right,
+                       double g_y, double t0, const std::vector<double>& spin = {}) {
+    const std::size_t n = pos.size();
+    const EdConfig cfg{.lx = x_right, .ly = s.ly, .periodic_x = false, .periodic_y = false, .gravity = {0.0, g_y},
+                       .law = RoughDiskCollision{1.0, 0.0, -1.0, s.q},
+                       .walls = {EdWall{0, 0.0, +1}, EdWall{0, x_right, -1}, EdWall{1, s.y_floor, +1}},
+                       .t_c = 0.0, .tc_both = s.tc_rule == TcRule::both, .tc_keep_friction = s.tc_friction == TcFriction::keep};
+    return EdEngine(cfg, pos, vel, std::vector<double>(n, 0.5 * s.d), std::vector<double>(n, s.mass), spin, t0);
+}
+
 // The column at t = -t_r: the lattice on the floor, velocities uniform in [-v0, v0] from
-// RngStream(seed, index), elastic and smooth (Sec. 5: r = r_w = 1, mu = mu_w = 0).
-EdEngine build_column(const Pipe& s, const std::vector<Vec2>& lat, std::uint64_t seed, long index) {
+// RngStream(seed, index), then (only when asked, so that the defaults draw nothing more and keep
+// every run bit for bit) the side walls' outward displacements and the lattice's offset from the
+// same stream. Wall jitter (issue 43 §1 item 2; Sec. 5 names "fluctuations of the wall surface"
+// as a cause of cracks): each flat side wall moves outward by a uniform random amount in
+// [0, wall_jitter] d, constant along the pipe (the event-driven walls are straight lines; a
+// profile varying along y needs an engine feature). The left wall stays at x = 0 and the lattice
+// moves with it, so the detectors' frame (x from the left wall) is unchanged. Registration
+// (item 3): the widest row's free room L - d - span (0.01 d at L = 20.2, s = 1.01 d) goes to the
+// right wall (left, today), half to each side (centred), or a uniform random share (random).
+struct Column {
+    std::vector<Vec2> lat, vel;
+    double x_right = 0; // [m] the right wall
+};
+Column initial_column(const Pipe& s, SeedRun& out, std::uint64_t seed, long index) {
     const std::size_t n = std::size_t(s.n_particles);
     RngStream rng(seed, std::uint64_t(index));
-    const std::vector<Vec2> vel = uniform_velocities(n, s.v0, rng);
-    const EdConfig cfg{.lx = s.L, .ly = s.ly, .periodic_x = false, .periodic_y = false, .gravity = {0.0, -s.g},
-                       .law = RoughDiskCollision{1.0, 0.0, -1.0, s.q},
-                       .walls = {EdWall{0, 0.0, +1}, EdWall{0, s.L, -1}, EdWall{1, s.y_floor, +1}},
-                       .t_c = 0.0, .tc_both = s.tc_rule == TcRule::both, .tc_keep_friction = s.tc_friction == TcFriction::keep};
-    return EdEngine(cfg, lat, vel, std::vector<double>(n, 0.5 * s.d), std::vector<double>(n, s.mass), {}, -s.t_relax);
+    Column c;
+    c.vel = uniform_velocities(n, s.v0, rng);
+    double jl = 0, jr = 0, shift = 0;
+    if (s.wall_jitter > 0) {
+        jl = s.wall_jitter * s.d * rng.uniform();
+        jr = s.wall_jitter * s.d * rng.uniform();
+    }
+    const double span = std::floor((s.L - s.d) / s.a + 1e-9) * s.a, room = std::max(0.0, s.L - s.d - span);
+    if (s.registration == Registration::centred) shift = 0.5 * room;
+    if (s.registration == Registration::random) shift = room * rng.uniform();
+    c.x_right = s.L + jl + jr;
+    out.wall_left = jl / s.d;
+    out.wall_right = jr / s.d;
+    out.lattice_shift = shift / s.d;
+    if (jl == 0 && shift == 0 && jr == 0) // today's lattice, bit for bit
+        c.lat = triangular_lattice_positions(n, 0.5 * s.d, s.L - 0.5 * s.d, s.y_floor + 0.5 * s.d, s.a);
+    else // the same rows, moved right by jl + shift (the last site of a row stays inside: 1e-9 a of slack)
+        c.lat = triangular_lattice_positions(n, 0.5 * s.d + jl + shift, 0.5 * s.d + jl + shift + span + 1e-9 * s.a,
+                                             s.y_floor + 0.5 * s.d, s.a);
+    return c;
 }
 
 // v̄ = sqrt(<v^2>) sampled over the relaxation, t = -t_r .. 0 (Relaxation).
@@ -208,14 +246,22 @@ Fall fall(EdEngine& eng, const Pipe& s) {
 
 SeedRun run_seed(const Pipe& s, std::uint64_t seed, long index, bool figure) {
     const auto wall_start = std::chrono::steady_clock::now();
-    const std::vector<Vec2> lat = triangular_lattice_positions(std::size_t(s.n_particles), 0.5 * s.d, s.L - 0.5 * s.d,
-                                                               s.y_floor + 0.5 * s.d, s.a);
-    EdEngine eng = build_column(s, lat, seed, index);
     SeedRun out;
+    const Column col = initial_column(s, out, seed, index);
+    const std::vector<Vec2>& lat = col.lat;
+    // relax_gravity = off (issue 43 §1 item 4): Sec. 5 relaxes from v0 with r = r_w = 1 and
+    // mu = mu_w = 0 and does not say gravity acts then; without it v̄ is set by v0 alone (energy
+    // is conserved), with it by the lattice gaps' potential energy (0.596 sqrt(g d), see v0).
+    const bool g_relax = s.relax_gravity == RelaxGravity::on;
+    EdEngine eng = column_engine(s, lat, col.vel, col.x_right, g_relax ? -s.g : 0.0, -s.t_relax);
     const Relaxation rel = relax(eng, s.t_relax);
     out.vbar0 = rel.vbar.back();
     // Mean over the last third: how steady the relaxed state is.
     out.vbar_relax_late = std::accumulate(rel.vbar.end() - kRelaxSamples / 3, rel.vbar.end(), 0.0) / double(kRelaxSamples / 3);
+    // Gravity on at t = 0: a new engine from the relaxed state (the queue's predicted flights
+    // assume the old gravity). It forgets the relaxation's collision times, which matters only to
+    // Eq. (7) in the first t_c after the release.
+    if (!g_relax) eng = column_engine(s, eng.positions(), eng.velocities(), col.x_right, -s.g, eng.time(), eng.spins());
     release(eng, s);
     const double py0 = eng.total_momentum().y;
     const std::uint64_t coll0 = eng.total_collisions(), el0 = eng.elastic_collisions();

@@ -83,6 +83,16 @@ void report_fig14_fits(Result& res, const PipeArchingSpec& s, const std::vector<
                "fraction of seeds with B/A <= 14, the paper's value (its percentile in our distribution)");
     res.scalar("B_fraction_below_paper", share_finite(Bs, [](double y) { return y <= 14.0e3; }), "1",
                "fraction of seeds with B <= 14e3 1/s (the paper's B in reading 1)");
+    const std::vector<double> Brel = column(runs, &SeedRun::B_rel);
+    res.scalar("B_rel_median_seeds", median(Brel), "1/s",
+               "Eq. (22) B at the Fig. 14(b) times shifted by each seed's t_arch - t_arch_paper, median over seeds with an arch");
+    res.scalar("B_rel_fraction_below_paper", share_finite(Brel, [](double y) { return y <= 14.0e3; }), "1",
+               "fraction of those seeds with B_rel <= 14e3 1/s (the paper's B in reading 1)");
+    res.scalar("B_rel_over_A_fraction_below_paper",
+               share_finite(column(runs, [](const SeedRun& r) { return r.B_rel / r.A; }), [](double y) { return y <= 14.0; }), "1",
+               "fraction of seeds with B_rel / A <= 14, the paper's B/A");
+    res.scalar("fig14_times_rel_median", median(column(runs, &SeedRun::times_rel)), "1",
+               "arch-relative Fig. 14(b) times within the fall, pooled into B_rel, median over seeds with an arch");
     const MeanSd a = mean_sd(As), b = mean_sd(Bs), ba = mean_sd(BA);
     res.scalar("A_fit_seed_sem", a.sem, "1/s", "standard error of the mean of A over seeds");
     res.scalar("B_fit_seed_sem", b.sem, "1/s", "standard error of the mean of B over seeds");
@@ -180,7 +190,7 @@ void report_arch_times(Result& res, const std::vector<SeedRun>& runs) {
 }
 
 // The section's other statements (Sec. 5), per seed, then over seeds.
-void report_section(Result& res, const std::vector<SeedRun>& runs) {
+void report_section(Result& res, const PipeArchingSpec& s, const std::vector<SeedRun>& runs) {
     auto med = [&](double SeedRun::*f) { return median(column(runs, f)); };
     res.scalar("fluid_layers_median", med(&SeedRun::fluid_layers), "1",
                "top rows at t = 0 in which at least half of the disks lost a lattice neighbour, median");
@@ -207,6 +217,15 @@ void report_section(Result& res, const std::vector<SeedRun>& runs) {
                "largest gain of v_y(plug) - v_y(material below) within arch_window of the arch, median (> 0: the plug falls slower)");
     res.scalar("opening_below_median", med(&SeedRun::opening_below), "d",
                "largest growth of the distance between plug and material below within arch_window of the arch, median");
+    // Rule 'single run' (expected/README.md): a feature of the paper's one run must appear in at
+    // least one seed in ten; over all seeds (a seed without an arch has neither).
+    auto visible = [&](double SeedRun::*f) {
+        return fraction_below(column(runs, [&](const SeedRun& r) { return -(r.*f); }), -s.crack_opening);
+    };
+    res.scalar("opening_below_fraction_visible", visible(&SeedRun::opening_below), "1",
+               "fraction of seeds whose plug and material below moved apart by at least crack_opening (opening_below)");
+    res.scalar("opening_max_after_fraction_visible", visible(&SeedRun::opening_max_after), "1",
+               "fraction of seeds with a wall-to-wall gap of at least crack_opening within arch_window after the first arch");
     res.scalar("opening_max_before_median", med(&SeedRun::opening_max_before), "d",
                "widest wall-to-wall crack before the first arch, median over seeds (the falling column's own gaps)");
     res.scalar("opening_max_after_median", med(&SeedRun::opening_max_after), "d",
@@ -229,6 +248,10 @@ void report_section(Result& res, const std::vector<SeedRun>& runs) {
     res.scalar("wave_steps_total", steps, "1", "steps between successive distinct arches, summed over seeds");
     res.scalar("wave_ascend_share", steps > 0 ? up / steps : NAN, "1",
                "share of those steps in which the new wave starts higher than the previous one");
+    // Rule 'sign' of expected/README.md: the share's distance from one half in binomial standard
+    // errors sqrt(0.25 / n), so the claim's threshold (2) does not depend on the run's n.
+    res.scalar("wave_ascend_z", steps > 0 ? (up / steps - 0.5) / std::sqrt(0.25 / steps) : NAN, "1",
+               "wave_ascend_share minus one half, in binomial standard errors sqrt(0.25 / wave_steps_total)");
     res.scalar("wave_stronger_fraction", share_finite(column(runs, &SeedRun::wave_stronger), [](double y) { return y == 1.0; }), "1",
                "seeds in which a later wave (arch more than arch_separation from the first, after its first 4 ms) had more hot disks than the first arch, among seeds with an arch");
     res.scalar("crack_below_arch_median", med(&SeedRun::crack_below_arch), "d",
@@ -265,7 +288,7 @@ void report_seeds(Result& res, const PipeArchingSpec& s, const std::vector<SeedR
     report_fig14_fits(res, s, runs);
     report_seed_table(res, runs);
     report_arch_times(res, runs);
-    report_section(res, runs);
+    report_section(res, s, runs);
     report_costs(res, runs);
 }
 

@@ -19,8 +19,16 @@ namespace granrepro::experiments::pipe_arching_detail {
 
 enum class TcRule { either, both };    // Eq. (7) for a pair: elastic if either or both partners collided within t_c
 enum class TcFriction { drop, keep }; // what a TC-elastic collision does to mu and beta0
+// Where the lattice's free room (L - d minus the widest row's span) sits: all at the right wall
+// (the leftmost disk touches the left wall), split evenly, or a uniform random share per seed.
+enum class Registration { left, centred, random };
+enum class RelaxGravity { on, off }; // gravity during the relaxation t = -t_r .. 0 (always on after t = 0)
 inline void parse_choice(const std::string& s, TcRule& x) { x = s == "both" ? TcRule::both : TcRule::either; }
 inline void parse_choice(const std::string& s, TcFriction& x) { x = s == "keep" ? TcFriction::keep : TcFriction::drop; }
+inline void parse_choice(const std::string& s, Registration& x) {
+    x = s == "centred" ? Registration::centred : s == "random" ? Registration::random : Registration::left;
+}
+inline void parse_choice(const std::string& s, RelaxGravity& x) { x = s == "off" ? RelaxGravity::off : RelaxGravity::on; }
 // Read once from experiments/pipe-arching.toml, which holds every parameter's unit, range and source.
 struct PipeArchingSpec {
     long n_particles = 0, n_seeds = 0, crack_min_particles = 0, crack_min_above = 0;
@@ -31,6 +39,10 @@ struct PipeArchingSpec {
     double epsilon_w = 0, mu_w = 0, beta0_w = 0;
     TcRule tc_rule = TcRule::either;
     TcFriction tc_friction = TcFriction::drop;
+    double wall_jitter = 0;                                   // [d]
+    Registration registration = Registration::left;
+    RelaxGravity relax_gravity = RelaxGravity::on;
+    double t_arch_paper = 0;                                  // [s]
     std::vector<double> snapshot_times, dist_times_before, dist_times_after; // [s]
     double hot_rate = 0;                                      // [1/s]
     double link = 0, wall_reach = 0, pressure_band = 0, crack_opening = 0; // [d]
@@ -43,7 +55,8 @@ struct PipeArchingSpec {
         v("g", g); v("v0", v0); v("t_relax", t_relax); v("t_end", t_end); v("frame_dt", frame_dt);
         v("dist_dt", dist_dt); v("epsilon", epsilon); v("mu", mu); v("beta0", beta0); v("q", q); v("t_c", t_c);
         v("epsilon_w", epsilon_w); v("mu_w", mu_w); v("beta0_w", beta0_w); v("tc_rule", tc_rule);
-        v("tc_friction", tc_friction); v("snapshot_times", snapshot_times);
+        v("tc_friction", tc_friction); v("wall_jitter", wall_jitter); v("registration", registration);
+        v("relax_gravity", relax_gravity); v("t_arch_paper", t_arch_paper); v("snapshot_times", snapshot_times);
         v("dist_times_before", dist_times_before); v("dist_times_after", dist_times_after);
         v("hot_rate", hot_rate); v("link", link); v("wall_reach", wall_reach); v("pressure_band", pressure_band);
         v("crack_opening", crack_opening); v("precursor_band", precursor_band);
@@ -118,6 +131,8 @@ struct SeedRun {
     double crack_below_arch = NAN, crack_at_initiator = NAN;
     double opening_max_before = NAN, opening_max_after = NAN, opening_max_all = NAN;
     double A = NAN, A_err = NAN, A_chi2 = NAN, B = NAN, B_err = NAN, B_chi2 = NAN;
+    double B_rel = NAN, times_rel = NAN;          // Eq. (22) at the Fig. 14(b) times shifted by t_arch - t_arch_paper
+    double wall_left = NAN, wall_right = NAN, lattice_shift = NAN; // [d] the side walls' outward displacements, the lattice's offset
     double times_before = NAN, times_after = NAN; // Fig. 14 times pooled into A and B
     double dev_exp_early = NAN, dev_pow_early = NAN, dev_exp_late = NAN, dev_pow_late = NAN;
     double mean_rate_early = NAN;
@@ -139,6 +154,8 @@ struct SeedRun {
         v("crack_at_initiator", crack_at_initiator); v("opening_max_before", opening_max_before);
         v("opening_max_after", opening_max_after); v("opening_max_all", opening_max_all); v("A", A);
         v("A_err", A_err); v("A_chi2", A_chi2); v("B", B); v("B_err", B_err); v("B_chi2", B_chi2);
+        v("B_rel", B_rel); v("times_rel", times_rel); v("wall_left", wall_left); v("wall_right", wall_right);
+        v("lattice_shift", lattice_shift);
         v("times_before", times_before); v("times_after", times_after); v("dev_exp_early", dev_exp_early);
         v("dev_pow_early", dev_pow_early); v("dev_exp_late", dev_exp_late); v("dev_pow_late", dev_pow_late);
         v("mean_rate_early", mean_rate_early); v("momentum_residual", momentum_residual);

@@ -87,6 +87,11 @@ def snapshots(h5):
 def local_openings(h5, seed_outcome):
     """Run 0's local openings: {own,3d} x {after,all}, and per snapshot (t, own, 3d, wall-to-wall)."""
     L = float(param(h5, "width"))
+    # With wall_jitter (pipe_arching_walls.sh) the right wall is at width + both outward shifts
+    # (the left wall stays at x = 0); older runs have no such fields.
+    for key in ("wall_left", "wall_right"):
+        if seed_outcome.get(key) is not None and np.isfinite(seed_outcome[key]):
+            L += seed_outcome[key]
     nmin = int(param(h5, "crack_min_particles"))
     window = float(param(h5, "arch_window"))
     marks = h5["tables/marks"]
@@ -141,38 +146,48 @@ def main():
     committed = Path(sys.argv[2])
     configs = sys.argv[3:]
     rows_detector, rows_arch, rows_time, per_seed = [], [], [], []
-    stored_note = []
+    stored_note, tsv = [], []
     for cfg in configs:
-        # The config's 16-seed run (default: the committed paper-scale run, 32 seeds).
-        h5path = committed if cfg == "default" else out / cfg / "pipe-arching" / "data.h5"
-        with h5py.File(h5path, "r") as h5:
-            seeds = records(h5)
-            if cfg == "default":  # what the stored results allow: run 0's six snapshots
-                lo = local_openings(h5, seeds[0])
-                if lo:
-                    for t, own, d3, w in lo["rows"]:
-                        stored_note.append(f"| {t:.3f} | {own:.3f} | {d3:.3f} | {w:.3f} |")
+        # The config's 16-seed run (default: the committed paper-scale run, 32 seeds); a study with
+        # frame runs only (pipe_arching_walls.sh, committed = none) has none.
+        h5path = committed if cfg == "default" and committed.is_file() else out / cfg / "pipe-arching" / "data.h5"
+        seeds = []
+        if h5path.is_file():
+            with h5py.File(h5path, "r") as h5:
+                seeds = records(h5)
+                if cfg == "default":  # what the stored results allow: run 0's six snapshots
+                    lo = local_openings(h5, seeds[0])
+                    if lo:
+                        for t, own, d3, w in lo["rows"]:
+                            stored_note.append(f"| {t:.3f} | {own:.3f} | {d3:.3f} | {w:.3f} |")
         n = len(seeds)
-        w_after = [s.get("opening_max_after") for s in seeds]
-        w_all = [s.get("opening_max_all") for s in seeds]
-        left = np.array([s["arch_left_4ms"] for s in seeds if s.get("arch_left_4ms") is not None])
-        arch_n = sum(1 for s in seeds if s.get("t_arch") is not None)
-        crack_n = sum(1 for s in seeds if s.get("t_crack") is not None)
-        src = "committed paper_figures" if cfg == "default" else "n_seeds=16 run"
-        rows_detector.append((cfg, f"wall-to-wall, 10 ms after arch ({src})", n, *stats(w_after, n)))
-        rows_detector.append((cfg, f"wall-to-wall, any frame >= 0.01 s ({src})", n, *stats(w_all, n)))
-        below = [s.get("opening_below") for s in seeds]
-        rows_detector.append((cfg, f"plug separation opening_below ({src})", n, *stats(below, n)))
+        if n:
+            w_after = [s.get("opening_max_after") for s in seeds]
+            w_all = [s.get("opening_max_all") for s in seeds]
+            left = np.array([s["arch_left_4ms"] for s in seeds if s.get("arch_left_4ms") is not None])
+            arch_n = sum(1 for s in seeds if s.get("t_arch") is not None)
+            crack_n = sum(1 for s in seeds if s.get("t_crack") is not None)
+            src = "committed paper_figures" if cfg == "default" else "n_seeds=16 run"
+            rows_detector.append((cfg, f"wall-to-wall, 10 ms after arch ({src})", n, *stats(w_after, n)))
+            rows_detector.append((cfg, f"wall-to-wall, any frame >= 0.01 s ({src})", n, *stats(w_all, n)))
+            below = [s.get("opening_below") for s in seeds]
+            rows_detector.append((cfg, f"plug separation opening_below ({src})", n, *stats(below, n)))
         # Single-seed runs with every frame as a snapshot.
         singles = sorted((out / cfg / "frames").glob("seed*/pipe-arching/data.h5"))
         loc = {k: [] for k in ("own_after", "3d_after", "own_all", "3d_all")}
         sw_after, lag, by_paper, n_open, left_f = [], [], 0, 0, []
+        sw_all, below_f, vbar_f, tarch_f, crack_f = [], [], [], [], 0
         for p in singles:
             with h5py.File(p, "r") as h5:
                 s0 = records(h5)[0]
                 r = local_openings(h5, s0)
                 seed = p.parent.parent.name
                 sw_after.append(s0.get("opening_max_after"))
+                sw_all.append(s0.get("opening_max_all"))
+                below_f.append(s0.get("opening_below"))
+                vbar_f.append(s0.get("vbar0"))
+                tarch_f.append(s0.get("t_arch"))
+                crack_f += s0.get("t_crack") is not None
                 if s0.get("arch_left_4ms") is not None:
                     left_f.append(s0["arch_left_4ms"])
                 for k in loc:
@@ -187,6 +202,8 @@ def main():
         m = len(singles)
         if m:
             rows_detector.append((cfg, "wall-to-wall, 10 ms after arch (frame runs)", m, *stats(sw_after, m)))
+            rows_detector.append((cfg, "wall-to-wall, any frame >= 0.01 s (frame runs)", m, *stats(sw_all, m)))
+            rows_detector.append((cfg, "plug separation opening_below (frame runs)", m, *stats(below_f, m)))
             rows_detector.append((cfg, "local own width, 10 ms after arch", m, *stats(loc["own_after"], m)))
             rows_detector.append((cfg, "local 3 d of wall, 10 ms after arch", m, *stats(loc["3d_after"], m)))
             rows_detector.append((cfg, "local own width, t_precursor .. t_end", m, *stats(loc["own_all"], m)))
@@ -200,11 +217,30 @@ def main():
         if len(left_f):
             rows_arch.append((cfg + " (frame runs)", m, len(left_f), "-", f"{np.median(left_f):.2f}",
                               f"{np.percentile(left_f, 10):.2f}", f"{left_f.min():.2f}", f"{np.mean(left_f <= 0.25):.2f}"))
-        rows_arch.append((cfg, n, arch_n, crack_n,
-                          f"{np.median(left):.2f}" if len(left) else "-",
-                          f"{np.percentile(left, 10):.2f}" if len(left) else "-",
-                          f"{left.min():.2f}" if len(left) else "-",
-                          f"{np.mean(left <= 0.25):.2f}" if len(left) else "-"))
+        if n:
+            rows_arch.append((cfg, n, arch_n, crack_n,
+                              f"{np.median(left):.2f}" if len(left) else "-",
+                              f"{np.percentile(left, 10):.2f}" if len(left) else "-",
+                              f"{left.min():.2f}" if len(left) else "-",
+                              f"{np.mean(left <= 0.25):.2f}" if len(left) else "-"))
+        if m:  # one line per config for the figure (TSV, env TSV): frame runs only
+            fin = lambda v: np.array([x for x in v if x is not None and np.isfinite(x)])
+            own, wa, vb, ta = fin(loc["own_after"]), fin(sw_after), fin(vbar_f), fin(tarch_f)
+            tsv.append((cfg, m, len(left_f), crack_f,
+                        np.median(own) if len(own) else np.nan, np.sum(own > 0.3) / m, np.sum(own > 0.5) / m,
+                        np.sum(fin(loc["3d_after"]) > 0.3) / m, np.median(wa) if len(wa) else np.nan,
+                        wa.max() if len(wa) else np.nan, np.median(left_f) if len(left_f) else np.nan,
+                        np.mean(left_f <= 0.25) if len(left_f) else np.nan,
+                        np.median(vb) if len(vb) else np.nan, np.median(ta) if len(ta) else np.nan))
+    if os.environ.get("TSV"):
+        with open(os.environ["TSV"], "w") as f:
+            f.write("# pipe_arching_crack.py on the frame runs of each config (scripts/studies/pipe_arching_walls.sh)\n")
+            f.write("# index\tconfig\tseeds\tseeds_with_arch\tseeds_with_wall_to_wall_crack\tlocal_own_after_median_d"
+                    "\tlocal_own_after_share_gt_0.3\tlocal_own_after_share_gt_0.5\tlocal_3d_after_share_gt_0.3"
+                    "\twall_to_wall_after_median_d\twall_to_wall_after_max_d\tarch_left_4ms_median"
+                    "\tarch_left_4ms_share_le_0.25\tvbar_t0_median_m_per_s\tt_arch_median_s\n")
+            for k, r in enumerate(tsv):
+                f.write(f"{k}\t{r[0]}\t{r[1]}\t{r[2]}\t{r[3]}\t" + "\t".join(f"{x:.4f}" for x in r[4:]) + "\n")
     print("| config | detector | seeds | median [d] | max [d] | > 0.3 d | > 0.5 d | seeds with a value |")
     print("|---|---|---|---|---|---|---|---|")
     for r in rows_detector:
@@ -220,13 +256,14 @@ def main():
     for r in rows_time:
         print("| " + " | ".join(str(x) for x in r) + " |")
     print()
-    print("Stored data (committed paper_figures/pipe-arching/data.h5, run 0, its six snapshots):")
-    print()
-    print("| t [s] | local own [d] | local 3 d [d] | wall-to-wall [d] |")
-    print("|---|---|---|---|")
-    for line in stored_note:
-        print(line)
-    print()
+    if stored_note:
+        print("Stored data (committed paper_figures/pipe-arching/data.h5, run 0, its six snapshots):")
+        print()
+        print("| t [s] | local own [d] | local 3 d [d] | wall-to-wall [d] |")
+        print("|---|---|---|---|")
+        for line in stored_note:
+            print(line)
+        print()
     print("Per seed (frame runs): config, seed, t_precursor, t_arch, arch_left_4ms, wall-to-wall after, local own after, local 3 d after, local own all, local 3 d all")
     print()
     print("```")
