@@ -278,6 +278,7 @@ SeedRun run_seed(const Pipe& s, std::uint64_t seed, long index, bool figure) {
         plug_motion(out, s, fl, fa);
     }
     cracks(out, s, fl, fa, i_prec);
+    local_crack(out, s, fl, fa, i_prec);
     const std::vector<RateHistogram> hs = fit_fig14(out, s, fl);
 
     // Momentum balance over the fall; the walls' share of the weight.

@@ -1,6 +1,8 @@
 // pipe-arching: what one fall shows (Sec. 5, Fig. 13): the first arch, its initiating disk, what follows, its plug, the cracks.
 #include <algorithm>
 #include <cmath>
+#include <utility>
+#include <vector>
 
 #include "analysis/arch_waves.hpp"
 #include "experiments/pipe_arching/spec.hpp"
@@ -99,6 +101,61 @@ void plug_motion(SeedRun& out, const Pipe& s, const Fall& fl, long fa) {
     out.opening_below = open;
     out.wall_slowdown_arch = P.vy_wall - P.vy_inner;
     out.wall_slowdown_before = plug(f0).vy_wall - plug(f0).vy_inner;
+}
+
+// Sec. 5, Fig. 13: "for t >= 0.060 s at the position of the initiating particle (at the black
+// bar) a crack is visible" (issue 43 §1): the local opening beside the initiating disk i, in the
+// strip of its own width at its wall, x in [x_i - d/2, x_i + d/2] clipped at the wall. Every disk
+// reaching into the strip blocks [y - h, y + h], h its half chord inside the strip (d/2 when its
+// centre is inside); the opening is the longest height interval no disk blocks, from i's centre
+// down below_depth d and never below the crack_min_particles-th lowest disk (the spray at the
+// bottom, which the wall-to-wall detector ignores too). The intact lattice gives 0. In d; NaN if
+// the window is empty. The same measure as scripts/studies/pipe_arching_crack.py (own strip).
+double local_opening(const std::vector<Vec2>& pos, int i, const Pipe& s, double x_right) {
+    const double d = s.d, r = 0.5 * d;
+    const bool right = pos[std::size_t(i)].x > 0.5 * x_right; // mirror: i's wall at x = 0
+    auto xm = [&](const Vec2& p) { return right ? x_right - p.x : p.x; };
+    const double xi = xm(pos[std::size_t(i)]), yi = pos[std::size_t(i)].y;
+    const double a = std::max(0.0, xi - r), b = xi + r;
+    std::vector<double> ys(pos.size());
+    std::transform(pos.begin(), pos.end(), ys.begin(), [](const Vec2& p) { return p.y; });
+    const std::size_t nmin = std::size_t(std::clamp(s.crack_min_particles, 1L, long(ys.size())));
+    std::nth_element(ys.begin(), ys.begin() + long(nmin - 1), ys.end());
+    const double top = yi, bot = std::max(yi - s.below_depth * d, ys[nmin - 1]);
+    if (top <= bot) return NAN;
+    std::vector<std::pair<double, double>> iv; // blocked [lo, hi]
+    for (const Vec2& p : pos) {
+        const double x = xm(p), dx = x < a ? a - x : (x > b ? x - b : 0.0);
+        if (dx >= r) continue;
+        const double h = std::sqrt(std::max(0.0, r * r - dx * dx));
+        iv.emplace_back(p.y - h, p.y + h);
+    }
+    std::sort(iv.begin(), iv.end());
+    double best = 0, cover = bot; // sweep upward: cover = the highest blocked height so far
+    for (const auto& [lo, hi] : iv) {
+        if (hi <= bot) continue;
+        if (lo >= top) break;
+        if (lo > cover) best = std::max(best, std::min(lo, top) - cover);
+        cover = std::max(cover, hi);
+        if (cover >= top) break;
+    }
+    if (cover < top) best = std::max(best, top - cover);
+    return best / d;
+}
+
+// The local opening at the initiating disk i_prec (local_opening) from its first hot frame on:
+// the first time it reaches crack_opening, and its largest value within arch_window after the arch.
+void local_crack(SeedRun& out, const Pipe& s, const Fall& fl, long fa, int i_prec) {
+    if (fa < 0 || i_prec < 0 || std::isnan(out.t_precursor)) return;
+    const double x_right = s.L + (out.wall_left + out.wall_right) * s.d;
+    double omax = -INFINITY;
+    for (long f = std::max(s.detect_from, frame_of(out.t_precursor, s.frame_dt)); f <= s.n_frames; ++f) {
+        const double o = local_opening(fl.at(f).pos, i_prec, s, x_right);
+        if (std::isnan(o)) continue;
+        if (o >= s.crack_opening && std::isnan(out.t_local_crack)) out.t_local_crack = s.t(f);
+        if (f >= fa && f <= fa + s.frames(s.arch_window)) omax = std::max(omax, o);
+    }
+    out.local_opening_after = std::isfinite(omax) ? omax : NAN;
 }
 
 // Cracks: the first frame with an opening >= crack_opening and how it relates to the first arch

@@ -130,6 +130,7 @@ struct SeedRun {
     double t_crack = NAN, y_crack = NAN, y0_crack = NAN, crack_opening = NAN;
     double crack_below_arch = NAN, crack_at_initiator = NAN;
     double opening_max_before = NAN, opening_max_after = NAN, opening_max_all = NAN;
+    double t_local_crack = NAN, local_opening_after = NAN; // at the initiating disk (local_crack)
     double A = NAN, A_err = NAN, A_chi2 = NAN, B = NAN, B_err = NAN, B_chi2 = NAN;
     double B_rel = NAN, times_rel = NAN;          // Eq. (22) at the Fig. 14(b) times shifted by t_arch - t_arch_paper
     double wall_left = NAN, wall_right = NAN, lattice_shift = NAN; // [d] the side walls' outward displacements, the lattice's offset
@@ -152,7 +153,8 @@ struct SeedRun {
         v("wall_slowdown_before", wall_slowdown_before); v("t_crack", t_crack); v("y_crack", y_crack);
         v("y0_crack", y0_crack); v("crack_opening", crack_opening); v("crack_below_arch", crack_below_arch);
         v("crack_at_initiator", crack_at_initiator); v("opening_max_before", opening_max_before);
-        v("opening_max_after", opening_max_after); v("opening_max_all", opening_max_all); v("A", A);
+        v("opening_max_after", opening_max_after); v("opening_max_all", opening_max_all);
+        v("t_local_crack", t_local_crack); v("local_opening_after", local_opening_after); v("A", A);
         v("A_err", A_err); v("A_chi2", A_chi2); v("B", B); v("B_err", B_err); v("B_chi2", B_chi2);
         v("B_rel", B_rel); v("times_rel", times_rel); v("wall_left", wall_left); v("wall_right", wall_right);
         v("lattice_shift", lattice_shift);
@@ -216,6 +218,7 @@ int first_arch(SeedRun& out, const Pipe& s, const Fall& fl, long fa);
 void arch_aftermath(SeedRun& out, const Pipe& s, const Fall& fl, long fa);
 void plug_motion(SeedRun& out, const Pipe& s, const Fall& fl, long fa);
 void cracks(SeedRun& out, const Pipe& s, const Fall& fl, long fa, int i_prec);
+void local_crack(SeedRun& out, const Pipe& s, const Fall& fl, long fa, int i_prec);
 // Fig. 14's fits and run 0's tables (compute_figures.cpp).
 std::vector<RateHistogram> fit_fig14(SeedRun& out, const PipeArchingSpec& s, const Fall& fl);
 std::vector<FigureTable> figure_tables(const Pipe& s, const Fall& fl, const Relaxation& rel,
