@@ -2,7 +2,9 @@
 """Compare the numbers of two results folders bit for bit: every scalar and every table column of
 each experiment's data.h5 (values and units), not provenance, timings or stored points (a point
 file's layout may change while the figures stay). Exit 0 if identical, 1 with one line per
-difference. Usage: compare_results.py OLD NEW [EXPERIMENT...]"""
+difference. Values that measure time (the names `granrepro verify` leaves out: wall_seconds,
+wall_time, seconds_per, ..._per_second, resumed_points) are not compared, as no rerun repeats them.
+Usage: compare_results.py OLD NEW [EXPERIMENT...]"""
 import os, sys
 import h5py, numpy as np
 
@@ -14,6 +16,11 @@ def leaves(f, group):
             out[name] = (np.asarray(obj[()]), obj.attrs.get("unit"))
     f[group].visititems(visit)
     return out
+
+def timing(name):
+    leaf = name.rsplit("/", 1)[-1]
+    return (any(t in leaf for t in ("wall_seconds", "wall_time", "seconds_per")) or leaf.endswith("per_second")
+            or leaf == "resumed_points")
 
 def same(a, b):
     if a.shape != b.shape or a.dtype != b.dtype: return False
@@ -33,6 +40,7 @@ for e in names:
         for g in ("scalars", "tables"):
             la, lb = leaves(a, g), leaves(b, g)
             for k in sorted(set(la) | set(lb)):
+                if timing(k): continue
                 n += 1
                 if k not in la or k not in lb:
                     print(f"{e}: {g}/{k} only in {'old' if k in la else 'new'}"); bad += 1
