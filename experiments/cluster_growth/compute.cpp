@@ -5,6 +5,7 @@
 #include <optional>
 #include <string>
 
+#include "data/fields.hpp"
 #include "core/rng_stream.hpp"
 #include "engines/ed/ed_engine.hpp"
 #include "engines/ed/ed_initial_states.hpp"
@@ -25,12 +26,7 @@ struct LoopState : Samples {
     std::vector<double> last_t, last_interval;  // [s]; -inf / +inf before the first
     std::vector<std::uint32_t> fast, prev_fast; // collisions within t_c of the previous one, and at t/2
     std::uint64_t fast_total = 0;               // their sum over particles
-    template <class V>
-    void fields(V&& v) {
-        Samples::fields(v);
-        v("prev_counts", prev_counts), v("last_t", last_t), v("last_interval", last_interval), v("fast", fast), v("prev_fast", prev_fast);
-        v("fast_total", fast_total);
-    }
+    GRANREPRO_FIELDS_BASE(Samples, prev_counts, last_t, last_interval, fast, prev_fast, fast_total)
 };
 
 constexpr const char* kRunSchema = "granrepro-cluster-growth-run";

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "data/fields.hpp"
 #include "core/vec2.hpp"
 #include "data/result.hpp"
 #include "experiments/common/columns.hpp"
@@ -33,17 +34,10 @@ struct ClusterSpec {
     double tail_rate = 0; // [1/s]
     int samples_per_octave = 0, hist_bins = 0;
     std::vector<double> paper_cn, snapshot_times; // snapshot_times [s]
-    template <class V>
-    void fields(V&& v) {
-        v("n_side", n_side), v("box_over_d", box_over_d), v("d", d), v("mass", mass), v("vbar", vbar);
-        v("mu", mu), v("r", r), v("t_c", t_c), v("tc_both", tc_both), v("tc_compare_until", tc_compare_until);
-        v("initial_positions", initial_positions), v("equilibration", equilibration), v("t_base", t_base);
-        v("samples_per_octave", samples_per_octave), v("cn_end", cn_end), v("t_max", t_max);
-        v("paper_cn", paper_cn), v("snapshot_times", snapshot_times), v("cluster_cell", cluster_cell);
-        v("poisson_until_cn", poisson_until_cn), v("tail_fit_from", tail_fit_from), v("hist_bins", hist_bins);
-        v("hist_quantile", hist_quantile), v("tail_rate", tail_rate), v("late_slope_from", late_slope_from);
-        v("elastic_until", elastic_until);
-    }
+    GRANREPRO_FIELDS(n_side, box_over_d, d, mass, vbar, mu, r, t_c, tc_both, tc_compare_until, initial_positions,
+                     equilibration, t_base, samples_per_octave, cn_end, t_max, paper_cn, snapshot_times, cluster_cell,
+                     poisson_until_cn, tail_fit_from, hist_bins, hist_quantile, tail_rate, late_slope_from,
+                     elastic_until)
     std::size_t n() const { return std::size_t(n_side * n_side); }
     double L() const { return box_over_d * d; } // [m]
     std::vector<double> radii() const { return std::vector<double>(n(), 0.5 * d); }

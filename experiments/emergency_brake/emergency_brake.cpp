@@ -9,6 +9,7 @@
 #include <string>
 #include <utility>
 
+#include "data/fields.hpp"
 #include "analysis/curve_analysis.hpp"
 #include "scenarios/impact_shot.hpp"
 #include "harness/protocol.hpp"
@@ -31,12 +32,8 @@ struct EmergencyBrakeSpec : ImpactShotSpec {
     int n_vy = 0;
     std::vector<double> kN_scan;   // further k_N at vx_list[0], e_N held [N/m]
     double hkk_xi_ref = 0;         // overlap at which the HKK series matches the linear law [m]
-    template <class V> void fields(V&& v) {
-        ImpactShotSpec::fields(v);
-        v("wall_spacing", wall_spacing); v("pipe_wall_spacing", pipe_wall_spacing); v("x_start", x_start);
-        v("n_positions", n_positions); v("vx_list", vx_list); v("vy_min", vy_min); v("vy_max", vy_max);
-        v("n_vy", n_vy); v("kN_scan", kN_scan); v("hkk_xi_ref", hkk_xi_ref);
-    }
+    GRANREPRO_FIELDS_BASE(ImpactShotSpec, wall_spacing, pipe_wall_spacing, x_start, n_positions, vx_list, vy_min,
+                     vy_max, n_vy, kN_scan, hkk_xi_ref)
 };
 
 void validate(const ParameterSet& p) {
@@ -93,16 +90,13 @@ struct Point {
     double dvy = 0, dvy_sem = 0, contacts = 0, multi_fraction = 0;
     double vx_return = 0; // mean v_x^f / v_x^i: how much of the speed towards the wall comes back
     int incomplete = 0;
-    template <class V> void fields(V&& v) {
-        v("dvy", dvy), v("dvy_sem", dvy_sem), v("contacts", contacts), v("multi_fraction", multi_fraction);
-        v("vx_return", vx_return), v("incomplete", incomplete);
-    }
+    GRANREPRO_FIELDS(dvy, dvy_sem, contacts, multi_fraction, vx_return, incomplete)
 };
 
 // One series' points over the v_y^i grid: a sweep point.
 struct SeriesPoints {
     std::vector<Point> points;
-    template <class V> void fields(V&& v) { v("points", points); }
+    GRANREPRO_FIELDS(points)
 };
 
 // Series: one per v_x^i at the experiment's k_N (the figures), one per extra k_N at vx_list[0],

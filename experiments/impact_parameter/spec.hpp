@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "data/fields.hpp"
 #include "core/vec2.hpp"
 #include "data/result.hpp"
 #include "experiments/common/columns.hpp"
@@ -23,15 +24,10 @@ struct ImpactSpec {
     double arrow_rms_length = 0;                                              // [d]
     double eddy_significance = 0, elastic3d_collisions = 0;
     std::vector<double> restitutions, elastic_densities, elastic3d_packing, window_edges; // window_edges [s]
-    template <class V> void fields(V&& v) {
-        v("N", N); v("seeds", seeds); v("stress_snapshots", stress_snapshots); v("eddy_shuffles", eddy_shuffles);
-        v("elastic3d_n_side", elastic3d_n_side); v("n_bins", n_bins); v("stress_cells", stress_cells); v("rho", rho);
-        v("d", d); v("m", m); v("vbar", vbar); v("t_c", t_c); v("mu", mu); v("beta0", beta0); v("t_end", t_end); v("stress_t_begin", stress_t_begin);
-        v("equilibration_collisions", equilibration_collisions); v("arrow_rms_length", arrow_rms_length);
-        v("elastic_collisions_per_particle", elastic_collisions_per_particle); v("eddy_significance", eddy_significance);
-        v("elastic3d_collisions", elastic3d_collisions); v("restitutions", restitutions); v("window_edges", window_edges);
-        v("elastic_densities", elastic_densities); v("elastic3d_packing", elastic3d_packing);
-    }
+    GRANREPRO_FIELDS(N, seeds, stress_snapshots, eddy_shuffles, elastic3d_n_side, n_bins, stress_cells, rho, d, m,
+                     vbar, t_c, mu, beta0, t_end, stress_t_begin, equilibration_collisions, arrow_rms_length,
+                     elastic_collisions_per_particle, eddy_significance, elastic3d_collisions, restitutions,
+                     window_edges, elastic_densities, elastic3d_packing)
     // Sweep points: seed s, run k (the cooling runs, then the elastic densities) is 2D point
     // s * per_seed() + k; the 3D packing fractions follow the 2D points.
     std::size_t n_r() const { return restitutions.size(); }

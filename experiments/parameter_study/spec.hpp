@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "data/fields.hpp"
 #include "data/result.hpp"
 #include "experiments/common/columns.hpp"
 
@@ -21,13 +22,9 @@ struct ParameterStudySpec {
     double exp_fit_efolds = 0, line_check_efolds = 0, aniso_threshold = 0;
     std::vector<double> zeta_fit_early, zeta_fit_late, zeta_fit_tail; // C/N ranges [lo, hi]
     double tc_compare_time = 0, tc_small_max = 0;                      // [s]
-    template <class V> void fields(V&& v) {
-        v("n_side", n_side); v("seeds", seeds); v("box_over_d", box_over_d); v("d", d); v("mass", mass); v("vbar", vbar);
-        v("mu", mu); v("equilibration", equilibration); v("cn_end", cn_end); v("fig8_r", fig8_r); v("fig9_t_c", fig9_t_c);
-        v("fig8_t_c", fig8_t_c); v("fig9_r", fig9_r); v("exp_fit_efolds", exp_fit_efolds); v("aniso_threshold", aniso_threshold);
-        v("line_check_efolds", line_check_efolds); v("zeta_fit_early", zeta_fit_early); v("zeta_fit_late", zeta_fit_late);
-        v("zeta_fit_tail", zeta_fit_tail); v("tc_compare_time", tc_compare_time); v("tc_small_max", tc_small_max);
-    }
+    GRANREPRO_FIELDS(n_side, seeds, box_over_d, d, mass, vbar, mu, equilibration, cn_end, fig8_r, fig9_t_c, fig8_t_c,
+                     fig9_r, exp_fit_efolds, aniso_threshold, line_check_efolds, zeta_fit_early, zeta_fit_late,
+                     zeta_fit_tail, tc_compare_time, tc_small_max)
 };
 
 // One sweep point and what it produced.
@@ -38,10 +35,7 @@ struct Trace {
     double wall_seconds = 0, events = 0, pairs = 0;
     std::string error; // the engine's message if it stopped the run (collapse guard)
     double k(std::size_t i) const { return kx[i] + ky[i] + krot[i]; }
-    template <class V> void fields(V&& v) {
-        v("t", t), v("cn", cn), v("elastic_cn", elastic_cn), v("kx", kx), v("ky", ky), v("krot", krot);
-        v("wall_seconds", wall_seconds), v("events", events), v("pairs", pairs), v("error", error);
-    }
+    GRANREPRO_FIELDS(t, cn, elastic_cn, kx, ky, krot, wall_seconds, events, pairs, error)
 };
 
 // One run: seed `seed`, random stream `stream` (compute.cpp).
@@ -63,7 +57,6 @@ struct Sweep {
     std::vector<std::size_t> fig8_idx, fig9_idx; // the point of each fig8_r, of each fig9_t_c
     std::vector<std::vector<Trace>> traces;       // [point][seed]
     std::vector<MeanCurve> mean_cn, mean_t;       // seed means per point, against C/N and t
-    long resumed = 0;
     double wall = 0; // [s]
     std::chrono::steady_clock::time_point start; // of the sweep
 };

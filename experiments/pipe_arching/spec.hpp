@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "data/fields.hpp"
 #include "analysis/crack_detector.hpp"
 #include "core/vec2.hpp"
 #include "data/result.hpp"
@@ -49,21 +50,12 @@ struct PipeArchingSpec {
     double precursor_band = 0, plug_half_height = 0, below_depth = 0, arch_separation = 0; // [d]
     double arch_pressure_factor = 0;
     double t_detect_min = 0, precursor_window = 0, arch_window = 0; // [s]
-    template <class V> void fields(V&& v) {
-        v("n_particles", n_particles); v("n_seeds", n_seeds); v("crack_min_particles", crack_min_particles);
-        v("crack_min_above", crack_min_above); v("width", width); v("lattice", lattice); v("d", d); v("mass", mass);
-        v("g", g); v("v0", v0); v("t_relax", t_relax); v("t_end", t_end); v("frame_dt", frame_dt);
-        v("dist_dt", dist_dt); v("epsilon", epsilon); v("mu", mu); v("beta0", beta0); v("q", q); v("t_c", t_c);
-        v("epsilon_w", epsilon_w); v("mu_w", mu_w); v("beta0_w", beta0_w); v("tc_rule", tc_rule);
-        v("tc_friction", tc_friction); v("wall_jitter", wall_jitter); v("registration", registration);
-        v("relax_gravity", relax_gravity); v("t_arch_paper", t_arch_paper); v("snapshot_times", snapshot_times);
-        v("dist_times_before", dist_times_before); v("dist_times_after", dist_times_after);
-        v("hot_rate", hot_rate); v("link", link); v("wall_reach", wall_reach); v("pressure_band", pressure_band);
-        v("crack_opening", crack_opening); v("precursor_band", precursor_band);
-        v("plug_half_height", plug_half_height); v("below_depth", below_depth);
-        v("arch_separation", arch_separation); v("arch_pressure_factor", arch_pressure_factor);
-        v("t_detect_min", t_detect_min); v("precursor_window", precursor_window); v("arch_window", arch_window);
-    }
+    GRANREPRO_FIELDS(n_particles, n_seeds, crack_min_particles, crack_min_above, width, lattice, d, mass, g, v0,
+                     t_relax, t_end, frame_dt, dist_dt, epsilon, mu, beta0, q, t_c, epsilon_w, mu_w, beta0_w, tc_rule,
+                     tc_friction, wall_jitter, registration, relax_gravity, t_arch_paper, snapshot_times,
+                     dist_times_before, dist_times_after, hot_rate, link, wall_reach, pressure_band, crack_opening,
+                     precursor_band, plug_half_height, below_depth, arch_separation, arch_pressure_factor,
+                     t_detect_min, precursor_window, arch_window)
 };
 
 constexpr int kLeft = 0, kRight = 1, kFloor = 2; // wall indices
@@ -94,7 +86,7 @@ inline std::string tlabel(double t) {
 // Eq. (21) (a Fig. 14(a) time) or Eq. (22) (a (b) time) fitted at one time alone (NaN: no fit).
 struct TimeFit {
     double t = NAN, value = NAN, error = NAN; // [s], [1/s], [1/s]
-    template <class V> void fields(V&& v) { v("t", t); v("value", value); v("error", error); }
+    GRANREPRO_FIELDS(t, value, error)
 };
 
 // One of run 0's tables (relaxation, Figs. 13 and 14), built by the run and carried through the
@@ -108,9 +100,7 @@ struct FigureTable {
         units.push_back(unit);
         values.push_back(std::move(v));
     }
-    template <class V> void fields(V&& v) {
-        v("name", name); v("description", description); v("columns", columns); v("units", units); v("values", values);
-    }
+    GRANREPRO_FIELDS(name, description, columns, units, values)
 };
 
 // One run (one seed). Times in s, heights in d above the removed floor unless named otherwise.
@@ -141,29 +131,15 @@ struct SeedRun {
     double wall_seconds = NAN, collisions = NAN, elastic_share = NAN;
     std::vector<TimeFit> per_time;    // every run: at each Fig. 14 time
     std::vector<FigureTable> figure;  // run 0 only
-    template <class V> void fields(V&& v) {
-        v("vbar0", vbar0); v("vbar_relax_late", vbar_relax_late); v("fluid_layers", fluid_layers);
-        v("lattice_broken_below", lattice_broken_below); v("t_hot_wall", t_hot_wall); v("t_arch", t_arch);
-        v("y_arch", y_arch); v("y0_arch", y0_arch); v("arch_size", arch_size); v("arch_pL", arch_pL);
-        v("arch_pR", arch_pR); v("t_precursor", t_precursor);
-        v("react_lag", react_lag); v("arch_left_4ms", arch_left_4ms); v("arch_above_later", arch_above_later);
-        v("wave_steps", wave_steps); v("wave_steps_up", wave_steps_up); v("wave_stronger", wave_stronger);
-        v("arch_below_later", arch_below_later); v("plug_wall_load", plug_wall_load); v("arch_brake", arch_brake);
-        v("opening_below", opening_below); v("wall_slowdown_arch", wall_slowdown_arch);
-        v("wall_slowdown_before", wall_slowdown_before); v("t_crack", t_crack); v("y_crack", y_crack);
-        v("y0_crack", y0_crack); v("crack_opening", crack_opening); v("crack_below_arch", crack_below_arch);
-        v("crack_at_initiator", crack_at_initiator); v("opening_max_before", opening_max_before);
-        v("opening_max_after", opening_max_after); v("opening_max_all", opening_max_all);
-        v("t_local_crack", t_local_crack); v("local_opening_after", local_opening_after); v("A", A);
-        v("A_err", A_err); v("A_chi2", A_chi2); v("B", B); v("B_err", B_err); v("B_chi2", B_chi2);
-        v("B_rel", B_rel); v("times_rel", times_rel); v("wall_left", wall_left); v("wall_right", wall_right);
-        v("lattice_shift", lattice_shift);
-        v("times_before", times_before); v("times_after", times_after); v("dev_exp_early", dev_exp_early);
-        v("dev_pow_early", dev_pow_early); v("dev_exp_late", dev_exp_late); v("dev_pow_late", dev_pow_late);
-        v("mean_rate_early", mean_rate_early); v("momentum_residual", momentum_residual);
-        v("friction_share", friction_share); v("wall_load_peak", wall_load_peak); v("wall_seconds", wall_seconds);
-        v("collisions", collisions); v("elastic_share", elastic_share); v("per_time", per_time); v("figure", figure);
-    }
+    GRANREPRO_FIELDS(vbar0, vbar_relax_late, fluid_layers, lattice_broken_below, t_hot_wall, t_arch, y_arch, y0_arch,
+                     arch_size, arch_pL, arch_pR, t_precursor, react_lag, arch_left_4ms, arch_above_later, wave_steps,
+                     wave_steps_up, wave_stronger, arch_below_later, plug_wall_load, arch_brake, opening_below,
+                     wall_slowdown_arch, wall_slowdown_before, t_crack, y_crack, y0_crack, crack_opening,
+                     crack_below_arch, crack_at_initiator, opening_max_before, opening_max_after, opening_max_all,
+                     t_local_crack, local_opening_after, A, A_err, A_chi2, B, B_err, B_chi2, B_rel, times_rel,
+                     wall_left, wall_right, lattice_shift, times_before, times_after, dev_exp_early, dev_pow_early,
+                     dev_exp_late, dev_pow_late, mean_rate_early, momentum_residual, friction_share, wall_load_peak,
+                     wall_seconds, collisions, elastic_share, per_time, figure)
 };
 
 struct WallHit { // a side-wall collision

@@ -26,6 +26,7 @@
 // It is the ED engine's default operator (engines/ed/ed_collision_operator.hpp lists what the
 // engine asks of one): validate(), elastic_version() (TC, Eq. (7)) and against() (a wall) below.
 #pragma once
+#include "data/fields.hpp"
 #include "core/input_error.hpp"
 #include "core/vec2.hpp"
 #include <cmath>
@@ -39,10 +40,7 @@ struct RoughDiskCollision {
     double q = 0.4;      // I = q m a^2 [-]; 2/5 reproduces the paper's 2/7, 1/2 = solid disks
 
     // The one list of parameters, walked by the state files (io/h5_fields.hpp).
-    template <class V>
-    void fields(V&& v) {
-        v("r", r), v("mu", mu), v("beta0", beta0), v("q", q);
-    }
+    GRANREPRO_FIELDS(r, mu, beta0, q)
 
     struct Result {
         Vec2 dP;              // momentum change of body 1 [kg m/s]; body 2 receives -dP

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "data/fields.hpp"
 #include "engines/soft/few_body_engine.hpp"
 #include "data/parameter_set.hpp"
 #include "models/coulomb_shear.hpp"
@@ -43,10 +44,7 @@ struct ImpactShotSpec {
     double mu = 0;
     FrictionNormal friction_normal = FrictionNormal::Magnitude; // reading of Eq. (2)
     double steps_per_contact = 0;              // dt = t_col / steps_per_contact, Eq. (5)
-    template <class V> void fields(V&& v) {
-        v("d_free", d_free); v("m_free", m_free); v("d_wall", d_wall); v("k_N", k_N); v("gamma_N", gamma_N);
-        v("mu", mu); v("friction_normal", friction_normal); v("steps_per_contact", steps_per_contact);
-    }
+    GRANREPRO_FIELDS(d_free, m_free, d_wall, k_N, gamma_N, mu, friction_normal, steps_per_contact)
     // Centre distance at which the free grain touches a wall grain [m].
     double reach() const { return 0.5 * (d_free + d_wall); }
     CoulombShear shear() const { return {mu, friction_normal}; }

@@ -1,5 +1,6 @@
 // Parameters of a DSMC run (Luding 1998, Sec. 2.4): everything except the per-particle state.
 #pragma once
+#include "data/fields.hpp"
 #include <cstdint>
 
 namespace granrepro {
@@ -87,15 +88,9 @@ struct DsmcConfig {
     std::uint64_t stream = 0; // stream index (independent sweep points)
 
     // The one list of fields, walked by the state files (io/h5_fields.hpp).
-    template <class V>
-    void fields(V&& v) {
-        v("lx", lx), v("ly", ly), v("r", r), v("q", q), v("t_c", t_c), v("step_factor", step_factor);
-        v("resample_interval", resample_interval), v("min_cell_diameters", min_cell_diameters);
-        v("partner", partner), v("no_repeat_partner", no_repeat_partner), v("mft_fraction", mft_fraction);
-        v("free_volume", free_volume), v("rcp_fraction", rcp_fraction);
-        v("free_volume_floor", free_volume_floor), v("free_volume_block", free_volume_block);
-        v("displacement", displacement), v("seed", seed), v("stream", stream);
-    }
+    GRANREPRO_FIELDS(lx, ly, r, q, t_c, step_factor, resample_interval, min_cell_diameters, partner,
+                     no_repeat_partner, mft_fraction, free_volume, rcp_fraction, free_volume_floor, free_volume_block,
+                     displacement, seed, stream)
 };
 
 } // namespace granrepro

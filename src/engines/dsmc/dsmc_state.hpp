@@ -3,6 +3,7 @@
 // positions, velocities, the step clock (time, tau, v_max, step counter) and the raw generator
 // state are all the engine carries from one step to the next.
 #pragma once
+#include "data/fields.hpp"
 #include "core/vec2.hpp"
 #include "engines/dsmc/dsmc_config.hpp"
 #include <cstdint>
@@ -39,16 +40,9 @@ struct DsmcState {
 
     // The one list of fields, walked by the state files (io/h5_fields.hpp): a field left out
     // here is neither saved nor restored.
-    template <class V>
-    void fields(V&& v) {
-        v("config", config), v("time", time), v("tau", tau), v("v_max", v_max), v("steps", steps);
-        v("position", position), v("velocity", velocity), v("radius", radius), v("mass", mass);
-        v("last_collision_time", last_collision_time), v("collision_count", collision_count);
-        v("last_partner", last_partner), v("collisions", collisions);
-        v("elastic_collisions", elastic_collisions), v("candidates", candidates);
-        v("vmax_raises", vmax_raises), v("exposure", exposure), v("resample_time", resample_time);
-        v("resample_collisions", resample_collisions), v("rng_state", rng_state);
-    }
+    GRANREPRO_FIELDS(config, time, tau, v_max, steps, position, velocity, radius, mass, last_collision_time,
+                     collision_count, last_partner, collisions, elastic_collisions, candidates, vmax_raises, exposure,
+                     resample_time, resample_collisions, rng_state)
 };
 
 } // namespace granrepro

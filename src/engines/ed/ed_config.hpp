@@ -1,6 +1,7 @@
 // Parameters of an ED run (everything except the per-particle state), for the collision
 // operator Collision (EdConfig: the default, RoughDiskCollision).
 #pragma once
+#include "data/fields.hpp"
 #include "core/vec2.hpp"
 #include "engines/ed/ed_collision_operator.hpp"
 #include "engines/ed/ed_wall.hpp"
@@ -39,13 +40,8 @@ struct BasicEdConfig {
     double collapse_window = 0.0;
 
     // The one list of fields, walked by the state files (io/h5_fields.hpp).
-    template <class V>
-    void fields(V&& v) {
-        v("lx", lx), v("ly", ly), v("periodic_x", periodic_x), v("periodic_y", periodic_y);
-        v("gravity", gravity), v("law", law), v("walls", walls), v("t_c", t_c), v("tc_both", tc_both);
-        v("tc_keep_friction", tc_keep_friction), v("cell_size_factor", cell_size_factor);
-        v("collapse_limit", collapse_limit), v("collapse_window", collapse_window);
-    }
+    GRANREPRO_FIELDS(lx, ly, periodic_x, periodic_y, gravity, law, walls, t_c, tc_both, tc_keep_friction,
+                     cell_size_factor, collapse_limit, collapse_window)
 };
 
 using EdConfig = BasicEdConfig<RoughDiskCollision>;

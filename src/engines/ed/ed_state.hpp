@@ -3,6 +3,7 @@
 // order is a total order on (time, id)). The engine has no random numbers, so no RNG state.
 // EdState: the default operator, RoughDiskCollision.
 #pragma once
+#include "data/fields.hpp"
 #include "engines/ed/ed_config.hpp"
 #include <cstdint>
 #include <vector>
@@ -45,20 +46,10 @@ struct BasicEdState {
 
     // The one list of fields, walked by the state files (io/h5_fields.hpp): a field left out
     // here is neither saved nor restored.
-    template <class V>
-    void fields(V&& v) {
-        v("config", config), v("time", time), v("x", x), v("y", y), v("vx", vx), v("vy", vy);
-        v("spin", spin), v("local_time", local_time), v("radius", radius), v("mass", mass);
-        v("last_collision_time", last_collision_time), v("burst_start", burst_start);
-        v("predicted_time", predicted_time), v("collision_time", collision_time);
-        v("collision_count", collision_count), v("partner_count", partner_count);
-        v("last_partner", last_partner), v("partner", partner), v("event_kind", event_kind);
-        v("event_arg", event_arg), v("burst_count", burst_count), v("cell", cell);
-        v("cell_next", cell_next), v("cell_prev", cell_prev), v("cell_head", cell_head);
-        v("pair_collisions", pair_collisions), v("wall_collisions", wall_collisions);
-        v("elastic_collisions", elastic_collisions), v("events", events), v("crossings", crossings);
-        v("stale_events", stale_events), v("max_overlap", max_overlap);
-    }
+    GRANREPRO_FIELDS(config, time, x, y, vx, vy, spin, local_time, radius, mass, last_collision_time, burst_start,
+                     predicted_time, collision_time, collision_count, partner_count, last_partner, partner,
+                     event_kind, event_arg, burst_count, cell, cell_next, cell_prev, cell_head, pair_collisions,
+                     wall_collisions, elastic_collisions, events, crossings, stale_events, max_overlap)
 };
 
 using EdState = BasicEdState<RoughDiskCollision>;

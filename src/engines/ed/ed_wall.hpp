@@ -14,11 +14,7 @@ struct EdWall {
     bool enabled = true;   // a disabled wall is ignored (e.g. the pipe's bottom removed at t = 0)
 
     // The one list of fields, walked by the state files (io/h5_fields.hpp).
-    template <class V>
-    void fields(V&& v) {
-        v("axis", axis), v("position", position), v("side", side), v("r", r), v("mu", mu);
-        v("beta0", beta0), v("enabled", enabled);
-    }
+    GRANREPRO_FIELDS(axis, position, side, r, mu, beta0, enabled)
 };
 
 } // namespace granrepro
