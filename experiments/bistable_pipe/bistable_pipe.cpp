@@ -166,7 +166,6 @@ struct BistablePipe {
     static Result report(const Spec& b, const std::vector<Task>& tasks, const Swept<RunResult>& swept, const RunContext& ctx) {
         const std::vector<RunResult>& results = swept.outcomes;
         Result r;
-        r.scalar("resumed_points", double(swept.resumed), "1", "sweep points loaded from a checkpoint");
         // The paper's t_col at k_N = 200000 N/m refers to e_N = 0.70 (gamma scaled with sqrt(k_N)).
         r.scalar("t_col_k200000_e0.70", pipe_law(200000.0, 0.70, b.m_mean).collision_time(b.m_mean), "s",
                  "free-wall contact duration at k_N = 2e5 N/m, e_N = 0.70 (Eq. 4)");

@@ -94,7 +94,6 @@ struct ClusterGrowth {
         for (InstantRecord& rec : runs.front().st.instants) instants.push_back(make_instant(std::move(rec), s));
 
         Result res;
-        res.scalar("resumed_points", double(swept.resumed), "1", "sweep points loaded from a checkpoint");
         const KineticTheory kin = kinetic_theory(s);
         report_run(res, s, kin, main_run, other_run);
         fig10(res, s, kin.t0, main_run.st, other_run ? &other_run->st : nullptr);

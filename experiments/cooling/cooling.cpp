@@ -101,7 +101,6 @@ struct Cooling {
         for (std::size_t i = 0; i < swept.outcomes.size(); ++i)
             (long(i) < n_ed(c) ? eds : dss).push_back(with_pbd(swept.outcomes[i], c));
         Result res = c.run_ed ? report_all(c, ctx.seed, setups, eds, dss) : report_dsmc_only(c, dss);
-        res.scalar("resumed_points", double(swept.resumed), "1", "sweep points loaded from a checkpoint");
         return res;
     }
 };

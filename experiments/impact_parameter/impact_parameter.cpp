@@ -93,7 +93,6 @@ struct ImpactParameter {
     static Result report(const Spec& s, const Swept<PointResult>& swept, const RunContext&) {
         const std::vector<PointResult>& pts = swept.outcomes;
         Result res;
-        res.scalar("resumed_points", double(swept.resumed), "1", "sweep points loaded from a checkpoint");
         const double l = box_side(static_cast<std::size_t>(s.N), s.d, s.rho);
         res.scalar("box_side", l, "m", "side of the periodic square box at rho (N pi d^2 / (4 L^2) = rho)");
         res.scalar("box_side_over_d", l / s.d, "1", "box side in diameters");

@@ -78,7 +78,6 @@ struct ParameterStudy {
         for (std::size_t i = 0; i < swept.outcomes.size(); ++i)
             sw.traces[i / std::size_t(s.seeds)][i % std::size_t(s.seeds)] = swept.outcomes[i];
         sw.wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - sw.start).count();
-        sw.resumed = swept.resumed;
         Result res;
         report_totals(res, s, sw);
         const std::vector<double> cn_grid = log_space(0.1, s.cn_end, int(std::round(40 * std::log10(s.cn_end / 0.1))) + 1);

@@ -93,7 +93,6 @@ void report_totals(Result& res, const ParameterStudySpec& s, const Sweep& sw) {
     const double n = double(s.n_side * s.n_side), L = s.box_over_d;
     res.scalar("N", n, "1", "number of disks");
     res.scalar("rho", M_PI / 4 * n / (L * L), "1", "area fraction (pi/4) N / L^2");
-    res.scalar("resumed_points", double(sw.resumed), "1", "sweep points loaded from a checkpoint");
     res.scalar("sweep_wall_seconds", sw.wall, "s", "wall time of the sweep (all points, --threads as given)");
     double events = 0, cpu = 0, failed = 0;
     for (const auto& pt : sw.traces)

@@ -85,7 +85,6 @@ struct PipeArching {
     static Result report(const Spec&, const Pipe& s, const Swept<SeedRun>& swept, const RunContext&) {
         const std::vector<SeedRun>& runs = swept.outcomes;
         Result res;
-        res.scalar("resumed_points", double(swept.resumed), "1", "seeds loaded from a checkpoint");
         res.scalar("n_seeds", double(s.n_seeds), "1", "independent runs");
         res.scalar("layers", std::ceil(double(s.n_particles) / (std::floor((s.L - s.d) / s.a + 1e-9) + 0.5)), "1",
                    "rows of the initial lattice");

@@ -43,11 +43,11 @@ namespace granrepro {
 using PointContext = RunContext;
 
 // Every point's outcome, indexed by point, as read back from its JSON (bit-identical however the
-// points were spread or resumed), and how many came from an earlier invocation's point files.
+// points were spread or resumed). How many were resumed the harness records itself (summary.json
+// `resumed_points`), so no report writes it.
 template <class Outcome>
 struct Swept {
     std::vector<Outcome> outcomes;
-    long resumed = 0;
 };
 
 namespace protocol_detail {
@@ -111,7 +111,6 @@ Result run(const RunContext& ctx) {
         ctx, E::name, points<E>(spec, shared),
         [&](long i) { return to_json_fields(compute<E>(spec, shared, i, ctx)); }, files<E>(), schema);
     Swept<Outcome> out;
-    out.resumed = swept.resumed;
     out.outcomes.reserve(swept.points.size());
     // `verify` aggregates the stored outcomes of an earlier build, which may lack fields added since.
     const bool stored = ctx.sweep.mode == SweepPlan::Mode::Verify;

@@ -51,7 +51,7 @@ void expect_identical(const fs::path& a, const fs::path& b) {
     expect_same_scalars(a, b, "resumed_points");
 }
 
-double resumed(const fs::path& dir) { return summary(dir).at("scalars").at("resumed_points").get<double>(); }
+double resumed(const fs::path& dir) { return summary(dir).at("resumed_points").get<double>(); }
 
 std::string mpirun(int ranks) {
     // CI runs as root on 2 cores: OpenMPI needs both run-as-root variables and --oversubscribe.
