@@ -31,8 +31,11 @@ TEST(ExperimentFiles, ExperimentsOfOnePaperAgreeOnIt) {
         EXPECT_EQ(info.paper_citation, it->second.paper_citation) << e.name << " and " << it->second.name;
     }
     for (const auto& [key, info] : first_of)
-        for (const auto& [other_key, other] : first_of)
-            if (key != other_key) EXPECT_NE(info.paper_short, other.paper_short) << key << " and " << other_key;
+        for (const auto& [other_key, other] : first_of) {
+            if (key != other_key) {
+                EXPECT_NE(info.paper_short, other.paper_short) << key << " and " << other_key;
+            }
+        }
 }
 
 // Every experiment has a smoke scale its own parameters accept (the input fuzz test runs on it).
