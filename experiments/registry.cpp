@@ -1,28 +1,37 @@
-// The explicit table of experiments. To add one: write experiments/<name>.toml (parameters and
-// [outputs]), experiments/<name>/ (a protocol, harness/protocol.hpp, and a function returning
-// protocol_experiment<...>()), expected/<name>.toml (claims), plots/<figure-id>.gp, and add one
-// line below. ARCHITECTURE.md's worked example lists every step, CI's included.
+// The explicit table of experiments. To add one: write experiments/<name>.toml (parameters,
+// [outputs], the paper and the [smoke] settings), experiments/<name>/ (a protocol,
+// harness/protocol.hpp, and a function returning protocol_experiment<...>()),
+// expected/<name>.toml (claims), plots/<figure-id>.gp, and add one X(...) line below.
+// ARCHITECTURE.md's worked example lists every step, CI's included.
+//
+// One list makes both the declarations and the table (registry order is the order of `list`,
+// `all`, `check --all` and the report). A plain table, not objects that register themselves at
+// static initialization: a static library's object file that nothing references would be dropped
+// by the linker, and its experiment with it.
 #include "harness/experiment.hpp"
+
+#define GRANREPRO_EXPERIMENTS(X) \
+    X(brake_failure)             \
+    X(emergency_brake)           \
+    X(bistable_pipe)             \
+    X(impact_parameter)          \
+    X(cooling)                   \
+    X(pipe_arching)              \
+    X(parameter_study)           \
+    X(cluster_growth)
 
 namespace granrepro {
 
 namespace experiments {
-Experiment brake_failure();
-Experiment emergency_brake();
-Experiment bistable_pipe();
-Experiment impact_parameter();
-Experiment cooling();
-Experiment pipe_arching();
-Experiment parameter_study();
-Experiment cluster_growth();
+#define GRANREPRO_DECLARE(name) Experiment name();
+GRANREPRO_EXPERIMENTS(GRANREPRO_DECLARE)
+#undef GRANREPRO_DECLARE
 } // namespace experiments
 
 const std::vector<Experiment>& experiment_registry() {
-    static const std::vector<Experiment> table = {
-        experiments::brake_failure(),    experiments::emergency_brake(), experiments::bistable_pipe(),
-        experiments::impact_parameter(), experiments::cooling(),         experiments::pipe_arching(),
-        experiments::parameter_study(),  experiments::cluster_growth(),
-    };
+#define GRANREPRO_ENTRY(name) experiments::name(),
+    static const std::vector<Experiment> table = {GRANREPRO_EXPERIMENTS(GRANREPRO_ENTRY)};
+#undef GRANREPRO_ENTRY
     return table;
 }
 

@@ -47,7 +47,8 @@ if [[ "$version" != *"$commit"* ]]; then
   echo "paper_figures.sh: $bin is '$version', not built from HEAD $commit: rebuild (cmake --build build)" >&2
   exit 2
 fi
-experiments=$("$bin" list | awk '/^[a-z]/ {print $1}')
+# The registered experiments, in registry order (`granrepro list --json`, docs/schema.md).
+experiments=$("$bin" list --json | python3 -c 'import json, sys; print(" ".join(x["name"] for x in json.load(sys.stdin)["experiments"]))')
 # CHECK.md of the results in $1 (made at code version $2): every experiment's check table with its
 # known deviations explained, and the totals, as CI runs it.
 write_check() {

@@ -14,6 +14,7 @@
 #include <sstream>
 
 #include "cli/bench.hpp"
+#include "cli/listing.hpp"
 #include "cli/report.hpp"
 #include "cli/verify_command.hpp"
 #include "core/input_error.hpp"
@@ -168,7 +169,11 @@ std::string parameter_help(const std::string& name) {
     return os.str();
 }
 
-int list_experiments() {
+int list_experiments(bool json) {
+    if (json) {
+        std::printf("%s\n", experiments_listing().dump(2).c_str());
+        return 0;
+    }
     for (const auto& e : experiment_registry()) {
         const ExperimentInfo info = experiment_info(e.name);
         std::printf("%-18s %s\n%-18s   paper: %s\n", e.name.c_str(), info.description.c_str(), "", info.paper.c_str());
@@ -226,6 +231,22 @@ int plot_all_experiments(const std::filesystem::path& out, const std::vector<std
         rc = 1;
     }
     return rc;
+}
+
+// "Luding (1998) and Schäfer & Wolf (1995)": the papers of the experiment files, in registry order.
+std::string papers_text() {
+    std::vector<std::string> papers;
+    try {
+        for (const auto& e : experiment_registry())
+            if (const std::string p = experiment_info(e.name).paper_short; std::find(papers.begin(), papers.end(), p) == papers.end())
+                papers.push_back(p);
+    } catch (const std::exception&) {
+        return "the papers' figures"; // the experiment files are refused with their own message when used
+    }
+    std::string text;
+    for (std::size_t i = 0; i < papers.size(); ++i)
+        text += (i == 0 ? "" : i + 1 == papers.size() ? " and " : ", ") + papers[i];
+    return text.empty() ? "the papers' figures" : text;
 }
 
 // `--version`: the code version, what it was built with, and where its data files are.
@@ -470,7 +491,7 @@ int parse_and_run(CLI::App& app, int argc, char** argv, const int& rc) {
 // Everything but MPI's set-up: the command line and the subcommands.
 static int run_main(int argc, char** argv) {
     command_line = argv_text(std::vector<std::string>(argv, argv + argc));
-    CLI::App app{"granrepro: reproduce Luding (1998) and Schäfer & Wolf (1995), figure by figure"};
+    CLI::App app{"granrepro: reproduce " + papers_text() + ", figure by figure"};
     app.footer(std::string(kDataFiles) + kExitCodes);
     app.require_subcommand(1);
     app.set_version_flag("--version", version_text());
@@ -478,7 +499,13 @@ static int run_main(int argc, char** argv) {
 
     int rc = 0;
     CommonFlags common;
-    app.add_subcommand("list", "list experiments and figures")->callback([&] { rc = list_experiments(); });
+    bool list_json = false;
+    CLI::App* list = app.add_subcommand("list", "list experiments and figures");
+    list->add_flag("--json", list_json,
+                   "print one JSON document instead: {\"experiments\": [{name, description, paper, paper_key, paper_short, "
+                   "paper_citation, figures: [{id, caption}], smoke: [\"name=value\", ...]}]} in registry order, read from "
+                   "experiments/<name>.toml");
+    list->callback([&] { rc = list_experiments(list_json); });
     add_experiment_commands(app, common, rc);
     add_figure_command(app, common, rc);
     add_gather_command(app, common, rc);

@@ -11,6 +11,7 @@
 #include <unistd.h>
 #include <vector>
 
+#include "cli/listing.hpp"
 #include "core/input_error.hpp"
 #include "core/spawn.hpp"
 #include "data/interval.hpp"
@@ -41,11 +42,9 @@ nlohmann::json report_input(const fs::path& out) {
         // OUT/<experiment> is part of the untrusted folder: nothing is read through a link.
         std::error_code ec;
         if (fs::is_symlink(fs::symlink_status(out / e.name, ec))) existing_entry(out / e.name, Entry::Folder, "results folder");
-        const ExperimentInfo info = experiment_info(e.name);
-        nlohmann::json figures = nlohmann::json::array();
-        for (const auto& f : info.figures) figures.push_back({{"id", f.id}, {"caption", f.caption}});
-        nlohmann::json x = {{"name", e.name}, {"paper", info.paper}, {"description", info.description},
-                            {"figures", figures}, {"has_results", has_results(e.name, out)}};
+        // What `list --json` prints of it (the paper, its figures), then what the results say.
+        nlohmann::json x = experiment_listing(experiment_info(e.name));
+        x["has_results"] = has_results(e.name, out);
         if (x["has_results"]) {
             x.update(judged_claims(e.name, out));
             ++with_results;

@@ -62,8 +62,16 @@ struct FigureInfo {
 };
 
 struct ExperimentInfo {
-    std::string name, paper, description;
+    std::string name, description;
+    // The paper: `paper` the reference ("Luding, TASK Quarterly 2, 417 (1998)"), `paper_key` the
+    // prefix of its figure ids ("luding98"), `paper_short` its name in figure labels ("Luding
+    // (1998)"), `paper_citation` authors, title and reference. Experiments of one paper give the
+    // same four (tests/unit/experiment_files_test.cpp); the report groups its papers by them.
+    std::string paper, paper_key, paper_short, paper_citation;
     std::vector<FigureInfo> figures;
+    // [smoke] set: --set overrides that make a quick run take about a second, for tests that run
+    // every experiment many times (tests/integration/input_fuzz_test.cpp); empty if none.
+    std::vector<std::string> smoke;
     DeclaredOutputs outputs; // [outputs]: every scalar and table a run writes (declared_outputs.hpp)
     std::filesystem::path file;
     static ExperimentInfo load(const std::filesystem::path& file); // throws InputError

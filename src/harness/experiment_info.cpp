@@ -38,10 +38,32 @@ ExperimentInfo ExperimentInfo::load(const std::filesystem::path& file) {
         info.file = file;
         info.name = toml::find<std::string>(root, "name");
         info.paper = toml::find<std::string>(root, "paper");
+        info.paper_key = toml::find<std::string>(root, "paper_key");
+        info.paper_short = toml::find<std::string>(root, "paper_short");
+        info.paper_citation = toml::find<std::string>(root, "paper_citation");
         info.description = toml::find<std::string>(root, "description");
         if (root.contains("figure"))
-            for (const auto& f : toml::find<toml::array>(root, "figure"))
+            for (const auto& f : toml::find<toml::array>(root, "figure")) {
                 info.figures.push_back({toml::find<std::string>(f, "id"), toml::find<std::string>(f, "caption")});
+                // The figure id names its paper: `granrepro figure` and the report rely on it.
+                if (!info.figures.back().id.starts_with(info.paper_key + "-"))
+                    throw InputError(file.string() + " (line " + std::to_string(f.location().line()) + "): figure id '" +
+                                     info.figures.back().id + "' does not start with paper_key '" + info.paper_key + "-'");
+            }
+        if (root.contains("smoke")) {
+            const toml::value& s = root.at("smoke");
+            for (const auto& [key, v] : s.as_table())
+                if (key != "set")
+                    throw InputError(file.string() + " (line " + std::to_string(v.location().line()) +
+                                     "): [smoke] has unknown key '" + key + "'; allowed: set");
+            for (const auto& v : toml::find<toml::array>(s, "set")) {
+                const std::string assignment = toml::get<std::string>(v);
+                if (assignment.find('=') == std::string::npos || assignment.front() == '=')
+                    throw InputError(file.string() + " (line " + std::to_string(v.location().line()) + "): [smoke] set '" +
+                                     assignment + "' is not name=value");
+                info.smoke.push_back(assignment);
+            }
+        }
         if (root.contains("outputs")) {
             const toml::value& o = root.at("outputs");
             for (const auto& [key, v] : o.as_table())

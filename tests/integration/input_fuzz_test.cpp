@@ -8,11 +8,12 @@
 // that such a refusal is exit 2 with nothing written.
 //
 // Issue 25: InputFuzzRun runs the engines. Per experiment and numeric parameter, the probes
-// {range edges, 0, +-1e308, +-1e-300, nan, inf} go over a quick run made short by a fixed set of
-// overrides (kShort: small sizes, budgets and windows). A probe validation refuses must name the
-// parameter (checked in-process, milliseconds); of the accepted ones the smallest and the largest
-// run the binary. For a parameter kShort sets (a size or budget: its upper edge is a long run by
-// design, bounded by limit_work) only the smallest, and none above its kShort value. Within
+// {range edges, 0, +-1e308, +-1e-300, nan, inf} go over a quick run made short by the experiment
+// file's smoke scale ([smoke] set in experiments/<name>.toml: small sizes, budgets and windows). A
+// probe validation refuses must name the parameter (checked in-process, milliseconds); of the
+// accepted ones the smallest and the largest run the binary. For a parameter the smoke scale sets
+// (a size or budget: its upper edge is a long run by design, bounded by limit_work) only the
+// smallest, and none above its smoke value. Within
 // kRunSeconds a run must exit 0, 1 (a claim may fail at these sizes) or 4 (a figure not drawn:
 // the stand-in gnuplot, /bin/true, keeps figures out of the cost and draws none) with
 // summary.json written and no internal error, or exit 2 with one line naming the parameter.
@@ -25,7 +26,6 @@
 #include <cstdlib>
 #include <fcntl.h>
 #include <filesystem>
-#include <map>
 #include <spawn.h>
 #include <string>
 #include <thread>
@@ -114,24 +114,7 @@ TEST_P(InputFuzz, EveryProbeIsRefusedInOneNamingLineOrAcceptedQuickly) {
     EXPECT_FALSE(fs::exists(out)) << "output written for bad input";
 }
 
-// Overrides that make each experiment's quick run take about a second.
-const std::map<std::string, std::vector<std::string>> kShort = {
-    {"brake-failure", {"n_vy=5"}},
-    {"emergency-brake", {"n_vy=5", "n_positions=1", "vx_list=0.3", "kN_scan=2000"}},
-    {"bistable-pipe", {"kN_list=2000", "eN_list=0.8", "budget_tcol=1000", "window=0.03", "t_average=0.01", "length_check=0",
-                       "sample_dt=0.01", "eq9_window=0.01", "budget_min=0",
-                       "hold_distance=0"}},
-    {"impact-parameter", {"seeds=1", "N=40", "t_end=0.1", "window_edges=0,0.05,0.1", "elastic_densities=0.25",
-                          "elastic_collisions_per_particle=10", "elastic3d_n_side=3", "elastic3d_collisions=100",
-                          "stress_snapshots=1", "eddy_shuffles=1", "stress_t_begin=0.05"}},
-    {"cooling", {"seeds=1", "n_side=8", "t_end=0.1", "snapshot_times=0,0.1", "bd_windows=0,0.1", "a2_samples=2"}},
-    {"pipe-arching", {"n_seeds=1", "n_particles=40", "width=5", "t_end=0.02", "t_relax=0.01", "snapshot_times=0.01",
-                      "dist_times_before=0.01", "dist_times_after=0.02", "dist_dt=0.005", "crack_min_particles=5",
-                      "crack_min_above=5"}},
-    {"parameter-study", {"seeds=1", "n_side=4", "cn_end=10", "fig8_r=0.8", "fig9_t_c=1e-6", "box_over_d=10"}},
-    {"cluster-growth", {"n_side=8", "cn_end=10", "snapshot_times=0.01", "tc_compare_until=0", "box_over_d=15"}},
-};
-constexpr double kRunSeconds = 20; // a short run takes ~1 s; the rest is room for a loaded machine
+constexpr double kRunSeconds = 20; // a smoke-scale run takes ~1 s; the rest is room for a loaded machine
 
 // The binary with `args`, stdout and stderr to files, killed after `limit` seconds (code -2);
 // an argument vector, no shell.
@@ -177,7 +160,11 @@ class InputFuzzRun : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(InputFuzzRun, EveryProbeRunsToAResultOrIsRefusedNamingItsParameter) {
     const std::string name = GetParam();
-    const std::vector<std::string>& shorts = kShort.at(name);
+    // The experiment file's smoke scale ([smoke] set): without one, every probe would be a whole
+    // quick run, so an experiment file that lacks it fails here.
+    const std::vector<std::string> shorts = experiment_info(name).smoke;
+    ASSERT_FALSE(shorts.empty()) << "experiments/" << name << ".toml has no [smoke] set (the overrides that make a quick run "
+                                 << "take about a second; see the other experiment files)";
     const ParameterSet defaults = ParameterSet::load(experiment_info(name).file, Scale::Quick);
     const cli_support::TempPath dir("fuzz-run-" + name);
     fs::create_directories(dir);
@@ -186,7 +173,7 @@ TEST_P(InputFuzzRun, EveryProbeRunsToAResultOrIsRefusedNamingItsParameter) {
     for (const Parameter& p : defaults.all()) {
         if (p.kind == Parameter::Kind::Text || p.kind == Parameter::Kind::Flag) continue;
         std::vector<std::string> sets;
-        double budget = INFINITY; // the kShort value of a size or budget parameter: no run above it
+        double budget = INFINITY; // the smoke value of a size or budget parameter: no run above it
         for (const std::string& a : shorts) {
             if (a.substr(0, a.find('=')) == p.name) budget = std::stod(a.substr(a.find('=') + 1));
             else sets.push_back(a);

@@ -11,6 +11,7 @@ import subprocess
 import pytest
 
 from granrepro.report import BadInput, make_report
+from granrepro.report.build import validate_judged
 
 
 def report(binary, out, to, *more):
@@ -142,6 +143,32 @@ def test_pages_only_for_the_experiments_present_each_naming_the_folder(binary, q
     index = page(tmp_path / "rep" / "index.html")
     assert "Results in <code>one</code>" in index and "No results in <code>one</code> for: " in index
     assert 'href="cooling.html' not in index and "cooling" in index
+
+
+def test_the_papers_come_from_the_experiment_files(binary, quick_out, tmp_path):
+    # `granrepro list --json` prints each experiment's paper as experiments/<name>.toml names it;
+    # the report shows that citation for the paper and labels the figures with its short name.
+    r = subprocess.run([binary, "list", "--json"], capture_output=True, text=True)
+    assert r.returncode == 0, r.stderr
+    listing = {x["name"]: x for x in json.loads(r.stdout)["experiments"]}
+    assert "brake-failure" in listing
+    bf = listing["brake-failure"]
+    assert all(f["id"].startswith(bf["paper_key"] + "-") for f in bf["figures"])
+    assert all("=" in s for x in listing.values() for s in x["smoke"]) and all(x["smoke"] for x in listing.values())
+    r = report(binary, quick_out, tmp_path / "report")
+    assert r.returncode == 0, r.stderr
+    assert html.escape(bf["paper_citation"], quote=False) in page(tmp_path / "report" / "index.html")
+    assert html.escape(f"{bf['paper_short']} Fig. 3", quote=False) in page(tmp_path / "report" / "brake-failure.html")
+    # the same from a claims file naming another paper: nothing about the papers is kept in Python
+    results = copy_run(quick_out, tmp_path)
+    judged = judged_of(results, "brake-failure")
+    judged["experiments"][0].update(paper_key="schaefer95", paper_short="Zed (2099)", paper_citation="Z. Zed, A title (2099)")
+    make_report(str(results), judged, str(tmp_path / "other"), warn=lambda m: None)
+    assert "Z. Zed, A title (2099)" in page(tmp_path / "other" / "index.html")
+    assert "Zed (2099) Fig. 3" in page(tmp_path / "other" / "brake-failure.html")
+    judged["experiments"][0]["paper_key"] = "../x"
+    with pytest.raises(BadInput, match=r"experiments\[0\]\.paper_key must be a paper key"):
+        validate_judged(judged, "claims.json")
 
 
 PAPER_FIGURES = os.path.join(os.path.dirname(__file__), "..", "..", "paper_figures")

@@ -8,6 +8,7 @@
 #include <thread>
 
 #include "cli_support.hpp"
+#include "harness/experiment.hpp"
 #include "io/h5_file.hpp"
 
 namespace fs = std::filesystem;
@@ -93,10 +94,9 @@ TEST(SweepMpi, AllThreeRanksEqualsSingleRun) {
     const Outcome mpi = shell(mpirun(3) + GRANREPRO_BINARY + " all --scale quick --quiet --threads 1 --out " +
                               b.string());
     EXPECT_LE(mpi.code, 1) << mpi.err;
-    for (const char* name : {"brake-failure", "emergency-brake", "bistable-pipe", "impact-parameter", "cooling",
-                             "pipe-arching", "parameter-study", "cluster-growth"}) {
-        SCOPED_TRACE(name);
-        expect_identical(a / name, b / name);
+    for (const auto& e : granrepro::experiment_registry()) {
+        SCOPED_TRACE(e.name);
+        expect_identical(a / e.name, b / e.name);
     }
 }
 

@@ -3,8 +3,11 @@ or copied) of the results in a folder, from the claims `granrepro report` judged
 
     python3 -m granrepro.report --results DIR --claims CLAIMS.json --to REPORTDIR
 
-CLAIMS.json ({"experiments": [{name, paper, description, figures: [{id, caption}], has_results,
-scale, notes, headline: [...], claims: [...]}]}, experiments in registry order, claims in
+CLAIMS.json ({"experiments": [{name, description, paper, paper_key, paper_short, paper_citation,
+figures: [{id, caption}], smoke, has_results, scale, notes, headline: [...], claims: [...]}]}: each
+experiment as `granrepro list --json` prints it, then what its results say; experiments in registry
+order (the papers are grouped by paper_key, shown by paper_citation, and label their figures with
+paper_short: experiments/<name>.toml is the one place that names them), claims in
 summary.json's format with each claim's role and each deviation's status, headline as
 headline_json in src/harness/claims.cpp) is written by `granrepro report`, which judges every claim
 as `granrepro check` does. The summary page opens with the headline `check --all` prints for the
@@ -484,7 +487,11 @@ def build_model(results: str, judged: dict, final_to: str, link_images: bool, wa
 
     texts = load_figure_texts()
     overrides = texts.get("claim_figure", {})
-    papers = [{"prefix": p["prefix"], "title": p["title"], "experiments": []} for p in texts["paper"]]
+    papers = {}  # paper_key -> the paper's row, in the order of its first experiment (the registry's)
+    for x in judged["experiments"]:
+        if x.get("paper_key") and x["paper_key"] not in papers:
+            papers[x["paper_key"]] = {"key": x["paper_key"], "title": x.get("paper_citation") or x.get("paper", ""),
+                                      "experiments": []}
     shown = shown_name(results)
     copies = []  # (source file, extension, name in the report)
     experiments = []
@@ -507,8 +514,7 @@ def build_model(results: str, judged: dict, final_to: str, link_images: bool, wa
         for f in x.get("figures", []):
             fid = f["id"]
             t = texts.get("figure", {}).get(fid, {})
-            prefix = fid.split("-")[0]
-            who = {"luding98": "Luding (1998)", "schaefer95": "Schäfer & Wolf (1995)"}.get(prefix, prefix)
+            who = x.get("paper_short") or fid.split("-")[0]
             fig = Figure(fid, f"{who} Fig. {figure_number(fid)}", f.get("caption", ""), t.get("caption", ""),
                          t.get("source", ""))
             if not e.has_results:
@@ -557,12 +563,10 @@ def build_model(results: str, judged: dict, final_to: str, link_images: bool, wa
         e.totals = _totals(e.claims)
         e.headline = sum_headlines(x.get("headline")) if e.has_results else None
         experiments.append(e)
-        prefixes = {fid.split("-")[0] for fid in fig_ids}
-        for p in papers:
-            if p["prefix"] in prefixes:
-                p["experiments"].append(e)
+        if x.get("paper_key"):
+            papers[x["paper_key"]]["experiments"].append(e)
     # in the order of the experiments (the registry's), as `check --all` prints its papers
-    papers.sort(key=lambda p: min((experiments.index(e) for e in p["experiments"]), default=len(experiments)))
+    papers = list(papers.values())
     for p, x in ((p, x) for p in papers for x in judged["experiments"] if x["name"] in {e.name for e in p["experiments"]}):
         if "name" not in p and x.get("has_results") and x.get("headline"):
             p["name"] = x["headline"][0]["paper"]  # "Luding 1998", as the headline names it
@@ -778,10 +782,12 @@ def validate_judged(judged, file: str) -> None:
         if not isinstance(name, str) or not _NAME.fullmatch(name) or name in seen:
             raise BadInput(f"{at}.name must be an experiment name (a-z, 0-9, '-'), each once")
         seen.add(name)
-        for k in ("paper", "description", "scale"):
+        for k in ("paper", "paper_short", "paper_citation", "description", "scale"):
             _field(f"{at}.{k}", x.get(k), str, "text")
+        if x.get("paper_key") is not None and not (isinstance(x["paper_key"], str) and _NAME.fullmatch(x["paper_key"])):
+            raise BadInput(f"{at}.paper_key must be a paper key (a-z, 0-9, '-')")
         _field(f"{at}.has_results", x.get("has_results"), bool, "true or false")
-        for key in ("figures", "notes", "claims"):
+        for key in ("figures", "notes", "claims", "smoke"):
             _field(f"{at}.{key}", x.get(key), list, "an array")
         for j, f in enumerate(x.get("figures") or []):
             _field(f"{at}.figures[{j}]", f, dict, "an object", optional=False)
