@@ -3,6 +3,7 @@
 // ExperimentInfo and printed by `granrepro list --json` (cli/listing.hpp).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -11,6 +12,7 @@
 
 #include "cli/listing.hpp"
 #include "core/input_error.hpp"
+#include "data/toml_file.hpp"
 #include "harness/experiment.hpp"
 #include "harness/runner.hpp"
 
@@ -90,4 +92,26 @@ TEST(ExperimentFiles, AFigureOfAnotherPaperOrABadSmokeEntryIsRefused) {
     why = refusal("name = \"x\"\npaper = \"p\"\ndescription = \"d\"\n");
     EXPECT_NE(why.find("paper_key"), std::string::npos) << why;
     fs::remove(file);
+}
+
+// ARCHITECTURE.md's worked example, "Adding a figure": the files a registered experiment must
+// have besides its C++ (which the registry line proves). An experiment that misses one fails here,
+// named with the file, instead of failing later in a figure target, a check or the report.
+TEST(ExperimentFiles, EveryExperimentHasEveryFileOfTheWorkedExample) {
+    const fs::path root = project_root();
+    const toml::value captions = parse_toml_file(root / "python/granrepro/report/figures.toml", "figure captions");
+    for (const auto& e : experiment_registry()) {
+        const ExperimentInfo info = experiment_info(e.name);
+        std::string folder = e.name;
+        std::replace(folder.begin(), folder.end(), '-', '_');
+        EXPECT_TRUE(fs::is_regular_file(root / "experiments" / (e.name + ".toml"))) << e.name;
+        EXPECT_TRUE(fs::is_directory(root / "experiments" / folder)) << "experiments/" << folder << "/";
+        EXPECT_TRUE(fs::is_regular_file(root / "expected" / (e.name + ".toml"))) << "expected/" << e.name << ".toml";
+        EXPECT_FALSE(info.figures.empty()) << e.name << ": no [[figure]]";
+        for (const auto& f : info.figures) {
+            EXPECT_TRUE(fs::is_regular_file(root / "plots" / (f.id + ".gp"))) << "plots/" << f.id << ".gp";
+            EXPECT_TRUE(captions.contains("figure") && captions.at("figure").contains(f.id))
+                << "python/granrepro/report/figures.toml: no [figure.\"" << f.id << "\"] caption";
+        }
+    }
 }
