@@ -58,9 +58,9 @@ long find_task(const std::vector<Task>& tasks, int role, double k, double e, boo
     return -1;
 }
 
-std::string series_name(const Task& t) {
+std::string series_name(double k, double e, bool fast, int role) {
     static const char* const suffix[] = {"", "_length_check", "_eq5", "_dt_check"};
-    return "series_k" + number_text(t.k) + "_e" + number_text(t.e) + (t.fast ? "_fast" : "_slow") + suffix[t.role];
+    return "series_k" + number_text(k) + "_e" + number_text(e) + (fast ? "_fast" : "_slow") + suffix[role];
 }
 
 // Fig. 6 as a protocol (harness/protocol.hpp): one sweep point per pipe run (Task).
@@ -73,6 +73,12 @@ struct BistablePipe {
         const auto b = read_spec<BistablePipeSpec>(p);
         for (double e : b.eN_list)
             if (!(e > 0 && e < 1)) p.reject("eN_list", "each e_N must be in (0, 1): e_N = 1 has no dashpot and Eq. (4) no solution");
+        // The report finds a run by its k_N, e_N, start and role: a value listed twice would be two
+        // runs with one name.
+        for (const auto* list : {&b.kN_list, &b.eN_list})
+            for (std::size_t i = 0; i < list->size(); ++i)
+                if (std::find(list->begin(), list->begin() + long(i), (*list)[i]) != list->begin() + long(i))
+                    p.reject(list == &b.kN_list ? "kN_list" : "eN_list", "values must be distinct: " + number_text((*list)[i]) + " is listed twice");
         double longest_budget = 0;
         for (double k : b.kN_list)
             for (double e : b.eN_list) {
@@ -161,17 +167,22 @@ struct BistablePipe {
         // takes the stream of the Fig. 6 run it repeats, so that the two start alike.
         const long same = find_task(tasks, kFig6, t.k, t.e, t.fast);
         s.stream = std::uint64_t(t.role >= kEq5 && same >= 0 ? same : i);
-        return run_pipe(s, time_budget(b, t.k, t.e), b.eq9_window, b.hold_distance);
+        RunResult rr = run_pipe(s, time_budget(b, t.k, t.e), b.eq9_window, b.hold_distance);
+        rr.k_N = t.k, rr.e_N = t.e, rr.fast = t.fast, rr.role = t.role;
+        // The paper's construction (text below Eq. 9) for Fig. 6's states, on the wall of the base
+        // pipe (the run's seed, not its length or step).
+        if (t.role == kFig6) rr.construction = construct(pipe_spec(b, ctx.seed), t.k, t.e, rr);
+        return rr;
     }
-    static Result report(const Spec& b, const std::vector<Task>& tasks, const Swept<RunResult>& swept, const RunContext& ctx) {
+    static Result report(const Spec& b, const std::vector<Task>&, const Swept<RunResult>& swept, const RunContext& ctx) {
         const std::vector<RunResult>& results = swept.outcomes;
         Result r;
         // The paper's t_col at k_N = 200000 N/m refers to e_N = 0.70 (gamma scaled with sqrt(k_N)).
         r.scalar("t_col_k200000_e0.70", pipe_law(200000.0, 0.70, b.m_mean).collision_time(b.m_mean), "s",
                  "free-wall contact duration at k_N = 2e5 N/m, e_N = 0.70 (Eq. 4)");
-        report_fig6(r, b, pipe_spec(b, ctx.seed), tasks, results);
-        report_eq9_windows(r, tasks, results);
-        report_series(r, b, tasks, results);
+        report_fig6(r, b, pipe_spec(b, ctx.seed), results);
+        report_eq9_windows(r, results);
+        report_series(r, results);
         r.scalar("grains", double(results.front().grains), "1", "free grains in the pipe (first run)");
         return r;
     }

@@ -1,5 +1,5 @@
 // bistable-pipe (Fig. 6): a pipe run of one sweep point, and the impact shots of the paper's
-// construction (Eq. 9) that the report asks for.
+// construction (Eq. 9) that a Fig. 6 point adds to its outcome.
 #include <algorithm>
 #include <cmath>
 #include <gsl/gsl_fit.h>

@@ -2,6 +2,7 @@
 // crossings, the near-wall area fraction, the estimates below Eq. (9) and the time series.
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 #include <string>
 
 #include "analysis/curve_analysis.hpp"
@@ -10,6 +11,19 @@
 #include "experiments/bistable_pipe/spec.hpp"
 
 namespace granrepro::experiments::bistable_pipe_detail {
+
+const RunResult* find_run(const std::vector<RunResult>& results, int role, double k, double e, bool fast) {
+    for (const RunResult& rr : results)
+        if (rr.role == role && rr.k_N == k && rr.e_N == e && rr.fast == fast) return &rr;
+    return nullptr;
+}
+
+const RunResult& run_at(const std::vector<RunResult>& results, int role, double k, double e, bool fast) {
+    if (const RunResult* rr = find_run(results, role, k, e, fast)) return *rr;
+    throw std::runtime_error("bistable-pipe: no run of role " + std::to_string(role) + " at k_N = " + number_text(k) +
+                             ", e_N = " + number_text(e) + (fast ? ", fast start" : ", slow start") +
+                             " among the outcomes (stored before outcomes named their run?)");
+}
 
 namespace {
 
@@ -24,15 +38,15 @@ struct Totals { double worst_balance = 0, min_slope = INFINITY; int steady = 0; 
 
 // One k_N of Fig. 6: both starts against e_N, with outcomes, Eq. (9) and the construction.
 KColumns table_k(Result& r, const BistablePipeSpec& b, const PipeSpec& base, std::size_t ki, const std::string& kt,
-                 const std::vector<Task>& tasks, const std::vector<RunResult>& results, Totals& tot) {
+                 const std::vector<RunResult>& results, Totals& tot) {
     const auto& es = b.eN_list;
     KColumns c;
     for (std::size_t ei = 0; ei < es.size(); ++ei)
         for (int f = 0; f < 2; ++f) {
-            const RunResult& rr = results[(ki * es.size() + ei) * 2 + std::size_t(f)];
+            const RunResult& rr = run_at(results, kFig6, b.kN_list[ki], es[ei], f == 1);
             const bool ok = rr.outcome == kSteady;
             const double bal = ok ? rr.ndot * rr.dvy / base.geo.gravity : NAN;
-            const Construction cons = construct(base, b.kN_list[ki], es[ei], rr);
+            const Construction& cons = rr.construction;
             if (f == 0 && ei + 1 == es.size()) c.link_top = cons.link;
             const double row[kColumns] = {ok ? -rr.v_mean : NAN, -rr.v_final, double(rr.outcome),
                                           ok ? rr.t_steady : rr.t_final, bal, ok ? rr.sigma_vx : NAN,
@@ -63,12 +77,12 @@ KColumns table_k(Result& r, const BistablePipeSpec& b, const PipeSpec& base, std
     // rule never changed its step (then the two runs are one).
     std::vector<double> ev, el, eo, es5, ex;
     for (std::size_t ei = 0; ei < es.size(); ++ei) {
-        const long own = find_task(tasks, kEq5, b.kN_list[ki], es[ei], true);
-        const RunResult& fast = results[(ki * es.size() + ei) * 2 + 1];
+        const RunResult* own = find_run(results, kEq5, b.kN_list[ki], es[ei], true);
+        const RunResult& fast = run_at(results, kFig6, b.kN_list[ki], es[ei], true);
         const double dt5 = pipe_time_step(base, pipe_law(b.kN_list[ki], es[ei], base.m_mean));
         // Under time_step = eq5 the fast run is itself at Eq. (5)'s step: nothing to draw beside it.
         const RunResult* rr = b.time_step == "eq5"             ? nullptr
-                              : own >= 0                      ? &results[std::size_t(own)]
+                              : own                           ? own
                               : fast.dt_min >= dt5 ? &fast : nullptr;
         const bool ok = rr && rr->outcome == kSteady;
         ev.push_back(ok ? -rr->v_mean : NAN);
@@ -179,11 +193,10 @@ void report_branch_k(Result& r, const std::vector<double>& es, const std::string
 // "If the flow ... becomes higher than v_crit, the system will accelerate to the emergency-brake
 // steady state" (Summary): of the runs of one k_N whose mean speed ever exceeded v_crit, the
 // fraction that ended above it (a fast steady state, or still faster than v_crit at the end).
-void report_vcrit_crossings_k(Result& r, const std::string& kt, std::vector<RunResult>::const_iterator runs,
-                              std::size_t count, double v_crit) {
+void report_vcrit_crossings_k(Result& r, const std::string& kt, const std::vector<const RunResult*>& runs, double v_crit) {
     int crossed = 0, ended_fast = 0, settled_fast = 0;
-    for (std::size_t j = 0; j < count; ++j) {
-        const RunResult& rr = runs[long(j)];
+    for (const RunResult* run : runs) {
+        const RunResult& rr = *run;
         // "Becomes faster": starts below v_crit (a fast start begins above it and may only fall back).
         if (rr.v.empty() || -rr.v.front() > v_crit || -*std::min_element(rr.v.begin(), rr.v.end()) <= v_crit) continue;
         ++crossed;
@@ -199,11 +212,10 @@ void report_vcrit_crossings_k(Result& r, const std::string& kt, std::vector<RunR
 
 // Eq. (9)'s argument: the volume fraction near the wall is "essentially a constant for fixed global
 // volume fraction". Over every steady state of Fig. 6 (all k_N, both starts, one global phi): its spread.
-void report_near_wall_phi(Result& r, const std::vector<Task>& tasks, const std::vector<RunResult>& results) {
+void report_near_wall_phi(Result& r, const std::vector<RunResult>& results) {
     std::vector<double> pw;
-    for (std::size_t i = 0; i < results.size(); ++i)
-        if (const RunResult& rr = results[i]; tasks[i].role == kFig6 && rr.outcome == kSteady && std::isfinite(rr.phi_wall))
-            pw.push_back(rr.phi_wall);
+    for (const RunResult& rr : results)
+        if (rr.role == kFig6 && rr.outcome == kSteady && std::isfinite(rr.phi_wall)) pw.push_back(rr.phi_wall);
     const auto [lo, hi] = std::minmax_element(pw.begin(), pw.end());
     const double mean = mean_sd(pw).mean;
     r.scalar("near_wall_phi_mean", mean, "1", "mean area fraction of the layer one diameter inside the wall crests, steady states");
@@ -217,11 +229,10 @@ void report_near_wall_phi(Result& r, const std::vector<Task>& tasks, const std::
 // The fast start run again with every step halved (dt_check_eN) against its Fig. 6 run: the
 // relative change of the steady speed if both settled, else of the speed at the end of the
 // shorter run (both accelerating, or one settled: a change of outcome shows as a large change).
-void report_dt_check(Result& r, const std::vector<Task>& tasks, const std::vector<RunResult>& results) {
-    const long chk = long(tasks.size()) - 1;
-    if (chk < 0 || tasks[std::size_t(chk)].role != kDtCheck) return;
-    const Task& t = tasks[std::size_t(chk)];
-    const RunResult &a = results[std::size_t(find_task(tasks, kFig6, t.k, t.e, true))], &h = results[std::size_t(chk)];
+void report_dt_check(Result& r, const std::vector<RunResult>& results) {
+    const auto chk = std::find_if(results.begin(), results.end(), [](const RunResult& rr) { return rr.role == kDtCheck; });
+    if (chk == results.end()) return;
+    const RunResult &h = *chk, &a = run_at(results, kFig6, h.k_N, h.e_N, true);
     double change;
     if (a.outcome == kSteady && h.outcome == kSteady) {
         change = std::abs(h.v_mean - a.v_mean) / std::abs(a.v_mean);
@@ -236,39 +247,39 @@ void report_dt_check(Result& r, const std::vector<Task>& tasks, const std::vecto
              "1 if that run and its Fig. 6 run end alike (steady, free fall or unsettled)");
 }
 
-void report_fig6(Result& r, const BistablePipeSpec& b, const PipeSpec& base, const std::vector<Task>& tasks,
-                 const std::vector<RunResult>& results) {
+void report_fig6(Result& r, const BistablePipeSpec& b, const PipeSpec& base, const std::vector<RunResult>& results) {
     const auto &ks = b.kN_list, &es = b.eN_list;
     Totals tot;
     for (std::size_t ki = 0; ki < ks.size(); ++ki) { // one row of the figure
         const std::string kt = "k" + number_text(ks[ki]);
-        const KColumns c = table_k(r, b, base, ki, kt, tasks, results, tot);
+        const KColumns c = table_k(r, b, base, ki, kt, results, tot);
         const double vc = v_crit(b, ks[ki]);
         report_states_k(r, es, kt, c, vc);
         for (bool fast : {false, true}) report_branch_k(r, es, kt, c, vc, fast);
-        report_vcrit_crossings_k(r, kt, results.begin() + long(ki * es.size() * 2), es.size() * 2, vc);
+        std::vector<const RunResult*> runs; // Fig. 6's runs at this k_N, by e_N, slow start first
+        for (double e : es)
+            for (bool fast : {false, true}) runs.push_back(&run_at(results, kFig6, ks[ki], e, fast));
+        report_vcrit_crossings_k(r, kt, runs, vc);
         double xi = 0;
-        for (std::size_t j = 0; j < es.size() * 2; ++j) xi = std::max(xi, results[ki * es.size() * 2 + j].xi_max);
+        for (const RunResult* rr : runs) xi = std::max(xi, rr->xi_max);
         r.scalar("xi_max_over_d_" + kt, xi, "1",
                  "largest overlap of any contact over all runs at this k_N, over the smaller diameter (Eq. 4's xi_max)");
         double xs = NAN;
-        for (std::size_t j = 0; j < es.size() * 2; ++j)
-            if (const double x = results[ki * es.size() * 2 + j].xi_steady; std::isfinite(x)) xs = std::isnan(xs) ? x : std::max(xs, x);
+        for (const RunResult* rr : runs)
+            if (const double x = rr->xi_steady; std::isfinite(x)) xs = std::isnan(xs) ? x : std::max(xs, x);
         r.scalar("xi_max_steady_over_d_" + kt, xs, "1", "the same over the steady states only (NaN: none)");
     }
-    report_near_wall_phi(r, tasks, results);
-    report_dt_check(r, tasks, results);
+    report_near_wall_phi(r, results);
+    report_dt_check(r, results);
     r.scalar("steady_runs", tot.steady, "1", "runs that reached a steady state");
     // Softer grains brake earlier: the k_N = 200 fast branch against the k_N = 2000 one at the same
     // e_N (geometric mean of the speed ratio over the e_N where both fast starts settled above v_crit).
     const auto k_lo = std::find(ks.begin(), ks.end(), 200.0), k_mid = std::find(ks.begin(), ks.end(), 2000.0);
     if (k_lo != ks.end() && k_mid != ks.end()) {
-        const std::size_t lo_i = std::size_t(k_lo - ks.begin()), mid_i = std::size_t(k_mid - ks.begin());
         double lr = 0;
         int nr = 0;
-        for (std::size_t ei = 0; ei < es.size(); ++ei) {
-            const RunResult& lo = results[(lo_i * es.size() + ei) * 2 + 1];
-            const RunResult& mid = results[(mid_i * es.size() + ei) * 2 + 1];
+        for (double e : es) {
+            const RunResult &lo = run_at(results, kFig6, *k_lo, e, true), &mid = run_at(results, kFig6, *k_mid, e, true);
             // Fast-branch states only: a fast start that fell back to the slow branch is not one.
             if (lo.outcome != kSteady || mid.outcome != kSteady || -lo.v_mean < v_crit(b, 200.0) ||
                 -mid.v_mean < v_crit(b, 2000.0))
@@ -283,8 +294,9 @@ void report_fig6(Result& r, const BistablePipeSpec& b, const PipeSpec& base, con
     r.scalar("impact_slope_min", std::isfinite(tot.min_slope) ? tot.min_slope : NAN, "s",
              "smallest slope dΔv_y/dv of the impact curve at a steady state's speed (Eq. 9 argument: > 0)");
     if (b.length_check > 0) {
-        const RunResult& at_length = results[((ks.size() > 1 ? 1 : 0) * es.size() + es.size() - 1) * 2];
-        const RunResult& at_check = results[std::size_t(find_task(tasks, kLengthCheck, ks[ks.size() > 1 ? 1 : 0], es.back(), false))];
+        const double k_check = ks[ks.size() > 1 ? 1 : 0]; // make_tasks' choice
+        const RunResult& at_length = run_at(results, kFig6, k_check, es.back(), false);
+        const RunResult& at_check = run_at(results, kLengthCheck, k_check, es.back(), false);
         r.scalar("length_check_ratio", (at_length.outcome == kSteady && at_check.outcome == kSteady) ? at_check.v_mean / at_length.v_mean : NAN, "1",
                  "steady speed at length_check over that at length (same k_N, e_N, slow start)");
     }
@@ -292,13 +304,13 @@ void report_fig6(Result& r, const BistablePipeSpec& b, const PipeSpec& base, con
 
 // The crude estimates below Eq. (9), over windows of every run: ṅ ∝ σ_vx, and ṅ Δv_y grows
 // about quadratically with Δv_y.
-void report_eq9_windows(Result& r, const std::vector<Task>& tasks, const std::vector<RunResult>& results) {
+void report_eq9_windows(Result& r, const std::vector<RunResult>& results) {
     std::vector<double> wk, wn, wd, ws, wv, lx, ly, ld, lnd; // every window; those for the power-law fits
-    for (std::size_t i = 0; i < tasks.size(); ++i)
+    for (std::size_t i = 0; i < results.size(); ++i)
         for (std::size_t j = 0; j < results[i].w_ndot.size(); ++j) {
-            if (tasks[i].role != kFig6 && tasks[i].role != kLengthCheck) break; // the model's runs only
+            if (results[i].role != kFig6 && results[i].role != kLengthCheck) break; // the model's runs only
             const double n = results[i].w_ndot[j], d = results[i].w_dvy[j], sx = results[i].w_sx[j];
-            wk.push_back(tasks[i].k);
+            wk.push_back(results[i].k_N);
             wn.push_back(n);
             wd.push_back(d);
             ws.push_back(sx);
@@ -321,11 +333,11 @@ void report_eq9_windows(Result& r, const std::vector<Task>& tasks, const std::ve
     r.scalar("eq9_windows", double(lx.size()), "1", "windows in those fits");
 }
 
-void report_series(Result& r, const BistablePipeSpec&, const std::vector<Task>& tasks, const std::vector<RunResult>& results) {
-    for (std::size_t i = 0; i < tasks.size(); ++i) {
-        Table& ts = r.table(series_name(tasks[i]), "mean velocity and rms v_x against time");
-        ts.add("t", "s").values = results[i].t;
-        ts.add({{"v_down", "m/s", column(results[i].v, std::negate<>())}, {"sigma_vx", "m/s", results[i].sx}});
+void report_series(Result& r, const std::vector<RunResult>& results) {
+    for (const RunResult& rr : results) {
+        Table& ts = r.table(series_name(rr.k_N, rr.e_N, rr.fast, rr.role), "mean velocity and rms v_x against time");
+        ts.add("t", "s").values = rr.t;
+        ts.add({{"v_down", "m/s", column(rr.v, std::negate<>())}, {"sigma_vx", "m/s", rr.sx}});
     }
 }
 } // namespace granrepro::experiments::bistable_pipe_detail

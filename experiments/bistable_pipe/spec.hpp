@@ -58,7 +58,32 @@ inline double time_budget(const BistablePipeSpec& b, double k, double e) {
 
 enum Outcome { kSteady = 0, kFreeFall = 1, kUnsettled = 2 };
 
+// The paper's construction (text below Eq. 9): on the impact curve Δv_y(v_y^i) of the wall, the
+// speed where Δv_y = g/ṅ with positive slope (a stable intersection) nearest to the measured mean
+// speed; NaN if there is none in 0.1-3 times it. Done at two v_x^i: σ_vx (the paper's association)
+// and the measured mean |v_x| of the wall impacts (grains reaching the wall are the faster ones).
+// reach = max Δv_y(v_y^i; σ_vx) / (g/ṅ) over the grid: below 1 the paper's association cannot give
+// an intersection at all.
+struct Construction {
+    double v = NAN;        // predicted steady speed at v_x^i = σ_vx [m/s]
+    double v_vxin = NAN;   // predicted steady speed at v_x^i = measured mean impact |v_x| [m/s]
+    double reach = NAN;    // max over the grid of Δv_y(σ_vx) / (g/ṅ) [1]
+    double slope = NAN;    // d Δv_y / d v at the measured speed, v_x^i = σ_vx [s] (> 0: stable, Eq. 9 argument)
+    double contacts = NAN; // wall grains touched per impact at the measured impact velocities (Fig. 5)
+    double link = NAN;     // the impact curve's Δv_y at the measured impact velocities over the measured Δv_y
+    template <class V> void fields(V&& f) {
+        f("v", v); f("v_vxin", v_vxin); f("reach", reach); f("slope", slope); f("contacts", contacts); f("link", link);
+    }
+};
+
+// One sweep point's outcome: the pipe run of a Task, which it names (k_N, e_N, start, role: the
+// report finds runs by these, not by their place in the sweep), and for a run of Fig. 6 the
+// paper's construction, made in compute because it shoots impacts (a report reads outcomes only).
 struct RunResult {
+    double k_N = NAN, e_N = NAN; // [N/m], [1]
+    bool fast = false;           // fast start (else slow)
+    int role = -1;               // TaskRole
+    Construction construction;   // Fig. 6's runs only; NaN elsewhere
     int outcome = kUnsettled;
     double t_steady = NAN, v_mean = NAN, v_final = NAN, t_final = NAN, accel_final = NAN;
     double sigma_vx = NAN, ndot = NAN, dvy = NAN, vx_in = NAN, vy_in = NAN;
@@ -72,6 +97,7 @@ struct RunResult {
                                           // fraction [1], largest overlap / smaller diameter since the last sample [1]
     std::vector<double> w_ndot, w_dvy, w_sx, w_v; // windows (Eq. 9 estimates): ṅ, Δv_y, σ_vx, v
     template <class V> void fields(V&& f) {
+        f("k_N", k_N); f("e_N", e_N); f("fast", fast); f("role", role); f("construction", construction);
         f("outcome", outcome); f("t_steady", t_steady); f("v_mean", v_mean); f("v_final", v_final);
         f("t_final", t_final); f("accel_final", accel_final); f("sigma_vx", sigma_vx); f("ndot", ndot); f("dvy", dvy);
         f("vx_in", vx_in); f("vy_in", vy_in); f("grains", grains);
@@ -90,34 +116,23 @@ enum TaskRole { kFig6 = 0, kLengthCheck = 1, kEq5 = 2, kDtCheck = 3 };
 struct Task { double k, e; bool fast; double length; double wall_steps; int role; double refine = 1; }; // refine: dt / refine
 // The index of the task of that role, k_N, e_N and start; -1 if there is none.
 long find_task(const std::vector<Task>& tasks, int role, double k, double e, bool fast);
-// The series table of a task (its role named at the end).
-std::string series_name(const Task& t);
+// The outcome of the run of that role, k_N, e_N and start: nullptr if there is none (find_run),
+// an error if there must be one (run_at). report.cpp.
+const RunResult* find_run(const std::vector<RunResult>& results, int role, double k, double e, bool fast);
+const RunResult& run_at(const std::vector<RunResult>& results, int role, double k, double e, bool fast);
+// The series table of a run (its role named at the end).
+std::string series_name(double k, double e, bool fast, int role);
 
 // compute.cpp: one start of the pipe until steady, free fall, v_abort or the end of its budget.
 RunResult run_pipe(const PipeSpec& s, double t_budget, double eq9_window, double hold_distance);
 
-// The paper's construction (text below Eq. 9): on the impact curve Δv_y(v_y^i) of the wall, the
-// speed where Δv_y = g/ṅ with positive slope (a stable intersection) nearest to the measured mean
-// speed; NaN if there is none in 0.1-3 times it. Done at two v_x^i: σ_vx (the paper's association)
-// and the measured mean |v_x| of the wall impacts (grains reaching the wall are the faster ones).
-// reach = max Δv_y(v_y^i; σ_vx) / (g/ṅ) over the grid: below 1 the paper's association cannot give
-// an intersection at all.
-struct Construction {
-    double v = NAN;        // predicted steady speed at v_x^i = σ_vx [m/s]
-    double v_vxin = NAN;   // predicted steady speed at v_x^i = measured mean impact |v_x| [m/s]
-    double reach = NAN;    // max over the grid of Δv_y(σ_vx) / (g/ṅ) [1]
-    double slope = NAN;    // d Δv_y / d v at the measured speed, v_x^i = σ_vx [s] (> 0: stable, Eq. 9 argument)
-    double contacts = NAN; // wall grains touched per impact at the measured impact velocities (Fig. 5)
-    double link = NAN;     // the impact curve's Δv_y at the measured impact velocities over the measured Δv_y
-};
 // compute.cpp: the construction for one run (impact shots on the pipe's wall row); NaN where there
 // is no steady state.
 Construction construct(const PipeSpec& base, double k, double e, const RunResult& rr);
 
 // report.cpp: Fig. 6 over every k_N, the estimates below Eq. (9), and every run's time series.
-void report_fig6(Result& r, const BistablePipeSpec& b, const PipeSpec& base, const std::vector<Task>& tasks,
-                 const std::vector<RunResult>& results);
-void report_eq9_windows(Result& r, const std::vector<Task>& tasks, const std::vector<RunResult>& results);
-void report_series(Result& r, const BistablePipeSpec& b, const std::vector<Task>& tasks, const std::vector<RunResult>& results);
+void report_fig6(Result& r, const BistablePipeSpec& b, const PipeSpec& base, const std::vector<RunResult>& results);
+void report_eq9_windows(Result& r, const std::vector<RunResult>& results);
+void report_series(Result& r, const std::vector<RunResult>& results);
 
 } // namespace granrepro::experiments::bistable_pipe_detail

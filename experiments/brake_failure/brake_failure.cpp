@@ -3,9 +3,11 @@
 // Besides the figure's curve it runs the paper's three robustness statements: the same curve with
 // dt/100, the √β collapse of k' = β k_N, and the Hertz-Kuwabara-Kono normal force.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <string>
 
+#include "engines/soft/few_body_engine.hpp"
 #include "experiments/brake_failure/spec.hpp"
 #include "harness/protocol.hpp"
 
@@ -69,6 +71,39 @@ ImpactOutcome shoot_point(const BrakeFailureSpec& s, const Sweep& w, std::size_t
     return shoot(scaled, shear, geometry(s, w.vy[i] * sb, w.dt / sb));
 }
 
+// Head-on collision at time step dt of the free grain with the wall grain or with a free twin,
+// starting 1 µm apart at 1 m/s: the contact's start and end events give t_col and e_N (Eq. 4),
+// the step ends the largest overlap (text below Eq. 4).
+HeadOn measure_head_on(const LinearSpringDashpot& law, const ImpactShotSpec& s, double dt, bool wall = true) {
+    FewBodyEngine<LinearSpringDashpot, CoulombShear> eng(law, s.shear(), dt);
+    const double R = 0.5 * s.d_free, r = wall ? 0.5 * s.d_wall : R;
+    eng.add_free({{R + r + 1e-6, 0.0}, {-1.0, 0.0}, R, s.m_free});
+    if (wall) eng.add_fixed({{0.0, 0.0}, r});
+    else eng.add_free({{0.0, 0.0}, {0.0, 0.0}, R, s.m_free});
+    double xi_max = 0;
+    for (long step = 0; step < 10'000'000 && eng.events().size() < 2; ++step) {
+        eng.step();
+        const auto& g = eng.grains();
+        const double other = wall ? 0.0 : g[1].r.x;
+        xi_max = std::max(xi_max, R + r - (g[0].r.x - other));
+    }
+    const auto& ev = eng.events();
+    if (ev.size() < 2) return {};
+    return {ev[1].t - ev[0].t, -ev[1].xi_dot / ev[0].xi_dot, xi_max};
+}
+
+// The head-on collision of that kind (HeadOnKind, spec.hpp).
+HeadOn head_on_point(const BrakeFailureSpec& s, const Sweep& w, std::size_t kind) {
+    const LinearSpringDashpot& law = w.law;
+    if (kind == kHeadOn) return measure_head_on(law, s, w.dt);
+    if (kind == kHeadOnFine) return measure_head_on(law, s, w.dt / 20);
+    if (kind == kHeadOnElastic) {
+        const LinearSpringDashpot undamped{law.k_N, 0.0};
+        return measure_head_on(undamped, s, undamped.collision_time(s.m_free) / 1000);
+    }
+    return measure_head_on(law, s, law.collision_time(0.5 * s.m_free) / s.steps_per_contact, false);
+}
+
 } // namespace
 } // namespace brake_failure_detail
 
@@ -76,13 +111,13 @@ using namespace brake_failure_detail;
 
 namespace {
 
-// Fig. 3 and its studies as a protocol (harness/protocol.hpp): one sweep point per curve
-// (milliseconds each, so none is saved), in curve order.
+// Fig. 3 and its studies as a protocol (harness/protocol.hpp): one sweep point per curve, in
+// curve order, then one per head-on collision of Eq. (4) (milliseconds each, so none is saved).
 struct BrakeFailure {
     static constexpr const char* name = "brake-failure";
     static constexpr PointFiles files = PointFiles::None;
     using Spec = BrakeFailureSpec;
-    using Outcome = Curve;
+    using Outcome = Point;
     using Shared = Sweep;
     static void validate(const ParameterSet& p) { granrepro::experiments::validate(p); }
     static Sweep prepare(const Spec& s, const RunContext&) {
@@ -90,9 +125,14 @@ struct BrakeFailure {
         return {law, law.collision_time(s.m_free) / s.steps_per_contact, log_space(s.vy_min, s.vy_max, s.n_vy),
                 log_space(s.vy_min, 10 * s.vy_max, s.n_vy), HertzKuwabaraKono::matched_at(law.k_N, law.gamma_N, s.hkk_xi_ref)};
     }
-    static std::vector<long> points(const Spec& s, const Sweep&) { return index_order(kFirstBeta + s.betas.size()); }
-    static Curve compute(const Spec& s, const Sweep& w, long c, const PointContext&) {
-        Curve curve;
+    static std::vector<long> points(const Spec& s, const Sweep&) { return index_order(curve_count(s) + kHeadOns); }
+    static Point compute(const Spec& s, const Sweep& w, long c, const PointContext&) {
+        Point point;
+        if (std::size_t(c) >= curve_count(s)) {
+            point.head_on = head_on_point(s, w, std::size_t(c) - curve_count(s));
+            return point;
+        }
+        Curve& curve = point.curve;
         for (std::size_t i = 0; i < w.vy.size(); ++i) {
             const ImpactOutcome o = shoot_point(s, w, std::size_t(c), i);
             curve.dvy.push_back(o.dvy);
@@ -100,10 +140,14 @@ struct BrakeFailure {
             curve.dvy_shear.push_back(o.dvy_shear);
             curve.complete.push_back(o.completed);
         }
-        return curve;
+        return point;
     }
-    static Result report(const Spec& s, const Sweep& w, const Swept<Curve>& swept, const RunContext&) {
-        const std::vector<Curve>& curves = swept.outcomes;
+    static Result report(const Spec& s, const Sweep& w, const Swept<Point>& swept, const RunContext&) {
+        std::vector<Curve> curves;
+        std::array<HeadOn, kHeadOns> head_ons;
+        for (std::size_t i = 0; i < swept.outcomes.size(); ++i)
+            if (i < curve_count(s)) curves.push_back(swept.outcomes[i].curve);
+            else head_ons[i - curve_count(s)] = swept.outcomes[i].head_on;
         Result r;
         int incomplete = 0;
         for (const auto& c : curves)
@@ -111,7 +155,7 @@ struct BrakeFailure {
         r.scalar("incomplete_impacts", incomplete, "1", "impacts that had not ended within max_steps");
         const Peak pk = report_fig3(r, w, curves);
         report_high_velocity(r, s, w, curves);
-        report_head_on(r, s, w);
+        report_head_on(r, s, w, head_ons);
         report_collapse(r, s, w, curves, pk);
         report_readings(r, s, w, curves);
         return r;

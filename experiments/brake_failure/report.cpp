@@ -7,50 +7,22 @@
 
 #include <Eigen/Dense>
 
-#include "engines/soft/few_body_engine.hpp"
 #include "experiments/brake_failure/spec.hpp"
 
 namespace granrepro::experiments::brake_failure_detail {
 
-// Head-on collision at the run's time step, of the free grain with the wall grain or with a
-// free twin: the measured t_col and e_N of Eq. (4) and the largest overlap (text below Eq. 4).
-struct HeadOn {
-    double t_col = NAN, e_N = NAN, xi_max = NAN;
-};
-HeadOn measure_head_on(const LinearSpringDashpot& law, const ImpactShotSpec& s, double dt, bool wall = true) {
-    FewBodyEngine<LinearSpringDashpot, CoulombShear> eng(law, s.shear(), dt);
-    const double R = 0.5 * s.d_free, r = wall ? 0.5 * s.d_wall : R;
-    eng.add_free({{R + r + 1e-6, 0.0}, {-1.0, 0.0}, R, s.m_free});
-    if (wall) eng.add_fixed({{0.0, 0.0}, r});
-    else eng.add_free({{0.0, 0.0}, {0.0, 0.0}, R, s.m_free});
-    double xi_max = 0;
-    for (long step = 0; step < 10'000'000 && eng.events().size() < 2; ++step) {
-        eng.step();
-        const auto& g = eng.grains();
-        const double other = wall ? 0.0 : g[1].r.x;
-        xi_max = std::max(xi_max, R + r - (g[0].r.x - other));
-    }
-    const auto& ev = eng.events();
-    if (ev.size() < 2) return {};
-    return {ev[1].t - ev[0].t, -ev[1].xi_dot / ev[0].xi_dot, xi_max};
-}
-
-// Eq. (4) and the text below it, measured head-on.
-void report_head_on(Result& r, const ImpactShotSpec& s, const Sweep& w) {
+// Eq. (4) and the text below it, measured head-on (the points of HeadOnKind).
+void report_head_on(Result& r, const ImpactShotSpec& s, const Sweep& w, const std::array<HeadOn, kHeadOns>& h) {
     const LinearSpringDashpot& law = w.law;
     const double m = s.m_free, t_col = law.collision_time(m);
-    const HeadOn head_on = measure_head_on(law, s, w.dt);
+    const HeadOn &head_on = h[kHeadOn], &fine = h[kHeadOnFine], &fine_elastic = h[kHeadOnElastic], &twin = h[kHeadOnTwin];
     // Text below Eq. (4): xi_max <= v_N t_col / pi, with equality for gamma_N = 0; and the m_red
     // in Eq. (1)'s dashpot makes free-wall collisions more dissipative than free-free ones.
-    // Overlaps are read at step ends, so they are resolved at dt/20 here.
-    const HeadOn fine = measure_head_on(law, s, w.dt / 20);
     const LinearSpringDashpot undamped{law.k_N, 0.0};
-    const HeadOn fine_elastic = measure_head_on(undamped, s, undamped.collision_time(m) / 1000);
     r.scalar("xi_max_over_vtcol_pi", fine.xi_max / (1.0 * t_col / M_PI), "1",
              "head-on free-wall xi_max over v_N t_col / pi, paper parameters (v_N = 1 m/s)");
     r.scalar("xi_max_over_vtcol_pi_elastic", fine_elastic.xi_max / (1.0 * undamped.collision_time(m) / M_PI), "1",
              "the same for gamma_N = 0");
-    const HeadOn twin = measure_head_on(law, s, law.collision_time(0.5 * m) / s.steps_per_contact, false);
     r.scalar("e_N_free_free", twin.e_N, "1", "head-on restitution of two free grains at the same gamma_N");
     r.scalar("e_N_wall_over_free", head_on.e_N / twin.e_N, "1", "free-wall over free-free restitution (< 1: the wall dissipates more)");
     r.scalar("t_col_eq4", t_col, "s", "contact duration of a free-wall pair from Eq. (4)");

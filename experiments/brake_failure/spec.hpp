@@ -1,5 +1,6 @@
 // brake-failure's spec, its sweep's shared inputs and outcome, and what its files share.
 #pragma once
+#include <array>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -51,10 +52,31 @@ struct Curve {
 // extended grid (the study of which F_N enters Coulomb's law, panel (b)), then k' = beta k_N per beta.
 enum : std::size_t { kFig3, kFine, kHkk, kElasticExt, kPaperExt, kFirstReading,
                      kFirstBeta = kFirstReading + 2 * kFrictionNormals.size() };
+// The curves' points per spec: kFirstBeta + one per beta.
+inline std::size_t curve_count(const BrakeFailureSpec& s) { return kFirstBeta + s.betas.size(); }
+
+// A head-on collision of the free grain with the wall grain or with a free twin: the measured
+// t_col and e_N of Eq. (4) and the largest overlap (text below Eq. 4). NaN: the contact never ended.
+struct HeadOn {
+    double t_col = NAN, e_N = NAN, xi_max = NAN;
+    template <class V> void fields(V&& v) { v("t_col", t_col), v("e_N", e_N), v("xi_max", xi_max); }
+};
+// The head-on collisions, points curve_count(s) + kind after the curves: free-wall at the run's dt,
+// the same at dt/20 (overlaps are read at step ends), free-wall with gamma_N = 0 at its t_col/1000,
+// and two free grains at their own t_col / steps_per_contact.
+enum HeadOnKind : std::size_t { kHeadOn, kHeadOnFine, kHeadOnElastic, kHeadOnTwin, kHeadOns };
+
+// One sweep point's outcome: a curve (index below curve_count) or a head-on collision (the rest);
+// the index decides which part is filled.
+struct Point {
+    Curve curve;
+    HeadOn head_on;
+    template <class V> void fields(V&& v) { v("curve", curve), v("head_on", head_on); }
+};
 
 
 // Reports (report.cpp).
-void report_head_on(Result& r, const ImpactShotSpec& s, const Sweep& w);
+void report_head_on(Result& r, const ImpactShotSpec& s, const Sweep& w, const std::array<HeadOn, kHeadOns>& h);
 Peak report_fig3(Result& r, const Sweep& w, const std::vector<Curve>& curves);
 void report_high_velocity(Result& r, const BrakeFailureSpec& s, const Sweep& w, const std::vector<Curve>& curves);
 void report_collapse(Result& r, const BrakeFailureSpec& s, const Sweep& w, const std::vector<Curve>& curves, const Peak& pk);

@@ -139,9 +139,9 @@ void record_snapshot(Trace& tr, const CoolingSpec& c, const std::vector<Vec2>& p
 // Mid-run checkpoints of one method hold the engine state and the trace up to a sample time (with
 // the P(b/d) counts). prepare() is deterministic, so a resumed run redoes the equilibration
 // instead of storing the t = 0 state. Version 4: the trace carries its wall time; 5: its snapshots
-// the velocity correlations.
+// the velocity correlations; 6: the DSMC cells per side.
 constexpr const char* kCoolingRunSchema = "granrepro-cooling-run";
-constexpr long kCoolingRunSchemaVersion = 5;
+constexpr long kCoolingRunSchemaVersion = 6;
 
 // The P(b/d) histogram holding the trace's counts (none yet: empty).
 ImpactParameterHistogram pbd_histogram(const CoolingSpec& c, const Trace& tr) {
@@ -216,7 +216,9 @@ Trace run_method(const RunContext& ctx, const CoolingSpec& c, const Setup& s, lo
     cfg.seed = ctx.seed;
     cfg.stream = dsmc_stream(k);
     DsmcEngine eng(cfg, s.pos, s.vel, s.rad, s.mass);
-    return observe(c, s, eng, run);
+    Trace tr = observe(c, s, eng, run);
+    tr.dsmc_cells_per_side = long(eng.cells_x());
+    return tr;
 }
 
 // A sweep point's trace as read back, with P(b/d) made from its counts.

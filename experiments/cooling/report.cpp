@@ -99,7 +99,7 @@ void add_equilibrated_a2(Result& res, const CoolingSpec& c, std::uint64_t seed, 
 }
 
 // Figs. 2, 6 and 7 of DSMC, and DSMC against ED.
-void add_dsmc(Result& res, const CoolingSpec& c, const Setup& s, const std::vector<Trace>& eds, const std::vector<Trace>& dss) {
+void add_dsmc(Result& res, const CoolingSpec& c, const std::vector<Trace>& eds, const std::vector<Trace>& dss) {
     const Trace& ds = dss.front();
     const double t0 = c.t0(), k_small = c.sk_k_max;
     const std::vector<double> snaps = c.snapshots();
@@ -114,7 +114,7 @@ void add_dsmc(Result& res, const CoolingSpec& c, const Setup& s, const std::vect
     res.scalar("dsmc_g_contact_peak", max_over(g_last, ds.g_r, 0.9, 1.1) / mean_over(g_last, ds.g_r, 2.5, 5.0), "1",
                "g near contact over g at 2.5-5 d, last snapshot, DSMC");
     add_sk_agreement(res, eds, dss, snaps, k_small);
-    add_cell_imprint(res, c, s, eds, dss);
+    add_cell_imprint(res, eds, dss);
     res.scalar("dsmc_Sk_small_k_growth", small_k_S(ds, ds.snaps.back(), k_small) / small_k_S(ds, ds.snaps.front(), k_small), "1",
                "mean S(k <= sk_k_max) at the last snapshot over that at t = 0, DSMC, first seed");
     res.scalar("dsmc_Sk_growth_over_equilibrium", small_k_S(ds, ds.snaps.back(), k_small) / theory::hard_disk_structure_factor_zero(c.rho), "1",
@@ -154,7 +154,7 @@ Result report_all(const CoolingSpec& c, std::uint64_t seed, const Setups& setups
     add_ed_sk(res, eds, snaps, c.sk_k_max, theory::hard_disk_structure_factor_zero(c.rho));
     add_sk_change_intervals(res, eds, dss, snaps, c.sk_k_max);
     if (c.velocity_correlation) add_velocity_correlation(res, c, eds, "ed");
-    if (c.run_dsmc) add_dsmc(res, c, setups[0], eds, dss);
+    if (c.run_dsmc) add_dsmc(res, c, eds, dss);
     return res;
 }
 

@@ -8,7 +8,6 @@
 #include <vector>
 
 #include "analysis/seed_stats.hpp"
-#include "engines/dsmc/dsmc_engine.hpp"
 #include "experiments/cooling/spec.hpp"
 #include "observables/velocity_correlation.hpp"
 
@@ -246,10 +245,9 @@ void add_sk_agreement(Result& res, const std::vector<Trace>& eds, const std::vec
 }
 
 // Fig. 7, the DSMC cell lattice's imprint on S(k): the bump of S at the cell shell, DSMC against
-// ED (no cells), last snapshot, mean over seeds.
-void add_cell_imprint(Result& res, const CoolingSpec& c, const Setup& s, const std::vector<Trace>& eds, const std::vector<Trace>& dss) {
-    const DsmcEngine sizing(dsmc_config(c, s.L), s.pos, s.vel, s.rad, s.mass);
-    const double cells = double(sizing.cells_x());
+// ED (no cells), last snapshot, mean over seeds. The cells per side are the first seed's DSMC run's.
+void add_cell_imprint(Result& res, const std::vector<Trace>& eds, const std::vector<Trace>& dss) {
+    const double cells = double(dss.front().dsmc_cells_per_side);
     const double M = 2 * (eds.front().S_k.empty() ? 1 : eds.front().S_k.back());
     // NGP on an M grid aliases mode n to n - M round(n/M).
     const double kc = std::abs(cells - M * std::round(cells / M));

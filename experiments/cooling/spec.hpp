@@ -114,11 +114,15 @@ struct Trace {
     std::vector<ImpactParameterHistogram::Window> pbd;
     std::vector<double> pbd_centres;
     double wall_seconds = 0; // this run's, resumed parts included
+    // DSMC: the engine's cells per box side (the lattice whose imprint on S(k) Fig. 7's report
+    // measures), set where the engine exists so that the report builds none; ED: 0.
+    long dsmc_cells_per_side = 0;
     template <class V>
     void fields(V&& v) {
         v("t", t), v("kx", kx), v("ky", ky), v("krot", krot), v("cn", cn), v("elastic_cn", elastic_cn);
         v("a2", a2), v("a2_err", a2_err), v("snapshots", snaps), v("g_r", g_r), v("S_k", S_k);
         v("impact_parameter", pbd_counts), v("wall_seconds", wall_seconds);
+        v("dsmc_cells_per_side", dsmc_cells_per_side);
     }
 };
 
@@ -194,6 +198,6 @@ void add_ed_g(Result& res, const std::vector<Trace>& eds, const std::vector<doub
 void add_ed_sk(Result& res, const std::vector<Trace>& eds, const std::vector<double>& snaps, double k_small, double s_eq);
 void add_sk_change_intervals(Result& res, const std::vector<Trace>& eds, const std::vector<Trace>& dss, const std::vector<double>& snaps, double k_small);
 void add_sk_agreement(Result& res, const std::vector<Trace>& eds, const std::vector<Trace>& dss, const std::vector<double>& snaps, double k_small);
-void add_cell_imprint(Result& res, const CoolingSpec& c, const Setup& s, const std::vector<Trace>& eds, const std::vector<Trace>& dss);
+void add_cell_imprint(Result& res, const std::vector<Trace>& eds, const std::vector<Trace>& dss);
 
 } // namespace granrepro::experiments::cooling_detail
