@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "data/fields.hpp"
 #include "data/result.hpp"
 #include "experiments/common/columns.hpp"
 #include "scenarios/pipe_setup.hpp"
@@ -25,17 +26,10 @@ struct BistablePipeSpec {
     std::string time_step;  // "eq5": dt = t_col / steps_per_contact; "wall": also resolve the wall-grain passage
     double wall_steps = 0;  // [1] steps per wall-grain passage of the fastest grain (time_step = "wall")
     double dt_check_eN = 0; // [1] the fast start at this e_N (k_N = kN_list[1]) again at 2 wall_steps; 0 = off
-    template <class V> void fields(V&& v) {
-        v("width", width); v("length", length); v("length_check", length_check); v("d_wall", d_wall); v("phi", phi);
-        v("wall_spacing", wall_spacing); v("d_mean", d_mean); v("polydispersity", polydispersity); v("m_mean", m_mean);
-        v("mu", mu); v("g", g); v("friction_normal", friction_normal); v("kN_list", kN_list); v("eN_list", eN_list);
-        v("slow_v0", slow_v0); v("fast_v0", fast_v0); v("agitation", agitation); v("v_crit_2000", v_crit_2000);
-        v("v_abort", v_abort); v("steps_per_contact", steps_per_contact); v("skin", skin); v("budget_tcol", budget_tcol); v("budget_min", budget_min);
-        v("window", window); v("t_average", t_average); v("sample_dt", sample_dt); v("eq9_window", eq9_window);
-        v("drift_tol", drift_tol); v("hold_distance", hold_distance);
-        v("agitation_vcrit", agitation_vcrit); v("time_step", time_step); v("wall_steps", wall_steps);
-        v("dt_check_eN", dt_check_eN);
-    }
+    GRANREPRO_FIELDS(width, length, length_check, d_wall, phi, wall_spacing, d_mean, polydispersity, m_mean, mu, g,
+                     friction_normal, kN_list, eN_list, slow_v0, fast_v0, agitation, v_crit_2000, v_abort,
+                     steps_per_contact, skin, budget_tcol, budget_min, window, t_average, sample_dt, eq9_window,
+                     drift_tol, hold_distance, agitation_vcrit, time_step, wall_steps, dt_check_eN)
 };
 
 // The engine's spec at the base length; k_N, e_N, the start and the stream are set per run.
@@ -71,9 +65,7 @@ struct Construction {
     double slope = NAN;    // d Δv_y / d v at the measured speed, v_x^i = σ_vx [s] (> 0: stable, Eq. 9 argument)
     double contacts = NAN; // wall grains touched per impact at the measured impact velocities (Fig. 5)
     double link = NAN;     // the impact curve's Δv_y at the measured impact velocities over the measured Δv_y
-    template <class V> void fields(V&& f) {
-        f("v", v); f("v_vxin", v_vxin); f("reach", reach); f("slope", slope); f("contacts", contacts); f("link", link);
-    }
+    GRANREPRO_FIELDS(v, v_vxin, reach, slope, contacts, link)
 };
 
 // One sweep point's outcome: the pipe run of a Task, which it names (k_N, e_N, start, role: the
@@ -96,15 +88,9 @@ struct RunResult {
     std::vector<double> t, v, sx, pw, xq; // samples: time [s], mean v_y [m/s], rms v_x [m/s], near-wall area
                                           // fraction [1], largest overlap / smaller diameter since the last sample [1]
     std::vector<double> w_ndot, w_dvy, w_sx, w_v; // windows (Eq. 9 estimates): ṅ, Δv_y, σ_vx, v
-    template <class V> void fields(V&& f) {
-        f("k_N", k_N); f("e_N", e_N); f("fast", fast); f("role", role); f("construction", construction);
-        f("outcome", outcome); f("t_steady", t_steady); f("v_mean", v_mean); f("v_final", v_final);
-        f("t_final", t_final); f("accel_final", accel_final); f("sigma_vx", sigma_vx); f("ndot", ndot); f("dvy", dvy);
-        f("vx_in", vx_in); f("vy_in", vy_in); f("grains", grains);
-        f("steps", steps); f("list_builds", list_builds); f("dt_final", dt_final); f("dt_min", dt_min); f("xi_max", xi_max); f("xi_steady", xi_steady); f("phi_wall", phi_wall);
-        f("t", t); f("v", v); f("sx", sx); f("pw", pw); f("xq", xq);
-        f("w_ndot", w_ndot); f("w_dvy", w_dvy); f("w_sx", w_sx); f("w_v", w_v);
-    }
+    GRANREPRO_FIELDS(k_N, e_N, fast, role, construction, outcome, t_steady, v_mean, v_final, t_final, accel_final,
+                     sigma_vx, ndot, dvy, vx_in, vy_in, grains, steps, list_builds, dt_final, dt_min, xi_max,
+                     xi_steady, phi_wall, t, v, sx, pw, xq, w_ndot, w_dvy, w_sx, w_v)
 };
 
 // One sweep point: a pipe run at k_N, e_N from a slow or a fast start, at a pipe length, with

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "data/fields.hpp"
 #include "analysis/curve_analysis.hpp"
 #include "data/result.hpp"
 #include "experiments/common/columns.hpp"
@@ -22,11 +23,7 @@ struct BrakeFailureSpec : ImpactShotSpec {
     double fine_factor = 0;        // the Δt check runs at dt / fine_factor
     std::vector<double> betas;     // k' = beta k_N
     double hkk_xi_ref = 0;         // overlap at which HKK matches the linear law [m]
-    template <class V> void fields(V&& v) {
-        ImpactShotSpec::fields(v);
-        v("offset", offset); v("vx_i", vx_i); v("vy_min", vy_min); v("vy_max", vy_max); v("n_vy", n_vy);
-        v("fine_factor", fine_factor); v("betas", betas); v("hkk_xi_ref", hkk_xi_ref);
-    }
+    GRANREPRO_FIELDS_BASE(ImpactShotSpec, offset, vx_i, vy_min, vy_max, n_vy, fine_factor, betas, hkk_xi_ref)
     // Half the chord y_c that the free grain's centre runs in contact on its straight path [m].
     double half_chord() const { return std::sqrt(reach() * reach() - offset * offset); }
 };
@@ -42,9 +39,7 @@ struct Sweep {
 struct Curve {
     std::vector<double> dvy, dvx, dvy_shear;
     std::vector<int> complete;
-    template <class V> void fields(V&& v) {
-        v("dvy", dvy), v("dvx", dvx), v("dvy_shear", dvy_shear), v("complete", complete);
-    }
+    GRANREPRO_FIELDS(dvy, dvx, dvy_shear, complete)
 };
 
 // Curves: Fig. 3, dt / fine_factor, HKK, elastic limit (gamma_N = 0) and paper parameters both on
@@ -59,7 +54,7 @@ inline std::size_t curve_count(const BrakeFailureSpec& s) { return kFirstBeta + 
 // t_col and e_N of Eq. (4) and the largest overlap (text below Eq. 4). NaN: the contact never ended.
 struct HeadOn {
     double t_col = NAN, e_N = NAN, xi_max = NAN;
-    template <class V> void fields(V&& v) { v("t_col", t_col), v("e_N", e_N), v("xi_max", xi_max); }
+    GRANREPRO_FIELDS(t_col, e_N, xi_max)
 };
 // The head-on collisions, points curve_count(s) + kind after the curves: free-wall at the run's dt,
 // the same at dt/20 (overlaps are read at step ends), free-wall with gamma_N = 0 at its t_col/1000,
@@ -71,7 +66,7 @@ enum HeadOnKind : std::size_t { kHeadOn, kHeadOnFine, kHeadOnElastic, kHeadOnTwi
 struct Point {
     Curve curve;
     HeadOn head_on;
-    template <class V> void fields(V&& v) { v("curve", curve), v("head_on", head_on); }
+    GRANREPRO_FIELDS(curve, head_on)
 };
 
 

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "data/fields.hpp"
 #include "core/rng_stream.hpp"
 #include "core/vec2.hpp"
 #include "data/result.hpp"
@@ -55,21 +56,11 @@ struct CoolingSpec {
     long dsmc_free_volume_block = 0;
     bool dsmc_no_repeat = false, dsmc_displacement = false;
     bool velocity_correlation = false; // pair velocity correlations at the snapshots (a study's observable)
-    template <class V>
-    void fields(V&& v) {
-        v("n_side", n_side), v("rho", rho), v("r", r), v("d", d), v("mass", mass), v("vbar", vbar);
-        v("initial_velocities", initial_velocities), v("seeds", seeds), v("mu", mu), v("t_c", t_c);
-        v("dsmc_t_c", dsmc_t_c), v("equilibration", equilibration), v("t_end", t_end);
-        v("snapshot_times", snapshot_times), v("bd_windows", bd_windows), v("sk_k_max", sk_k_max);
-        v("a2_window", a2_window), v("a2_samples", a2_samples), v("samples_per_decade", samples_per_decade);
-        v("departure_level", departure_level), v("run_ed", run_ed), v("run_dsmc", run_dsmc);
-        v("dsmc_cell_diameters", dsmc_cell_diameters), v("dsmc_mft_fraction", dsmc_mft_fraction);
-        v("dsmc_step_factor", dsmc_step_factor), v("dsmc_free_volume", dsmc_free_volume);
-        v("dsmc_partner", dsmc_partner), v("dsmc_free_volume_block", dsmc_free_volume_block);
-        v("dsmc_no_repeat", dsmc_no_repeat), v("dsmc_displacement", dsmc_displacement);
-        v("dsmc_rcp_fraction", dsmc_rcp_fraction);
-        v("velocity_correlation", velocity_correlation);
-    }
+    GRANREPRO_FIELDS(n_side, rho, r, d, mass, vbar, initial_velocities, seeds, mu, t_c, dsmc_t_c, equilibration,
+                     t_end, snapshot_times, bd_windows, sk_k_max, a2_window, a2_samples, samples_per_decade,
+                     departure_level, run_ed, run_dsmc, dsmc_cell_diameters, dsmc_mft_fraction, dsmc_step_factor,
+                     dsmc_free_volume, dsmc_partner, dsmc_free_volume_block, dsmc_no_repeat, dsmc_displacement,
+                     dsmc_rcp_fraction, velocity_correlation)
 
     // Enskog collision rate per particle at t = 0 with Henderson's g(d) [1/s], and Haff's t0 [s].
     double omega_enskog() const { return theory::enskog_collision_rate_vbar(rho, d, vbar, theory::henderson_contact_value(rho)); }
@@ -89,17 +80,13 @@ struct CoolingSpec {
 struct Snapshot {
     std::vector<double> g, g_err, S;
     std::vector<double> vc_n, vc_n_err, vc_t, vc_t_err, vc_a, vc_a_err;
-    template <class V> void fields(V&& v) {
-        v("g", g), v("g_err", g_err), v("S", S);
-        v("vc_n", vc_n), v("vc_n_err", vc_n_err), v("vc_t", vc_t), v("vc_t_err", vc_t_err);
-        v("vc_a", vc_a), v("vc_a_err", vc_a_err);
-    }
+    GRANREPRO_FIELDS(g, g_err, S, vc_n, vc_n_err, vc_t, vc_t_err, vc_a, vc_a_err)
 };
 
 // The counts per b/d bin of one P(b/d) time window.
 struct WindowCounts {
     std::vector<std::uint64_t> bins;
-    template <class V> void fields(V&& v) { v("bins", bins); }
+    GRANREPRO_FIELDS(bins)
 };
 
 // What one method (ED or DSMC) produced from one initial state. fields() lists what a run carries

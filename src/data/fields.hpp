@@ -31,8 +31,9 @@ concept HasFields = requires(T& t) { t.fields([](const char*, auto&) {}); };
 #define GRANREPRO_FOR_EACH_STEP(macro, a, ...) macro(a) __VA_OPT__(GRANREPRO_FOR_EACH_AGAIN GRANREPRO_PARENS(macro, __VA_ARGS__))
 #define GRANREPRO_FOR_EACH_AGAIN() GRANREPRO_FOR_EACH_STEP
 
-#define GRANREPRO_FIELD_VISIT(member) v(#member, member);
+// The visitor's name is one no member takes (a member `v` would otherwise be hidden by it).
+#define GRANREPRO_FIELD_VISIT(member) granrepro_visit_(#member, member);
 #define GRANREPRO_FIELDS(...) \
-    template <class V> void fields(V&& v) { GRANREPRO_FOR_EACH(GRANREPRO_FIELD_VISIT, __VA_ARGS__) }
+    template <class V> void fields(V&& granrepro_visit_) { GRANREPRO_FOR_EACH(GRANREPRO_FIELD_VISIT, __VA_ARGS__) }
 #define GRANREPRO_FIELDS_BASE(Base, ...) \
-    template <class V> void fields(V&& v) { Base::fields(v); GRANREPRO_FOR_EACH(GRANREPRO_FIELD_VISIT, __VA_ARGS__) }
+    template <class V> void fields(V&& granrepro_visit_) { Base::fields(granrepro_visit_); GRANREPRO_FOR_EACH(GRANREPRO_FIELD_VISIT, __VA_ARGS__) }
