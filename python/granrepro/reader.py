@@ -4,7 +4,7 @@
 A results folder is untrusted input (a downloaded paper_figures/): load() reads it without
 following symlinks and within the caps of granrepro.untrusted, refuses any attribute or dataset of
 another shape or type than the writer's, and verifies data.h5 against summary.json beside it:
-experiment, scale, seed, every scalar and every parameter value by value, and (schema 2 and 3) the
+experiment, scale, seed, every scalar and every parameter value by value, and the
 content hashes of summary.json, of the scalars, of each table it reads and of /points. Anything else raises
 ResultsError (ResultsMismatch where the two files disagree), one line naming the file and field."""
 from __future__ import annotations
@@ -23,9 +23,8 @@ from .untrusted import (MAX_POINT_FILE_BYTES, MAX_SUMMARY_BYTES, MAX_TEXT_FILE_B
 
 SCHEMA = "granrepro-result"
 SCHEMA_VERSION = 3  # the version this reader's writer emits
-# 1: before the content hashes (summary_json_hash, data_h5_hash); 2: before the stored sweep
-# points (/points) and the whole run's totals (total_wall_time_s, total_cpu_time_s)
-READS_VERSIONS = (1, 2, 3)
+# Only the current version: a schema bump regenerates paper_figures/ (docs/schema.md, "Versions").
+READS_VERSIONS = (3,)
 # Bytes of one dataset read at most (the cap of a point file, which /points/records is): a crafted
 # dataset cannot make the reader allocate more.
 MAX_DATASET_BYTES = MAX_POINT_FILE_BYTES
@@ -384,7 +383,7 @@ def _check_parameters(h5_path: str, run: Run, kinds: dict, summary: dict) -> Non
             _mismatch(h5_path, f"has no /parameters/{name} (summary.json beside it has it)", run.experiment)
 
 
-def _check_against_summary(h5_path: str, run: Run, summary: dict, text: str, version: int, found: dict) -> None:
+def _check_against_summary(h5_path: str, run: Run, summary: dict, text: str, found: dict) -> None:
     """data.h5 against summary.json, as `granrepro check` verifies them (src/harness/runner.cpp)."""
     for key, mine in (("experiment", run.experiment), ("scale", run.scale), ("seed", run.seed)):
         if summary.get(key) != mine or isinstance(summary.get(key), bool):
@@ -401,24 +400,23 @@ def _check_against_summary(h5_path: str, run: Run, summary: dict, text: str, ver
                 isinstance(js, (int, float)) and not isinstance(js, bool) and float(js) == q.value):
             _mismatch(h5_path, f"/scalars/{name} is {_show(q.value)} but summary.json beside it has {_show(js)}",
                       run.experiment)
-    if version >= 2 or summary.get("schema_version", 1) >= 2:
-        if "summary_json_hash" not in run.attributes:
-            _mismatch(h5_path, "has no summary_json_hash (one of the two files is of schema_version 2 or 3)", run.experiment)
-        if run.attributes["summary_json_hash"] not in summary_content_hashes(summary, text):
-            raise ResultsMismatch(f"{os.path.join(run.path, 'summary.json')}: content differs from the hash data.h5 "
-                                  f"beside it recorded for it (edited since the run?); rerun `granrepro {run.experiment}`")
-        recorded = summary.get("data_h5_hash")
-        if not isinstance(recorded, dict):
-            _mismatch(h5_path, "summary.json beside it has no 'data_h5_hash' object", run.experiment)
-        if recorded.get("scalars") != found["scalars"]:
-            _mismatch(h5_path, "its scalars differ from the hash summary.json recorded for them", run.experiment)
-        if "points" in found and recorded.get("points") != found["points"]:  # read only with points=True
-            _mismatch(h5_path, "its stored sweep points (/points) differ from the hash summary.json recorded for them",
-                      run.experiment)
-        tables = recorded.get("tables", {})
-        for name, h in found["tables"].items():
-            if not isinstance(tables, dict) or tables.get(name) != h:
-                _mismatch(h5_path, f"table '{name}' differs from the hash summary.json recorded for it", run.experiment)
+    if "summary_json_hash" not in run.attributes:
+        _mismatch(h5_path, "has no summary_json_hash", run.experiment)
+    if run.attributes["summary_json_hash"] not in summary_content_hashes(summary, text):
+        raise ResultsMismatch(f"{os.path.join(run.path, 'summary.json')}: content differs from the hash data.h5 "
+                              f"beside it recorded for it (edited since the run?); rerun `granrepro {run.experiment}`")
+    recorded = summary.get("data_h5_hash")
+    if not isinstance(recorded, dict):
+        _mismatch(h5_path, "summary.json beside it has no 'data_h5_hash' object", run.experiment)
+    if recorded.get("scalars") != found["scalars"]:
+        _mismatch(h5_path, "its scalars differ from the hash summary.json recorded for them", run.experiment)
+    if "points" in found and recorded.get("points") != found["points"]:  # read only with points=True
+        _mismatch(h5_path, "its stored sweep points (/points) differ from the hash summary.json recorded for them",
+                  run.experiment)
+    tables = recorded.get("tables", {})
+    for name, h in found["tables"].items():
+        if not isinstance(tables, dict) or tables.get(name) != h:
+            _mismatch(h5_path, f"table '{name}' differs from the hash summary.json recorded for it", run.experiment)
     _check_parameters(h5_path, run, found["parameter_kinds"], summary)
 
 
@@ -460,7 +458,7 @@ def _as_text(h5: _H5, attrs: dict, key: str, where: str) -> str:
     return v
 
 
-def _read_h5(h5_path: str, out_dir: str, tables, points: bool) -> tuple[Run, int, dict]:
+def _read_h5(h5_path: str, out_dir: str, tables, points: bool) -> tuple[Run, dict]:
     h5 = _H5(h5_path)
     require_regular_file(h5_path, "data.h5")
     try:
@@ -479,8 +477,6 @@ def _read_h5(h5_path: str, out_dir: str, tables, points: bool) -> tuple[Run, int
             if not isinstance(root.get(key), str):
                 h5.refuse(f"root attribute '{key}' is missing or not text")
         seed = root.get("seed")
-        if isinstance(seed, str) and seed.isdigit():  # files written before 2026-12
-            seed = int(seed)
         if not isinstance(seed, int):
             h5.refuse("root attribute 'seed' is missing or not an integer")
         run = Run(path=out_dir, experiment=root["experiment"], scale=root["scale"], seed=seed, attributes=root)
@@ -530,7 +526,7 @@ def _read_h5(h5_path: str, out_dir: str, tables, points: bool) -> tuple[Run, int
                 h5.refuse("/points/records is not a JSON array")
             full = h5.text_attr(pg, "/points", "full_records_hash", "") or fnv1a64(data)
             found["points"] = full
-    return run, version, found
+    return run, found
 
 
 def load(out_dir: str, tables=None, points: bool = True) -> Run:
@@ -542,9 +538,9 @@ def load(out_dir: str, tables=None, points: bool = True) -> Run:
     Raises ResultsError (one line naming the file and field) on anything damaged or edited."""
     h5_path = os.path.join(out_dir, "data.h5")
     summary_path = os.path.join(out_dir, "summary.json")
-    run, version, found = _read_h5(h5_path, out_dir, tables, points)
+    run, found = _read_h5(h5_path, out_dir, tables, points)
     summary, text = _summary(summary_path)
-    _check_against_summary(h5_path, run, summary, text, version, found)
+    _check_against_summary(h5_path, run, summary, text, found)
     run.summary = summary
     run.claims = summary.get("claims", [])
     return run

@@ -9,7 +9,6 @@ struct BenchOptions {
     int repeats = 5;
     double seconds = 2.0;
     long steps = 0;     // soft: time steps of one timed run (0: the target's default)
-    int threads = 2;    // soft: threads of the multi-core comparison
     bool sizes = false; // soft: cost against the number of grains instead of the LAMMPS comparison
     bool speeds = false; // soft: cost and list builds against the flow speed (1, 20, 200 m/s)
     std::string experiment = "bistable-pipe"; // sweep: a sweeping experiment

@@ -15,7 +15,6 @@
 
 #include "analysis/seed_stats.hpp"
 #include "core/spawn.hpp"
-#include "core/stable_hash.hpp"
 #include "scenarios/pipe_setup.hpp"
 
 namespace granrepro {
@@ -75,19 +74,11 @@ Timing time_window(Engine& eng, long warm, long timed, double& builds) {
     return tm;
 }
 
-// FNV-1a over the bits of the state in id order.
-std::uint64_t state_hash(const Engine& eng) {
-    std::string bits;
-    for (const auto* v : {&eng.x(), &eng.y(), &eng.vx(), &eng.vy(), &eng.ax(), &eng.ay()})
-        bits.append(reinterpret_cast<const char*>(v->data()), v->size() * sizeof(double));
-    return fnv1a64(bits);
-}
 
 // ---- LAMMPS ----------------------------------------------------------------------------------
 
 struct Lammps {
     std::string lmp;                 // the binary, empty if absent
-    std::vector<std::string> mpirun; // mpirun with its flags, empty if absent
     std::string version;             // first line of its output
     std::string why_not;             // why the comparison is skipped
 };
@@ -103,12 +94,6 @@ Lammps find_lammps() {
     // With no input (stdin is /dev/null) LAMMPS prints its version line and stops.
     const std::string out = program_output({l.lmp, "-log", "none"});
     l.version = out.substr(0, out.find('\n'));
-    // OpenMPI refuses root without --allow-run-as-root; --oversubscribe lets np exceed its slot count.
-    if (const std::string mpirun = find_in_path("mpirun"); !mpirun.empty()) {
-        l.mpirun = {mpirun};
-        if (geteuid() == 0) l.mpirun.push_back("--allow-run-as-root");
-        l.mpirun.push_back("--oversubscribe");
-    }
     return l;
 }
 
@@ -178,13 +163,8 @@ struct LammpsRun {
     long neighbor_builds = -1;
 };
 
-LammpsRun run_lammps(const Lammps& l, const std::filesystem::path& dir, int np) {
-    std::vector<std::string> argv;
-    if (np > 1) {
-        argv = l.mpirun;
-        argv.insert(argv.end(), {"-np", std::to_string(np)});
-    }
-    argv.insert(argv.end(), {l.lmp, "-in", "in.pipe", "-log", "none"});
+LammpsRun run_lammps(const Lammps& l, const std::filesystem::path& dir) {
+    const std::vector<std::string> argv = {l.lmp, "-in", "in.pipe", "-log", "none"};
     const int rc = run_program(argv, dir, dir / "lmp.out");
     LammpsRun r;
     std::ifstream out(dir / "lmp.out");
@@ -262,7 +242,7 @@ void trajectory_check(const Lammps& l, const std::filesystem::path& dir, const P
     const long steps = 5000, every = 1000;
     Engine eng = build_pipe(spec);
     write_lammps_case(dir, eng, spec, steps, every);
-    const LammpsRun run = run_lammps(l, dir, 1);
+    const LammpsRun run = run_lammps(l, dir);
     if (std::isnan(run.time.wall)) return;
     const std::size_t n = eng.size();
     const std::vector<Frame> frames = read_dump(dir / "traj.dump", n);
@@ -291,7 +271,7 @@ void trajectory_check(const Lammps& l, const std::filesystem::path& dir, const P
     const std::filesystem::path dir_half = dir / "half-dt";
     std::filesystem::create_directories(dir_half);
     write_lammps_case(dir_half, half, spec, 2 * steps, 2 * every);
-    const LammpsRun run_half = run_lammps(l, dir_half, 1);
+    const LammpsRun run_half = run_lammps(l, dir_half);
     const std::vector<Frame> frames_half =
         std::isnan(run_half.time.wall) ? std::vector<Frame>{} : read_dump(dir_half / "traj.dump", n);
     struct Row { long step; double ke_us, ke_l, ke_twin, ke_half, vy_us, vy_l, dr_l, dr_twin, dr_half, dr_lhalf; };
@@ -327,7 +307,6 @@ void trajectory_check(const Lammps& l, const std::filesystem::path& dir, const P
 
 void comparison(const BenchOptions& opt) {
     const long steps = opt.steps > 0 ? opt.steps : 400000;
-    const int threads = std::max(1, opt.threads);
     const PipeSpec spec = bench_spec(0.111);
     const Engine probe = build_pipe(spec);
     const std::size_t n = probe.size();
@@ -345,37 +324,25 @@ void comparison(const BenchOptions& opt) {
         std::printf("  LAMMPS: skipped: %s\n", l.why_not.c_str());
     } else {
         std::filesystem::create_directories(dir);
-        std::printf("  LAMMPS: %s (%s)%s\n", l.version.c_str(), l.lmp.c_str(),
-                    l.mpirun.empty() ? "; no mpirun, so no multi-core comparison" : "");
+        std::printf("  LAMMPS: %s (%s)\n", l.version.c_str(), l.lmp.c_str());
         trajectory_check(l, dir, spec);
         write_lammps_case(dir, probe, spec, steps, 0);
     }
-    const bool multi_lmp = !l.lmp.empty() && !l.mpirun.empty() && threads > 1;
 
-    Series us1, usT, l1, lT; // granrepro and LAMMPS on 1 core and on `threads`
-    std::uint64_t hash1 = 0;
-    bool identical = true;
+    Series us1, l1; // granrepro and LAMMPS on 1 core
     long builds = 0, lmp_builds = -1;
     const double load_before = load_average();
     for (int r = 0; r < opt.repeats; ++r) {
         {
             Engine eng = build_pipe(spec);
             us1.add(time_advance(eng, steps));
-            hash1 = state_hash(eng);
             builds = eng.list_builds();
         }
         if (!l.lmp.empty()) {
-            const LammpsRun lr = run_lammps(l, dir, 1);
+            const LammpsRun lr = run_lammps(l, dir);
             l1.add(lr.time);
             lmp_builds = lr.neighbor_builds;
         }
-        if (threads > 1) {
-            Engine eng = build_pipe(spec);
-            eng.set_threads(threads);
-            usT.add(time_advance(eng, steps));
-            identical = identical && state_hash(eng) == hash1;
-        }
-        if (multi_lmp) lT.add(run_lammps(l, dir, threads).time);
     }
     const double load_after = load_average();
     if (!l.lmp.empty() && !std::getenv("GRANREPRO_KEEP_LAMMPS")) std::filesystem::remove_all(dir);
@@ -392,13 +359,6 @@ void comparison(const BenchOptions& opt) {
     std::printf("  %-34s %12s %12s %8s\n", "free-grain steps per second", "granrepro", "LAMMPS", "ratio");
     row("1 core, per CPU second", us1.cpu, l1.cpu);
     row("1 core, per wall second", us1.wall, l1.wall);
-    if (threads > 1) {
-        const std::string what = std::to_string(threads) + " threads / np " + std::to_string(threads) + ", per ";
-        row((what + "wall second").c_str(), usT.wall, lT.wall);
-        row((what + "CPU second").c_str(), usT.cpu, lT.cpu);
-        std::printf("  granrepro with %d threads ends in the state of 1 thread, bit for bit: %s\n", threads,
-                    identical ? "yes" : "NO");
-    }
 }
 
 // ---- cost against size --------------------------------------------------------------------
@@ -422,17 +382,14 @@ long cache_bytes(int level) {
 }
 
 void sizes(const BenchOptions& opt) {
-    const int threads = std::max(1, opt.threads);
     const long warm = 1000, timed = opt.steps > 0 ? opt.steps : 4000;
     std::printf("bench soft --sizes: the bench pipe (width 20 mm, k_N 2000 N/m, e_N 0.95, area fraction 0.55) at "
                 "several lengths;\n  steps %ld-%ld after the slow start (repeated for small pipes to >= 0.5 s), medians "
                 "of %d runs. Caches: L2 %ld KiB, L3 %ld MiB.\n",
                 warm, warm + timed, opt.repeats, cache_bytes(2) / 1024, cache_bytes(3) / 1024 / 1024);
     const double load_before = load_average();
-    std::printf("  %8s %8s %14s %10s %14s %10s %10s %10s\n", "grains", "length", "1 thread", "ns/grain", "threads",
-                "speed-up", "bytes/", "builds/");
-    std::printf("  %8s %8s %14s %10s %14s %10s %10s %10s\n", "", "[m]", "[g-steps/cpu-s]", "-step", "[g-steps/s]", "",
-                "grain", "1000 steps");
+    std::printf("  %8s %8s %14s %10s %10s %10s\n", "grains", "length", "1 core", "ns/grain", "bytes/", "builds/");
+    std::printf("  %8s %8s %14s %10s %10s %10s\n", "", "[m]", "[g-steps/cpu-s]", "-step", "grain", "1000 steps");
     for (const long target : {500L, 1500L, 5000L, 20000L, 100000L}) {
         // Area fraction 0.55 of (width - d_wall) x length with <d^2> = d_mean^2 (1 + p^2/3).
         const PipeSpec probe_spec = bench_spec(1.0);
@@ -440,32 +397,25 @@ void sizes(const BenchOptions& opt) {
                                  (M_PI / 4 * probe_spec.d_mean * probe_spec.d_mean *
                                   (1 + probe_spec.polydispersity * probe_spec.polydispersity / 3));
         const PipeSpec spec = bench_spec(double(target) / per_metre);
-        std::vector<double> r1, rT;
+        std::vector<double> r1;
         double bytes = 0, builds = 0;
         std::size_t n = 0;
         for (int rep = 0; rep < opt.repeats; ++rep) {
-            for (int k = 0; k < (threads > 1 ? 2 : 1); ++k) {
-                const int t = k == 0 ? 1 : threads;
-                double cpu = 0, wall = 0, work = 0;
-                while ((t == 1 ? cpu : wall) < 0.5) {
-                    Engine eng = build_pipe(spec);
-                    eng.set_threads(t);
-                    const Timing tm = time_window(eng, warm, timed, builds);
-                    cpu += tm.cpu;
-                    wall += tm.wall;
-                    n = eng.size();
-                    work += double(n) * double(timed);
-                    bytes = eng.bytes_per_grain();
-                }
-                (t == 1 ? r1 : rT).push_back(work / (t == 1 ? cpu : wall));
+            double cpu = 0, work = 0;
+            while (cpu < 0.5) {
+                Engine eng = build_pipe(spec);
+                const Timing tm = time_window(eng, warm, timed, builds);
+                cpu += tm.cpu;
+                n = eng.size();
+                work += double(n) * double(timed);
+                bytes = eng.bytes_per_grain();
             }
+            r1.push_back(work / cpu);
         }
-        const double a = median(r1), b = median(rT);
-        std::printf("  %8zu %8.3f %14.4g %10.2f %14.4g %10.2f %10.0f %10.1f\n", n, spec.geo.length, a, 1e9 / a, b, b / a,
-                    bytes, builds);
+        const double a = median(r1);
+        std::printf("  %8zu %8.3f %14.4g %10.2f %10.0f %10.1f\n", n, spec.geo.length, a, 1e9 / a, bytes, builds);
     }
-    std::printf("  (threads = %d, per wall second; 1 thread per CPU second.) Load average (1 min) %.2f before, %.2f after.\n",
-                threads, load_before, load_average());
+    std::printf("  Load average (1 min) %.2f before, %.2f after.\n", load_before, load_average());
 }
 
 // ---- cost against the flow speed -------------------------------------------------------------

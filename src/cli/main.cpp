@@ -410,10 +410,9 @@ void add_bench_command(CLI::App& app, int& rc) {
     struct State {
         std::string target;
         BenchOptions opt;
-        std::string threads, ranks;
+        std::string ranks;
     };
     auto st = std::make_shared<State>();
-    st->threads = std::to_string(st->opt.threads);
     st->ranks = std::to_string(st->opt.ranks);
     BenchOptions& opt = st->opt;
     CLI::App* bench = app.add_subcommand("bench", "measure engine speed (medians of repeated runs)");
@@ -426,9 +425,6 @@ void add_bench_command(CLI::App& app, int& rc) {
         ->check(CLI::Range(0.01, 3600.0));
     bench->add_option("--steps", opt.steps, "soft: time steps of one timed run (default 400000)")
         ->check(CLI::Range(1L, 1000000000L));
-    bench->add_option("--threads", st->threads, "soft: threads of the multi-core comparison (1 to 256)")
-        ->capture_default_str()
-        ->type_name("INT");
     bench->add_flag("--sizes", opt.sizes, "soft: steps/s and memory against the number of grains");
     bench->add_flag("--speeds", opt.speeds, "soft: steps/s and list builds at plug speeds of 1, 20 and 200 m/s");
     bench->add_option("--experiment", opt.experiment, "sweep: the sweeping experiment to time (default bistable-pipe)");
@@ -436,7 +432,6 @@ void add_bench_command(CLI::App& app, int& rc) {
     bench->add_option("--ranks", st->ranks, "sweep: MPI ranks compared with one (2 to 256, default 2)");
     bench->add_option("--from-log", opt.from_log, "sweep: project rank counts from these run.log files (one experiment, or every one of `all`) instead of running");
     bench->callback([&rc, st] {
-        st->opt.threads = parse_positive_int("--threads", st->threads, 256);
         st->opt.ranks = parse_positive_int("--ranks", st->ranks, 256);
         parse_scale(st->opt.scale); // one line naming --scale and what is allowed
         rc = run_bench(st->target, st->opt);

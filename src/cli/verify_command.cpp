@@ -25,13 +25,11 @@ void add_verify_command(CLI::App& app, int& rc) {
     sub->add_flag("--point-only", flags->point_only,
                   "compare the point alone, without rebuilding the experiment's scalars from it and the stored "
                   "other points (skips the experiment's serial part)");
-    sub->add_option("--threads", flags->threads, "threads of a whole-experiment rerun (1 to 256)")
+    sub->add_option("--threads", flags->threads, "threads of the rerun (1 to 256)")
         ->capture_default_str()
         ->type_name("INT"); // read as text and parsed below, as the run commands' --threads
     sub->footer("\nSame code version as the results: bit for bit; another version: value by value, naming the\n"
-                "values that moved, by how much, and the claims that read them. Results written before point\n"
-                "storage (schema_version < 3) are verified by rerunning the whole experiment where it has no\n"
-                "distributed sweep (brake-failure, emergency-brake), else refused: 'unverifiable'.\n"
+                "values that moved, by how much, and the claims that read them.\n"
                 "Exit codes: 0 reproduced; 1 a value differs (listed); 2 bad input, damaged results, or\n"
                 "results that cannot be verified (one line).");
     sub->callback([flags, &rc] {

@@ -1,7 +1,6 @@
 #include "harness/runner.hpp"
 
 #include <algorithm>
-#include <cerrno>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -84,14 +83,6 @@ std::string json_kind(const nlohmann::json& j) {
     return j.dump().substr(0, 40);
 }
 
-// A seed stored as text (files before 2026-12): digits that fit 64 bits.
-bool seed_text(const std::string& s) {
-    if (s.empty() || s.size() > 20 || s.find_first_not_of("0123456789") != std::string::npos) return false;
-    errno = 0;
-    std::strtoull(s.c_str(), nullptr, 10);
-    return errno == 0;
-}
-
 // The fields the readers (check, verify, report) use, by type: a damaged or forged summary.json
 // is refused here naming the field, before a reader meets a value of the wrong type
 // (nlohmann's type_error, exit 1).
@@ -102,10 +93,10 @@ void check_summary_fields(const nlohmann::json& j, const std::string& where) {
     auto count = [](const nlohmann::json& v) { return v.is_number_unsigned() || (v.is_number_integer() && v.get<long long>() >= 0); };
     if (j.contains("schema_version")) {
         const nlohmann::json& v = j["schema_version"];
-        if (!v.is_number_integer() || v.get<long long>() < 1 || v.get<long long>() > 3)
-            bad("schema_version", v, "1, 2 or 3 (the summary versions this build reads)");
+        if (!v.is_number_integer() || v.get<long long>() != 3)
+            bad("schema_version", v, "3 (the summary version this build reads; docs/schema.md, \"Versions\")");
     }
-    if (j.contains("seed") && !count(j["seed"]) && !(j["seed"].is_string() && seed_text(j["seed"].get<std::string>())))
+    if (j.contains("seed") && !count(j["seed"]))
         bad("seed", j["seed"], "an integer >= 0");
     for (const char* f : {"code_version", "physics_hash", "command_line"})
         if (j.contains(f) && !j[f].is_string()) bad(f, j[f], "a string");
@@ -197,33 +188,18 @@ void same_parameters(const H5File& f, const fs::path& file, const nlohmann::json
             disagree(file, "parameter '" + it.key() + "' in /parameters is not in summary.json beside it", name);
 }
 
-// Files written before 2026-12 store the seed as text.
-nlohmann::json seed_of(const H5File& f) {
-    try {
-        return f.read_u64_attr("seed");
-    } catch (const std::runtime_error&) {
-        const std::string text = f.read_string_attr("seed");
-        char* end = nullptr;
-        errno = 0;
-        const unsigned long long seed = std::strtoull(text.c_str(), &end, 10);
-        if (text.empty() || *end || errno || text[0] == '-') return text; // compares unequal to any number
-        return std::uint64_t(seed);
-    }
-}
-
 // data.h5 must open, carry the result schema of this experiment, agree with summary.json on
 // experiment, scale, seed and code version, hold the scalars summary.json states (bit for bit;
 // NaN for null), and every table must read back whole: a truncated file fails one of these.
-// From schema_version 2 on, each file also carries the other's content hash (docs/schema.md),
-// so an edit of either one is found. Returns false for files written before the hashes (both of
-// schema_version 1): they are checked as before, unverified.
-bool check_data_file(const fs::path& file, const std::string& name, const fs::path& summary_file,
+// Each file also carries the other's content hash (docs/schema.md), so an edit of either one is
+// found. Only schema_version 3 is read (a schema bump regenerates paper_figures/).
+void check_data_file(const fs::path& file, const std::string& name, const fs::path& summary_file,
                      const nlohmann::json& summary) {
     std::error_code ec;
     if (!fs::exists(fs::symlink_status(file, ec))) throw InputError(file.string() + ": missing (summary.json has no data file beside it)");
     try {
         const H5File f = H5File::open(file.string()); // a regular file only (no symlink, no FIFO)
-        const long version = f.require_schema("granrepro-result", 1, 3);
+        f.require_schema("granrepro-result", 3);
         if (const std::string e = f.read_string_attr("experiment"); e != name)
             throw std::runtime_error("holds results of experiment '" + e + "'");
         // A one-sided edit of these would judge the data by the wrong claims ("paper" on quick
@@ -241,34 +217,30 @@ bool check_data_file(const fs::path& file, const std::string& name, const fs::pa
         };
         same("experiment", name, false);
         same("scale", f.read_string_attr("scale"), false);
-        same("seed", seed_of(f), false);
+        same("seed", f.read_u64_attr("seed"), false);
         if (f.has_attr("code_version")) same("code_version", f.read_string_attr("code_version"), true);
         if (f.has_attr("physics_hash")) same("physics_hash", f.read_string_attr("physics_hash"), true);
-        const bool hashed = version >= 2 || summary.value("schema_version", 0) >= 2;
-        if (hashed) {
-            if (!f.has_attr("summary_json_hash"))
-                throw std::runtime_error("has no summary_json_hash (summary.json is of schema_version 2)");
-            if (f.read_string_attr("summary_json_hash") != summary_content_hash(summary))
-                disagree(summary_file, "content differs from the hash data.h5 beside it recorded for it (edited since the run?)",
-                         name);
-            if (!summary.contains("data_h5_hash") || !summary["data_h5_hash"].is_object())
-                disagree(summary_file, "has no 'data_h5_hash' object (data.h5 beside it is of schema_version 2)", name);
-        }
+        if (!f.has_attr("summary_json_hash")) throw std::runtime_error("has no summary_json_hash");
+        if (f.read_string_attr("summary_json_hash") != summary_content_hash(summary))
+            disagree(summary_file, "content differs from the hash data.h5 beside it recorded for it (edited since the run?)",
+                     name);
+        if (!summary.contains("data_h5_hash") || !summary["data_h5_hash"].is_object())
+            disagree(summary_file, "has no 'data_h5_hash' object (data.h5 beside it records one)", name);
         same_parameters(f, file, summary, name);
         const nlohmann::json found = data_content_hash(file); // reads every table whole
-        // Schema 3: the count of stored points (summary.json's hash covers it) against /points.
-        if (summary.value("schema_version", 0) >= 3 && summary.contains("stored_points")) {
+        // The count of stored points (summary.json's hash covers it) against /points.
+        if (summary.contains("stored_points")) {
             const std::size_t stored = read_points_records(file).size();
             if (summary["stored_points"] != stored)
                 disagree(summary_file, "'stored_points' is " + summary["stored_points"].dump() + " but data.h5 beside it stores " +
                                            std::to_string(stored) + " points (/points/records; one of the two was edited)",
                          name);
         }
-        if (hashed) {
+        {
             const nlohmann::json& recorded = summary["data_h5_hash"];
             if (recorded.value("scalars", "") != found["scalars"])
                 disagree(file, "its scalars differ from the hash summary.json recorded for them (edited since the run?)", name);
-            // Schema 3: the stored sweep points (/points/records) too.
+            // The stored sweep points (/points/records) too.
             if (recorded.contains("points") != found.contains("points") ||
                 (found.contains("points") && recorded["points"] != found["points"]))
                 disagree(file, found.contains("points") ? "its stored sweep points (/points) differ from the hash summary.json recorded for them (edited since the run?)"
@@ -294,7 +266,6 @@ bool check_data_file(const fs::path& file, const std::string& name, const fs::pa
                                                                            : v[0] == it.value().get<double>());
             if (!same_value) throw std::runtime_error("scalar '" + it.key() + "' differs from summary.json");
         }
-        return hashed;
     } catch (const InputError&) {
         throw;
     } catch (const std::exception& e) {
@@ -305,8 +276,8 @@ bool check_data_file(const fs::path& file, const std::string& name, const fs::pa
 }
 
 // The lines under a check table's title: the --set overrides, so that a modified run's table
-// cannot pass for the default's, and whether the two files could be verified against each other.
-std::vector<std::string> check_notes(const nlohmann::json& overrides, bool verified) {
+// cannot pass for the default's.
+std::vector<std::string> check_notes(const nlohmann::json& overrides) {
     std::vector<std::string> notes;
     if (overrides.is_object() && !overrides.empty()) {
         std::string sets;
@@ -315,8 +286,6 @@ std::vector<std::string> check_notes(const nlohmann::json& overrides, bool verif
                                                                                          : it.value().dump());
         notes.push_back("parameters changed from the defaults (--set): " + sets);
     }
-    if (!verified) notes.push_back("unverified: written before hashes (schema_version 1); data.h5 and summary.json "
-                                   "are compared field by field only");
     return notes;
 }
 
@@ -484,7 +453,7 @@ int report_run(const std::string& name, const RunOptions& opt, const ParameterSe
     for (const auto& p : params.all())
         if (p.overridden) sets[p.name] = p.value_text();
     std::string title = name + " (" + to_string(opt.scale) + " scale)";
-    std::vector<std::string> notes = check_notes(sets, true);
+    std::vector<std::string> notes = check_notes(sets);
     const std::vector<ClaimResult> shown = figure_claims(name, opt.figures, verdicts, title, notes);
     // `figure` names what it drew: the PNG is the command's result.
     for (const auto& id : opt.figures)
@@ -649,15 +618,14 @@ std::vector<Claim> experiment_claims(const std::string& name) {
     return load_claims(expected_file(name), name, &info.outputs);
 }
 
-nlohmann::json read_checked_summary(const std::string& name, const fs::path& out, bool* verified, const std::string& missing) {
+nlohmann::json read_checked_summary(const std::string& name, const fs::path& out, const std::string& missing) {
     const fs::path summary_path = out / name / "summary.json";
     if (!fs::exists(summary_path))
         throw InputError(!missing.empty() ? missing
                                           : "no results of " + name + " in " + (out / name).string() + "; run `granrepro " +
                                                 name + "` first");
     nlohmann::json summary = read_summary(summary_path, name);
-    const bool v = check_data_file(out / name / "data.h5", name, summary_path, summary);
-    if (verified) *verified = v;
+    check_data_file(out / name / "data.h5", name, summary_path, summary);
     return summary;
 }
 
@@ -665,10 +633,9 @@ bool complete_result(const std::string& name, const RunOptions& opt) {
     if (!opt.sets.empty() || !opt.figures.empty() || opt.sweep.mode != SweepPlan::Mode::All || !has_results(name, opt.out))
         return false;
     try {
-        bool verified = false;
-        const nlohmann::json summary = read_checked_summary(name, opt.out, &verified);
+        const nlohmann::json summary = read_checked_summary(name, opt.out);
         const nlohmann::json none = nlohmann::json::object();
-        if (!verified || summary["scale"] != to_string(opt.scale) || summary.value("seed", nlohmann::json()) != opt.seed ||
+        if (summary["scale"] != to_string(opt.scale) || summary.value("seed", nlohmann::json()) != opt.seed ||
             summary.value("physics_hash", "") != physics_hash() || summary.value("overridden_parameters", none) != none ||
             summary.value("parameters", none) != resolve_parameters(name, opt).to_json())
             return false;
@@ -685,12 +652,11 @@ bool complete_result(const std::string& name, const RunOptions& opt) {
 int check_experiment(const std::string& name, const fs::path& out, const CheckOptions& opt, VerdictCounts* totals) {
     find_experiment(name);
     const auto claims = experiment_claims(name);
-    bool verified = false;
     const nlohmann::json summary = read_checked_summary(
-        name, out, &verified, "check " + name + ": no results in " + (out / name).string() + "; run `granrepro " + name + "` first");
+        name, out, "check " + name + ": no results in " + (out / name).string() + "; run `granrepro " + name + "` first");
     const Scale scale = parse_scale(summary["scale"].get<std::string>());
     const auto verdicts = evaluate_claims(claims, summary["scalars"], scale);
-    const auto notes = check_notes(summary.value("overridden_parameters", nlohmann::json::object()), verified);
+    const auto notes = check_notes(summary.value("overridden_parameters", nlohmann::json::object()));
     std::fputs(format_claim_table(name + " (" + to_string(scale) + " scale)", verdicts, notes).c_str(), stdout);
     if (opt.explain) std::fputs(format_deviation_explanations(verdicts).c_str(), stdout);
     std::fflush(stdout);
@@ -701,14 +667,13 @@ int check_experiment(const std::string& name, const fs::path& out, const CheckOp
 nlohmann::json judged_claims(const std::string& name, const fs::path& out) {
     find_experiment(name);
     const auto claims = load_claims(expected_file(name), name);
-    bool verified = false;
-    const nlohmann::json summary = read_checked_summary(name, out, &verified, "report: no results in " + (out / name).string());
+    const nlohmann::json summary = read_checked_summary(name, out, "report: no results in " + (out / name).string());
     const std::string scale = summary["scale"].get<std::string>();
     const auto verdicts = evaluate_claims(claims, summary["scalars"], parse_scale(scale));
     VerdictCounts counts;
     counts.add(verdicts);
     return {{"scale", scale},
-            {"notes", check_notes(summary.value("overridden_parameters", nlohmann::json::object()), verified)},
+            {"notes", check_notes(summary.value("overridden_parameters", nlohmann::json::object()))},
             {"claims", claims_to_json(verdicts)},
             {"headline", headline_json(counts)}};
 }

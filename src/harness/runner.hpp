@@ -79,9 +79,9 @@ int check_experiment(const std::string& name, const std::filesystem::path& out, 
 // For `report`.
 nlohmann::json judged_claims(const std::string& name, const std::filesystem::path& out);
 // OUT/<name>/summary.json, validated against the data.h5 beside it as `check` does it (damaged or
-// one-sided edits: InputError naming the file). verified: false for files written before hashes.
+// one-sided edits: InputError naming the file).
 // missing: the InputError's text when there are no results (default: "no results of <name> in ...").
-nlohmann::json read_checked_summary(const std::string& name, const std::filesystem::path& out, bool* verified = nullptr,
+nlohmann::json read_checked_summary(const std::string& name, const std::filesystem::path& out,
                                     const std::string& missing = "");
 // Checks every experiment with results in OUT, prints one table each and the totals; lists the
 // experiments without results on stderr. 1 if a claim fails or (unless missing_ok) results are missing.

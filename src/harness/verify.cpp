@@ -276,12 +276,8 @@ bool compare_parameters(const ParameterSet& params, const fs::path& h5, const st
     return report("parameters (data.h5 /parameters against its experiment_file and overridden_parameters)", c, same_version);
 }
 
-// read_summary has checked it: an integer >= 0, or digits that fit 64 bits.
-std::uint64_t recorded_seed(const json& summary) {
-    const json& s = summary.at("seed");
-    if (s.is_number_unsigned() || s.is_number_integer()) return s.get<std::uint64_t>();
-    return std::strtoull(s.get<std::string>().c_str(), nullptr, 10); // files before 2026-12: the seed as text
-}
+// read_summary has checked it: an integer >= 0.
+std::uint64_t recorded_seed(const json& summary) { return summary.at("seed").get<std::uint64_t>(); }
 
 // /points/records by field, before any is used: a malformed record is bad input naming the file
 // and the field (not nlohmann's type_error, exit 1).
@@ -328,12 +324,11 @@ double seconds_of(const json& summary, const char* field) {
     return summary.contains(field) && summary[field].is_number() ? summary[field].get<double>() : NAN;
 }
 
-void list_points(const std::string& name, const json& summary, const json& records, long version) {
+void list_points(const std::string& name, const json& summary, const json& records) {
     const std::string head = name + " (" + summary.value("scale", "?") + " scale, seed " + summary["seed"].dump() + ", " +
                              summary.value("code_version", "?") + ")";
     if (records.empty()) {
-        std::printf("%s: no stored points: results written before point storage (data.h5 schema_version %ld)\n",
-                    head.c_str(), version);
+        std::printf("%s: no stored points\n", head.c_str());
         return;
     }
     std::printf("%s: %zu stored points; whole run %s s wall, %s s CPU (%s points resumed)\n", head.c_str(), records.size(),
@@ -358,7 +353,6 @@ struct Verification {
     const VerifyOptions& opt;
     json summary, records;
     fs::path h5;
-    long version = 0;
     Scale scale = Scale::Quick;
     std::uint64_t seed = 0;
     bool same_version = false;
@@ -366,40 +360,6 @@ struct Verification {
     std::vector<std::string> added; // parameters the results' TOML lacks
     const ParameterSet* params = nullptr; // recomputed from the stored experiment file
 };
-
-// Results written before point storage, of an experiment without a distributed sweep (under 2 s
-// at paper scale): the whole experiment again, its scalars and table hashes compared.
-int verify_whole(const Verification& v, RunContext& ctx) {
-    const std::string& name = v.exp.name;
-    if (v.exp.distributed || v.opt.point)
-        throw InputError("verify " + name + ": unverifiable: results written before point storage (" + v.where +
-                         "/data.h5 is of schema_version " + std::to_string(v.version) + "; rerun `granrepro " + name +
-                         " --scale " + to_string(v.scale) + "` to store its sweep points)");
-    std::printf("verify %s: the whole experiment (%s scale, seed %llu; results written before point storage)\n",
-                name.c_str(), to_string(v.scale), static_cast<unsigned long long>(v.seed));
-    std::printf("  %s\n", v.versions.c_str());
-    const bool params_same = compare_parameters(*v.params, v.h5, v.added, v.same_version);
-    const Result r = v.exp.run(ctx);
-    Comparison c;
-    const json before = v.summary.at("scalars"), after = scalars_through_json(r);
-    compare(before, after, "", c);
-    bool same = report("scalars", c, v.same_version);
-    if (v.summary.contains("data_h5_hash")) {
-        const json now = data_content_hash(r)["tables"], then = v.summary["data_h5_hash"].value("tables", json::object());
-        std::vector<std::string> moved;
-        for (auto it = then.begin(); it != then.end(); ++it)
-            if (!now.contains(it.key()) || now[it.key()] != it.value()) moved.push_back(it.key());
-        std::printf("  tables: %s\n", moved.empty() ? (std::to_string(then.size()) + " tables bit for bit identical (content hashes)").c_str()
-                                                   : ("differ: " + joined(moved)).c_str());
-        same = same && moved.empty();
-    } else {
-        std::printf("  tables: not compared (results written before content hashes)\n");
-    }
-    if (!c.diffs.empty()) report_claims(name, before, after, c, v.scale);
-    same = same && params_same;
-    std::printf("verify %s: %s\n", name.c_str(), same ? "reproduced" : "differs");
-    return same ? 0 : 1;
-}
 
 // The stored point to rerun: as asked, or the cheapest by recorded CPU cost.
 const json& chosen_point(const Verification& v) {
@@ -485,16 +445,10 @@ int verify_experiment(const VerifyOptions& opt) {
     Verification v(exp, opt);
     v.summary = read_checked_summary(name, opt.out); // check's validation of both files
     v.h5 = opt.out / name / "data.h5";
-    try {
-        v.version = H5File::open(v.h5.string()).read_long_attr("schema_version");
-    } catch (const std::runtime_error& e) {
-        if (dynamic_cast<const InputError*>(&e)) throw;
-        throw InputError(v.h5.string() + ": schema_version: " + e.what());
-    }
     v.records = read_points_records(v.h5);
     check_records(v.records, v.h5);
     if (opt.list) {
-        list_points(name, v.summary, v.records, v.version);
+        list_points(name, v.summary, v.records);
         return 0;
     }
     v.scale = parse_scale(v.summary.at("scale").get<std::string>());
@@ -511,7 +465,9 @@ int verify_experiment(const VerifyOptions& opt) {
     v.where = (opt.out / name).string();
     v.versions = "code: recorded " + recorded_version + ", now " + code_version() +
                  (v.same_version ? " (same: bit for bit)" : " (another version: value by value)");
-    if (v.records.empty()) return verify_whole(v, ctx);
+    if (v.records.empty())
+        throw InputError("verify " + name + ": " + v.where + "/data.h5 stores no sweep points; rerun `granrepro " + name +
+                         " --scale " + to_string(v.scale) + "`");
 
     const json& rec = chosen_point(v);
     PointRerun rerun = point_rerun(v, rec);

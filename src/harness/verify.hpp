@@ -3,10 +3,7 @@
 // --set overrides, seed and scale) and compare it with the stored outcome (data.h5 /points,
 // schema 3). Where every other point of the sweep is stored in full, the experiment then builds
 // its scalars from the recomputed point and the stored others, so a moved value is traced to
-// the scalars and claims that read it. Results without stored points (written before schema 3)
-// are verified by rerunning the whole experiment where that is cheap (brake-failure,
-// emergency-brake: no distributed sweep, under 2 s at paper scale) and refused otherwise
-// ("unverifiable: results written before point storage").
+// the scalars and claims that read it. Results without stored points are refused.
 // Same code version: bit for bit. Another version: value by value, with the differences.
 #pragma once
 #include <filesystem>

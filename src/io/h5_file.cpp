@@ -379,7 +379,7 @@ void H5Object::stamp_schema(const std::string& schema, long version) const {
     attr("schema_version", version);
 }
 
-long H5Object::require_schema(const std::string& schema, long oldest, long newest) const {
+void H5Object::require_schema(const std::string& schema, long want) const {
     std::string found;
     try {
         found = read_string_attr("schema");
@@ -387,10 +387,9 @@ long H5Object::require_schema(const std::string& schema, long oldest, long newes
     }
     if (found != schema) throw std::runtime_error("not a " + schema + " group (schema attribute: '" + found + "')");
     const long version = read_long_attr("schema_version");
-    if (version < oldest || version > newest)
+    if (version != want)
         throw std::runtime_error(schema + ": unsupported schema_version " + std::to_string(version) + " (this build reads " +
-                                 std::to_string(oldest) + (newest > oldest ? " to " + std::to_string(newest) : "") + ")");
-    return version;
+                                 std::to_string(want) + ")");
 }
 
 } // namespace granrepro

@@ -71,9 +71,7 @@ public:
     // Attributes "schema" and "schema_version" name the layout of a group.
     void stamp_schema(const std::string& schema, long version) const;
     // Throws std::runtime_error unless the group carries exactly this schema and version.
-    void require_schema(const std::string& schema, long version) const { require_schema(schema, version, version); }
-    // The same for a reader of several versions; returns the one found.
-    long require_schema(const std::string& schema, long oldest, long newest) const;
+    void require_schema(const std::string& schema, long version) const;
 
 protected:
     hid_t id_ = -1;

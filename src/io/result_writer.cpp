@@ -446,7 +446,7 @@ std::string summary_text(const nlohmann::json& summary) {
 std::vector<std::string> write_compact_result_h5(const std::filesystem::path& src, const std::filesystem::path& dst,
                                                  std::size_t max_values) {
     const H5File in = H5File::open(src.string());
-    in.require_schema("granrepro-result", 1, 3);
+    in.require_schema("granrepro-result", 3);
     H5File out = H5File::create(dst.string());
     // A compact copy of a compact copy (export of paper_figures/): its own omissions carry over
     // into the new listing, the two compaction attributes are written once, below.

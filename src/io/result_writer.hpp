@@ -2,7 +2,7 @@
 // describes every group, dataset and attribute (a test checks it names all that the writer emits):
 //   data.h5       root attributes: schema, schema_version, experiment, paper, scale, seed (uint64),
 //                 code_version, wall_time_s, threads, created_utc, experiment_file (its full text),
-//                 summary_json_hash (version 2: the content hash of summary.json);
+//                 summary_json_hash (the content hash of summary.json);
 //                 /parameters/<name>  scalar (float64, int64, uint8 flag) or 1-D float64 dataset
 //                                     with unit, description; text parameters as attributes
 //                 /scalars/<name>     scalar float64 dataset, attributes unit, description
@@ -12,7 +12,7 @@
 //                                     expected/<experiment>.toml and of the plots/ scripts used
 //                 Links and attributes are created with creation order tracked.
 //   tables/<table>.tsv   the same columns as text: a header line of names, a comment line of units
-//   summary.json  scalars, provenance, claim verdicts and data_h5_hash (version 2)
+//   summary.json  scalars, provenance, claim verdicts and data_h5_hash
 //   run.log       command, resolved parameters, progress, warnings, wall times
 // Tables and scalars are stored in the order the experiment produced them, so the datasets
 // are bit-identical for the same seed and inputs.
@@ -60,7 +60,7 @@ std::string points_hash(const std::string& records_text);
 // spans of the points each computed (start of its first to end of its last), so concurrent
 // shards count once; their serial parts outside points are not known and left out.
 void run_totals(Provenance& prov, const SweepPoints& points, double wall_s, double cpu_s);
-// The stored points of a result file (empty if it has none: written before schema 3), read
+// The stored points of a result file (empty if it has none), read
 // bounded (kMaxPointFileBytes, kMaxJsonDepth); refused (InputError) if they are not an array.
 nlohmann::json read_points_records(const std::filesystem::path& h5);
 // data.h5's /parameters as {name: value} (reals and integers as numbers, flags as booleans, lists

@@ -65,17 +65,4 @@ struct CoulombShear {
     }
 };
 
-// Luding (1998) Eq. (14): viscous shear capped by Coulomb, F = -min(gamma_t |v_S|, mu F_N) sgn(v_S).
-// Reduces to Eq. (12) for mu -> infinity.
-struct CappedViscousShear {
-    double gamma_t = 0.0; // tangential viscous coefficient [kg/s]
-    double mu = 0.0;      // Coulomb cap [1]
-
-    double applied_normal(const NormalForce& f) const { return f.total; }
-    double shear_force(const NormalForce& f, double v_S) const {
-        const double sgn = (v_S > 0.0) - (v_S < 0.0);
-        return -std::fmin(gamma_t * std::abs(v_S), std::abs(mu * f.total)) * sgn;
-    }
-};
-
 } // namespace granrepro

@@ -294,7 +294,7 @@ TEST(HostileReadersParameters, AForgedParameterInBothFilesIsADifferenceForVerify
 TEST(HostileReadersSummary, SchemaVersion99IsRefused) {
     const Crafted c("readers-schema99");
     forge_summary(c.dir(), [](nlohmann::json& s) { s["schema_version"] = 99; });
-    expect_refusal(check(c), 2, {"summary.json", "'schema_version' must be 1, 2 or 3", "found 99"});
+    expect_refusal(check(c), 2, {"summary.json", "'schema_version' must be 3", "found 99"});
 }
 
 TEST(HostileReadersSummary, StoredPointsThatDisagreeWithDataH5AreRefused) {

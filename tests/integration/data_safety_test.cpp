@@ -534,16 +534,6 @@ TEST(DataSafety, CheckRefusesOneSidedEdits) {
     EXPECT_EQ(run("check brake-failure --out " + exported.string()).code, 0);
 }
 
-// Results written before the hashes (schema_version 1) still check, and say that they are
-// unverified. The fixture is paper_figures/brake-failure as committed before hashes (at 16f280e); claims added since are missing from it, so check may fail a claim (exit 1) but must
-// neither refuse the folder (exit 2) nor call it tampered (exit 3).
-TEST(DataSafety, CheckAcceptsResultsWrittenBeforeHashesAsUnverified) {
-    const Outcome o = run("check brake-failure --out " + std::string(GRANREPRO_SOURCE_DIR) + "/tests/data/pre-hash-results");
-    EXPECT_TRUE(o.code == 0 || o.code == 1) << o.code << ": " << o.err;
-    EXPECT_NE(o.out.find("check brake-failure (paper scale)\n  unverified: written before hashes"), std::string::npos)
-        << o.out;
-}
-
 // A modified run's table names its overrides, in the run's output and in `check`'s.
 TEST(DataSafety, CheckTableNamesTheOverrides) {
     const TempPath out("check-overrides");

@@ -1,7 +1,6 @@
 // `granrepro verify` (issue 29 item 2): a stored sweep point reruns bit for bit; a stored value
 // that differs from what the code computes is named (with the scalars and claims it moves);
-// results written before point storage are verified whole where that is cheap and refused
-// ("unverifiable") otherwise; bad input is one line, exit 2.
+// bad input is one line, exit 2.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -51,20 +50,6 @@ void edit_point(const fs::path& dir, long k, Edit edit) {
         g.compressed_text("records", text);
         s["data_h5_hash"]["points"] = points_hash(text);
     }
-    rewrite_summary(dir, s);
-}
-
-// The results as a writer before point storage left them: no /points, schema_version 2.
-void strip_points(const fs::path& dir) {
-    nlohmann::json s = summary(dir);
-    {
-        const H5Object f = open_for_edit(dir / "data.h5");
-        ASSERT_GE(H5Ldelete(f.id(), "points", H5P_DEFAULT), 0);
-        ASSERT_GE(H5Adelete(f.id(), "schema_version"), 0);
-        f.attr("schema_version", 2L);
-    }
-    s["schema_version"] = 2;
-    s["data_h5_hash"].erase("points");
     rewrite_summary(dir, s);
 }
 
@@ -135,31 +120,6 @@ TEST(Verify, AStoredValueTheCodeDoesNotComputeIsNamed) {
     EXPECT_EQ(sc.code, 1) << sc.out << sc.err;
     EXPECT_NE(sc.out.find("/e_N_measured"), std::string::npos) << sc.out;
     EXPECT_NE(sc.out.find("claims reading them"), std::string::npos) << sc.out;
-}
-
-// Results written before point storage: a cheap experiment (no distributed sweep) is rerun whole;
-// a sweeping one is refused with the line the CI test of paper_figures/ looks for.
-TEST(Verify, ResultsWithoutStoredPoints) {
-    const TempPath out("verify-old");
-    ASSERT_EQ(run(kQuickBrake + out.string()).code, 0);
-    strip_points(out / "brake-failure");
-    ASSERT_EQ(run("check brake-failure --out " + out.string()).code, 0);
-    const Outcome whole = run("verify brake-failure --out " + out.string());
-    EXPECT_EQ(whole.code, 0) << whole.out << whole.err;
-    EXPECT_NE(whole.out.find("the whole experiment"), std::string::npos) << whole.out;
-    EXPECT_NE(whole.out.find("tables bit for bit identical"), std::string::npos) << whole.out;
-    expect_one_line_exit(run("verify brake-failure --point 1 --out " + out.string()), 2,
-                         {"unverifiable: results written before point storage"});
-
-    ASSERT_LE(run("impact-parameter --quiet --scale quick --out " + out.string()).code, 1);
-    strip_points(out / "impact-parameter");
-    ASSERT_LE(run("check impact-parameter --out " + out.string()).code, 1);
-    expect_one_line_exit(run("verify impact-parameter --out " + out.string()), 2,
-                         {"verify impact-parameter: unverifiable: results written before point storage",
-                          "schema_version 2", "--scale quick"});
-    const Outcome listed = run("verify impact-parameter --list --out " + out.string());
-    EXPECT_EQ(listed.code, 0);
-    EXPECT_NE(listed.out.find("no stored points"), std::string::npos) << listed.out;
 }
 
 TEST(Verify, BadInputIsOneLineExitTwo) {

@@ -1,5 +1,6 @@
 // ED engine: event search against brute force, conservation laws, TC model, walls, gravity,
 // collapse detection and checkpoint/restart.
+#include "calendar_queue.hpp"
 #include "engines/ed/flight_roots.hpp"
 #include "gas.hpp"
 #include "saved_states.hpp"

@@ -1,6 +1,7 @@
-// Both event queues against a brute-force minimum over (time, id), in an ED-like access pattern.
+// The event queues (the binary heap the engine uses, a 4-ary heap and the test-only calendar
+// queue of tests/support) against a brute-force minimum over (time, id), in an ED-like access pattern.
+#include "calendar_queue.hpp"
 #include "engines/ed/dary_heap_queue.hpp"
-#include "engines/ed/calendar_queue.hpp"
 
 #include <cmath>
 #include <gtest/gtest.h>
@@ -10,7 +11,7 @@
 
 template <class Q>
 class EdEventQueue : public ::testing::Test {};
-using QueueTypes = ::testing::Types<granrepro::BinaryHeapQueue, granrepro::QuaternaryHeapQueue, granrepro::CalendarQueue>;
+using QueueTypes = ::testing::Types<granrepro::BinaryHeapQueue, granrepro::DaryHeapQueue<4>, granrepro::CalendarQueue>;
 TYPED_TEST_SUITE(EdEventQueue, QueueTypes);
 
 TYPED_TEST(EdEventQueue, TopIsMinimumOverTimeAndId) {

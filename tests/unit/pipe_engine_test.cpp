@@ -1,12 +1,10 @@
-// The many-body pipe engine: neighbour list against the O(N^2) reference on the same state,
-// results independent of the thread count, and two-grain collisions against Eq. (4).
+// The many-body pipe engine: neighbour list against the O(N^2) reference on the same state, and
+// two-grain collisions against Eq. (4).
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <utility>
 #include <vector>
 
-#include "saved_states.hpp"
 #include "scenarios/pipe_setup.hpp"
 
 using namespace granrepro;
@@ -26,10 +24,9 @@ PipeSpec hot_pipe() {
     return s;
 }
 
-void expect_list_forces_equal_brute_force(int threads) {
+TEST(PipeEngine, NeighbourListForcesEqualBruteForce) {
     const PipeSpec s = hot_pipe();
     auto eng = build_pipe(s);
-    eng.set_threads(threads);
     for (int k = 0; k < 3000; ++k) eng.step();
     ASSERT_GT(eng.list_builds(), 5);
     ASSERT_GT(eng.max_overlap_ratio(), 0.0); // there are contacts
@@ -42,46 +39,6 @@ void expect_list_forces_equal_brute_force(int threads) {
     }
     ASSERT_GT(scale, 100.0); // contact accelerations much larger than g
     EXPECT_LT(worst / scale, 1e-12);
-}
-
-TEST(PipeEngine, NeighbourListForcesEqualBruteForce) { expect_list_forces_equal_brute_force(1); }
-TEST(PipeEngine, NeighbourListForcesEqualBruteForceWithThreads) { expect_list_forces_equal_brute_force(2); }
-
-// What a run leaves that must not depend on the thread count.
-struct PipeRun {
-    std::vector<double> x, y, vx, vy;
-    WallImpactStats wall; // compared as a whole, bit for bit
-    long builds;
-    template <class V>
-    void fields(V&& v) {
-        v("x", x), v("y", y), v("vx", vx), v("vy", vy), v("wall", wall), v("builds", builds);
-    }
-};
-
-// Determinism: the state and the wall statistics after many steps (list rebuilds, re-sorts,
-// wall impacts) are the same bits for 1, 2 and 3 threads, and when the thread count changes
-// in the middle of a run.
-TEST(PipeEngine, ResultsBitIdenticalForAnyThreadCount) {
-    PipeSpec s;
-    s.geo.wall_spacing = 1.0e-3;
-    s.geo.length = 0.03;
-    s.e_N = 0.8;
-    s.v0 = 2.0;
-    auto run = [&](int first, int second) {
-        auto eng = build_pipe(s);
-        eng.set_threads(first);
-        eng.advance(3000);
-        eng.set_threads(second);
-        for (int k = 0; k < 3000; ++k) eng.step();
-        return PipeRun{eng.x(), eng.y(), eng.vx(), eng.vy(), eng.wall_stats(), eng.list_builds()};
-    };
-    const PipeRun one = run(1, 1);
-    ASSERT_GT(one.builds, 20);
-    ASSERT_GT(one.wall.completed, 20);
-    for (auto [a, b] : {std::pair{2, 2}, std::pair{3, 3}, std::pair{1, 2}, std::pair{2, 1}}) {
-        SCOPED_TRACE(std::to_string(a) + " then " + std::to_string(b) + " threads");
-        test::expect_same_fields(run(a, b), one);
-    }
 }
 
 // Head-on free-free collisions in the middle of the pipe (gravity off), with the contact starting

@@ -1,6 +1,6 @@
 // The pipe's wall-impact meter (src/engines/soft/wall_impact_meter.hpp) on its own, fed steps by
 // hand: the Δv_y of Eq. (9) of Schäfer & Wolf as the wall impulse over the mass, when an impact
-// begins and ends, and the sums independent of which thread met which grain.
+// begins and ends, and the sums independent of which slot holds which grain.
 #include "engines/soft/wall_impact_meter.hpp"
 
 #include <gtest/gtest.h>
@@ -13,21 +13,21 @@ using namespace granrepro;
 namespace {
 
 // Stands in for the engine: grains in slots (slot = id unless moved), velocities at touch, and one
-// step of one thread as the engine reports it (near list and marks).
+// step as the engine reports it (near list and marks).
 struct Grains {
     std::vector<int> id;
     std::vector<double> inv_mass, vx, vy;
     explicit Grains(std::size_t n, double mass) : inv_mass(n, 1.0 / mass), vx(n, 0.0), vy(n, 0.0) {
         for (std::size_t i = 0; i < n; ++i) id.push_back(int(i));
     }
-    // A step of thread tid in which the slots `touching` touch a wall grain and `near` are near a
+    // A step in which the slots `touching` touch a wall grain and `near` are near a
     // wall without touching; every other slot is away from the walls.
-    void step(WallImpactMeter& m, int tid, const std::set<int>& touching, const std::set<int>& near = {}) {
+    void step(WallImpactMeter& m, const std::set<int>& touching, const std::set<int>& near = {}) {
         std::vector<unsigned char> mark(id.size(), 0);
         std::vector<int> list;
         for (int i : near) mark[std::size_t(i)] = 1, list.push_back(i);
         for (int i : touching) mark[std::size_t(i)] = 2, list.push_back(i);
-        m.step(tid, true, list.data(), list.size(), mark.data(), id.data(), inv_mass.data(),
+        m.step(true, list.data(), list.size(), mark.data(), id.data(), inv_mass.data(),
                [&](std::size_t i) { return WallImpactMeter::Velocity{vx[i], vy[i]}; });
     }
 };
@@ -47,10 +47,10 @@ TEST(WallImpactMeter, ConstantWallForceGivesImpulseOverMass) {
     Grains g(1, mass);
     for (int s = 0; s < k; ++s) {
         m.add_impulse(0, fy * dt); // (two wall grains would call twice)
-        g.step(m, 0, {0});
+        g.step(m, {0});
         m.end_step(dt);
     }
-    g.step(m, 0, {}, {0}); // still near the wall, no longer touching: the impact ends
+    g.step(m, {}, {0}); // still near the wall, no longer touching: the impact ends
     m.end_step(dt);
     const WallImpactStats& w = m.stats();
     EXPECT_EQ(w.impacts, 1);
@@ -66,54 +66,51 @@ TEST(WallImpactMeter, ImpactBeginsWhenTouchingStartsAndEndsWhenItStops) {
     const double dt = 1e-5;
     WallImpactMeter m = meter_of(1);
     Grains g(1, 1e-6);
-    g.step(m, 0, {}, {0}); // approaching
+    g.step(m, {}, {0}); // approaching
     m.end_step(dt);
     EXPECT_EQ(m.stats().impacts, 0);
     g.vx[0] = -0.4, g.vy[0] = -1.5;
-    g.step(m, 0, {0});
+    g.step(m, {0});
     m.end_step(dt);
     EXPECT_EQ(m.stats().impacts, 1);
     EXPECT_EQ(m.stats().completed, 0);
     g.vx[0] = 0.2, g.vy[0] = 0.7; // bounced: these are not the incoming velocities
-    g.step(m, 0, {0});
+    g.step(m, {0});
     m.end_step(dt);
-    g.step(m, 0, {}); // gone from the wall in one step
+    g.step(m, {}); // gone from the wall in one step
     m.end_step(dt);
     EXPECT_EQ(m.stats().impacts, 1);
     EXPECT_EQ(m.stats().completed, 1);
     EXPECT_EQ(m.stats().sum_vx_in, 0.4);
     EXPECT_EQ(m.stats().sum_vy_in, 1.5);
 
-    g.step(m, 0, {0}); // a second impact, begun before the reset, ends after it
+    g.step(m, {0}); // a second impact, begun before the reset, ends after it
     m.end_step(dt);
     m.reset_stats();
     EXPECT_EQ(m.stats().impacts, 0);
     EXPECT_EQ(m.stats().completed, 0);
     EXPECT_EQ(m.stats().sum_vy_in, 0.0);
     EXPECT_EQ(m.stats().time, 0.0);
-    g.step(m, 0, {}, {0});
+    g.step(m, {}, {0});
     m.end_step(dt);
     EXPECT_EQ(m.stats().impacts, 0);
     EXPECT_EQ(m.stats().completed, 1);
     EXPECT_EQ(m.stats().sum_vx_in, 0.2);
 }
 
-// Impacts completed in the same step are added in id order, whichever thread met them: Δv_y of
+// Impacts completed in the same step are added in id order, whatever slots hold them: Δv_y of
 // 1e16, -1e16 and 1 (ids 0, 1, 2) sum to 1 in id order, to 0 with id 2 first (1 + 1e16 rounds to
-// 1e16). Thread 0 holds id 2 here, thread 1 ids 0 and 1.
-TEST(WallImpactMeter, CompletionsAddInIdOrderWhateverThreadHoldsThem) {
+// 1e16). Slot 0 holds id 2 here, slots 1 and 2 ids 0 and 1.
+TEST(WallImpactMeter, CompletionsAddInIdOrderWhateverSlotHoldsThem) {
     WallImpactMeter m = meter_of(3);
-    m.set_threads(2);
     Grains g(3, 1.0);
-    g.id = {2, 0, 1}; // slot 0 is id 2 (thread 0), slots 1, 2 are ids 0, 1 (thread 1)
-    g.step(m, 0, {0});
-    g.step(m, 1, {1, 2});
+    g.id = {2, 0, 1};
+    g.step(m, {0, 1, 2});
     m.end_step(1.0);
     m.add_impulse(0, 1e16);
     m.add_impulse(1, -1e16);
     m.add_impulse(2, 1.0);
-    g.step(m, 0, {});
-    g.step(m, 1, {});
+    g.step(m, {});
     m.end_step(1.0);
     EXPECT_EQ(m.stats().impacts, 3);
     EXPECT_EQ(m.stats().completed, 3);

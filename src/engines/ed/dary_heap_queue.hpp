@@ -113,6 +113,5 @@ private:
 };
 
 using BinaryHeapQueue = DaryHeapQueue<2>;
-using QuaternaryHeapQueue = DaryHeapQueue<4>;
 
 } // namespace granrepro

@@ -9,7 +9,6 @@
 #pragma once
 #include "core/input_error.hpp"
 #include "core/interrupt.hpp"
-#include "engines/ed/calendar_queue.hpp"
 #include "engines/ed/dary_heap_queue.hpp"
 #include "engines/ed/ed_cell_grid.hpp"
 #include "engines/ed/ed_collision_operator.hpp"

@@ -70,7 +70,6 @@ public:
     // gravity they add up to the grain's velocity change (Eq. (6) asks for the shear part).
     Vec2 shear_dv(int i) const { return i < int(shear_dv_.size()) ? shear_dv_[std::size_t(i)] : Vec2{}; }
     Vec2 normal_dv(int i) const { return i < int(normal_dv_.size()) ? normal_dv_[std::size_t(i)] : Vec2{}; }
-    long substeps() const { return substeps_; }
 
     // Advance by one time step dt.
     void step() {
@@ -83,7 +82,6 @@ public:
             collect_candidates(remaining);
             trial_ = grains_;
             rk4(trial_, remaining, state_trial_);
-            ++substeps_;
             double first = remaining;
             int which = -1;
             for (std::size_t c = 0; c < candidates_.size(); ++c) {
@@ -119,18 +117,6 @@ public:
             if (!std::isfinite(g.r.x) || !std::isfinite(g.r.y) || !std::isfinite(g.v.x) || !std::isfinite(g.v.y))
                 throw std::runtime_error("few-body engine: the grains' positions or velocities are no longer finite after " +
                                          std::to_string(steps_) + " steps; the time step does not resolve the contact forces");
-    }
-
-    // Total force on free grain i from contacts with the current set of touching pairs [N].
-    // (Used by tests; the integrator calls the same code through accelerations().)
-    Vec2 contact_force_on(int i) const {
-        Vec2 f{};
-        for (std::size_t c = 0; c < active_.size(); ++c) {
-            const auto [fn, fs] = pair_forces(grains_, c, state_.data());
-            if (active_[c].i == i) f += fn + fs;
-            else if (active_[c].partner.kind == Partner::Kind::Free && active_[c].partner.index == i) f -= fn + fs;
-        }
-        return f;
     }
 
 private:
@@ -335,7 +321,6 @@ private:
     double dt_;
     Vec2 gravity_;
     double t_ = 0.0;
-    long substeps_ = 0;
     unsigned long steps_ = 0; // counts step() calls for the pause point
     std::vector<SoftGrain> grains_;
     std::vector<FixedGrain> fixed_;

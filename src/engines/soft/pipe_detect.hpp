@@ -1,6 +1,6 @@
 // The contact test of the pipe engine (pipe_engine.hpp): for each listed pair (slots i, j), does
 // it touch, !(d^2 >= (r_i + r_j)^2) with the periodic minimum image along y? A touching pair
-// yields its list entries k and mirror (k once when mirror == k).
+// yields its list entries k and mirror.
 //
 // One pair at a time. (Four pairs per AVX2 instruction, with gathered positions and the minimum
 // image by bit masks, took 40 % fewer instructions but 10 % more time: the gathers of six
@@ -10,7 +10,7 @@
 
 namespace granrepro::pipe_detail {
 
-// The pairs one thread tests, as parallel arrays.
+// The pairs to test, as parallel arrays.
 struct PairList {
     const int *i, *j, *k, *mirror;
     std::size_t n;
@@ -33,7 +33,7 @@ inline std::size_t detect(const PairList& pl, const GrainArrays& g, int* hits) {
         const double rs = g.r[i] + g.r[j];
         if (!(dx * dx + dy * dy >= rs * rs)) {
             hits[nh++] = pl.k[p];
-            if (pl.mirror[p] != pl.k[p]) hits[nh++] = pl.mirror[p];
+            hits[nh++] = pl.mirror[p];
         }
     }
     return nh;

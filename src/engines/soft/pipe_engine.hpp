@@ -13,27 +13,27 @@
 // Neighbours: a full Verlet list (every pair in both grains' lists) from linked cells, rebuilt
 // when any grain has moved more than skin/2 relative to the mean displacement since the last
 // build, so every step costs O(N). At each build the grains are re-sorted into cell order, so
-// that neighbours are near in memory and a thread's share of the grains is a slab of the pipe.
+// that neighbours are near in memory.
 // A step: (1) accelerations from the last force sums, the last step's closing half kick (kept
 // pending so that it shares this pass), this step's half kick and drift of every grain, noting
-// the grains near a wall; (2) contact test of each listed pair, once per pair (by both threads
-// if its grains belong to two), listing the entries of the pairs in contact (pipe_detect.hpp);
-// (3) forces of those entries, grain by grain in list order; (4) the wall rows, for the
-// grains near a wall; (5) the wall-impact meter (wall_impact_meter.hpp) notes the grains that
-// touch or touched a wall.
+// the grains near a wall; (2) contact test of each listed pair, once per pair, listing the
+// entries of the pairs in contact (pipe_detect.hpp); (3) forces of those entries, grain by
+// grain in list order; (4) the wall rows, for the grains near a wall; (5) the wall-impact meter
+// (wall_impact_meter.hpp) notes the grains that touch or touched a wall.
 // (1) runs several grains per instruction (pipe_drift.hpp); contacts and wall grains are the
 // only scalar work per grain.
 //
 // Determinism. Grains keep the index they were added with ("id"); every accessor speaks ids.
 // The force on grain I is summed in an order fixed by ids and by the cell grid at the last build,
-// never by memory order or thread: first its partners J < I in increasing J, then (a separate
+// never by memory order: first its partners J < I in increasing J, then (a separate
 // sum, added to the first) its partners J > I in the order of the cells (row below, same row, row
 // above; left to right) and increasing J within a cell, then the wall grains. (This is the order
 // of the half-list engine this one replaced, so its trajectories are reproduced bit for bit.)
-// Each grain computes its own pair forces, so no sum depends on another thread; a pair's force
-// is computed twice, with bit-identical magnitude (the pair law is antisymmetric in floating
-// point, see contact()). The rebuild test uses the mean displacement summed in id order, and
-// wall-impact sums run in id order. Hence results are bit-identical for any thread count.
+// Each grain computes its own pair forces; a pair's force is computed twice, with bit-identical
+// magnitude (the pair law is antisymmetric in floating point, see contact()). The rebuild test
+// uses the mean displacement summed in id order, and wall-impact sums run in id order.
+// (One thread: sharing a step between two threads was 0.72x as fast as one core on a 2-core
+// machine, so the engine has none.)
 //
 // Template parameters: NormalLaw::normal_force(xi, xi_dot, m_red) -> NormalForce;
 // ShearLaw::applied_normal(NormalForce) and ShearLaw::shear_force(NormalForce, v_S).
@@ -42,16 +42,13 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
-#include <functional>
 #include <limits>
-#include <memory>
 #include <stdexcept>
 #include <vector>
 
 #include "core/interrupt.hpp"
 #include "engines/soft/pipe_detect.hpp"
 #include "engines/soft/pipe_drift.hpp"
-#include "engines/soft/spin_team.hpp"
 #include "engines/soft/wall_impact_meter.hpp"
 #include "models/normal_force.hpp"
 #include "models/stateful_shear.hpp"
@@ -91,22 +88,6 @@ public:
         ++version_;
     }
 
-    // Threads that share each step (1 = none). Any count gives bit-identical results.
-    void set_threads(int threads) {
-        threads = std::max(1, threads);
-        if (threads == threads_) return;
-        threads_ = threads;
-        team_.reset();
-        if (threads > 1) team_ = std::make_unique<SpinTeam>(threads);
-        Scratch carried;
-        carried.kick_pending = scratch_[0].kick_pending;
-        carried.cprev_x = scratch_[0].cprev_x, carried.cprev_y = scratch_[0].cprev_y;
-        scratch_.assign(std::size_t(threads), carried);
-        wall_meter_.set_threads(threads);
-        if (!need_build_) run_all([&](int tid) { thread_lists(tid, false); });
-    }
-    int threads() const { return threads_; }
-
     std::size_t size() const { return x_.size(); }
     const NormalLaw& normal_law() const { return normal_; }
     const ShearLaw& shear_law() const { return shear_; }
@@ -121,7 +102,6 @@ public:
     }
     long steps() const { return steps_; }
     long list_builds() const { return builds_; }
-    long exact_rebuild_tests() const { return exact_tests_; }
     // Per-grain arrays in id order (the order grains were added).
     // (A step ends with its closing half kick pending: the next step's drift applies it, and
     // these accessors add it, with the same operations.)
@@ -150,11 +130,13 @@ public:
               nb_j_.capacity() + cell_of_.capacity() + cell_x_.capacity() + cell_y_.capacity() + order_.capacity() +
               cell_col_.capacity() + cell_row_.capacity() + cell_start_.capacity()) * sizeof(int);
         b += nb_mirror_.capacity() * sizeof(int);
-        for (const Scratch& s : scratch_)
+        {
+            const Scratch& s = scratch_;
             b += (s.low.capacity() + s.high.capacity() + s.found.capacity() + s.cell_count.capacity() +
                   s.owners.capacity() + s.pi.capacity() + s.pj.capacity() + s.pk.capacity() +
                   s.pm.capacity()) * sizeof(int) +
                  (s.partners.capacity() + s.counts.capacity() + s.hits.capacity() + s.near.capacity()) * sizeof(int);
+        }
         b += wall_meter_.bytes() + near_mark_.capacity();
         b += (fx_.capacity() + fy_.capacity()) * sizeof(double);
         for (const auto& o : out_) b += o.second.capacity() * sizeof(double);
@@ -207,14 +189,12 @@ public:
         advance(1);
     }
 
-    // `steps` time steps; the same as calling step() that often, with one hand-off to the threads.
+    // `steps` time steps; the same as calling step() that often.
     void advance(long steps) {
         if (need_build_) throw std::logic_error("PipeEngine: call finalize() after adding grains");
         if (steps <= 0) return;
         ++version_;
-        run_all([&](int tid) {
-            for (long s = 0; s < steps; ++s) one_step(tid);
-        });
+        for (long s = 0; s < steps; ++s) one_step();
     }
 
     // Must be called once after all grains are added (sizes the per-grain scratch arrays).
@@ -252,26 +232,23 @@ public:
         cell_x_.resize(n);
         cell_y_.resize(n);
         nb_start_.resize(n + 1);
-        for (auto& s : scratch_) s = Scratch{};
-        wall_meter_.set_threads(threads_);
+        scratch_ = Scratch{};
         need_build_ = false;
         ++version_;
         // The first list and forces, as a step would compute them, without kicks or wall impacts
         // begun or ended (the wall impulse of this evaluation is kept, as it always was).
-        run_all([&](int tid) {
-            rebuild(tid);
-            find_near(tid);
-            detect(tid);
-            forces(tid);
-            meter_walls(tid, false);
-        });
+        rebuild();
+        find_near();
+        detect();
+        forces();
+        meter_walls(false);
         finish_step_stats(false);
         wall_meter_.reset_stats();
     }
 
 private:
-    // ---- per-thread state --------------------------------------------------------------------
-    struct alignas(64) Scratch {
+    // ---- per-step state and scratch ----------------------------------------------------------
+    struct Scratch {
         double sum_x = 0, sum_y = 0, max_q = 0; // rebuild-test partials of this step
         double cprev_x = 0, cprev_y = 0;        // mean displacement of the last step
         bool kick_pending = false;              // the last step's closing half kick is still to come
@@ -279,12 +256,10 @@ private:
         bool band_holds = false;                // near_from_band() is exact this step
         double worst = 0;
         std::vector<int> low, high, found; // list-build scratch
-        std::vector<int> cell_count;       // grains per cell in this thread's share, then where they go
-        std::vector<int> partners, owners, counts; // this thread's list entries (partner, owner slots) and the
-                                                   // entries before each of its grains
-        std::size_t list_offset = 0;       // where they start in the whole list
-        // The pairs this thread tests: slots pi < pj (or pj another thread's grain), list entries
-        // pk = pi -> pj and pm = pj -> pi (pk again when pj is another thread's).
+        std::vector<int> cell_count;       // grains per cell, then where they go
+        std::vector<int> partners, owners, counts; // the list entries (partner, owner slots) and the
+                                                   // entries before each grain
+        // The pairs tested: slots pi < pj, list entries pk = pi -> pj and pm = pj -> pi.
         std::vector<int> pi, pj, pk, pm;
         std::vector<int> hits;             // list entries in contact this step (nhits of them)
         std::size_t nhits = 0;
@@ -292,15 +267,6 @@ private:
         std::vector<int> band;             // slots that can come near a wall before the next build
         std::size_t near_count = 0;
     };
-
-    template <class Job>
-    void run_all(Job&& job) {
-        if (threads_ == 1) job(0);
-        else team_->run(job);
-    }
-
-    std::size_t begin_of(int tid) const { return x_.size() * std::size_t(tid) / std::size_t(threads_); }
-    std::size_t end_of(int tid) const { return x_.size() * std::size_t(tid + 1) / std::size_t(threads_); }
 
     double wrap(double y) const {
         y = std::fmod(y, geo_.length);
@@ -323,48 +289,40 @@ private:
         }
         return out.second;
     }
-    bool kick_pending() const { return scratch_[0].kick_pending; }
+    bool kick_pending() const { return scratch_.kick_pending; }
     double accel_x(std::size_t i) const { return fx_[i] * inv_mass_[i]; }
     double accel_y(std::size_t i) const { return fy_[i] * inv_mass_[i] - geo_.gravity; }
 
     // ---- one step --------------------------------------------------------------------------
-    void one_step(int tid) {
-        drift(tid);
-        sync();
-        if (must_rebuild(tid)) {
-            rebuild(tid);
-            find_near(tid);
-        } else if (scratch_[std::size_t(tid)].band_holds) {
-            near_from_band(tid);
+    void one_step() {
+        drift();
+        if (must_rebuild()) {
+            rebuild();
+            find_near();
+        } else if (scratch_.band_holds) {
+            near_from_band();
         } else {
-            find_near(tid);
+            find_near();
         }
-        detect(tid);
-        forces(tid);
-        meter_walls(tid, true);
-        sync();
-        if (tid == 0) {
-            finish_step_stats(true);
-            t_ += dt_;
-            dt_closing_ = dt_;
-            ++steps_;
-        }
-    }
-
-    void sync() {
-        if (team_) team_->barrier();
+        detect();
+        forces();
+        meter_walls(true);
+        finish_step_stats(true);
+        t_ += dt_;
+        dt_closing_ = dt_;
+        ++steps_;
     }
 
     // Accelerations from the last force sums (clearing them), the last step's closing half kick,
     // this step's half kick, drift, periodic wrap, predicted velocity; partial sums for the
     // rebuild test (pipe_drift.hpp: several grains per instruction, bit-identical).
-    void drift(int tid) {
-        Scratch& s = scratch_[std::size_t(tid)];
+    void drift() {
+        Scratch& s = scratch_;
         const pipe_detail::DriftArrays a{x_.data(), y_.data(), vx_.data(), vy_.data(), vpx_.data(), vpy_.data(),
                                          dispx_.data(), dispy_.data(), fx_.data(), fy_.data(), inv_mass_.data(),
                                          0.5 * dt_, dt_, geo_.length, geo_.gravity, 0.5 * dt_closing_, s.cprev_x, s.cprev_y};
-        const pipe_detail::DriftSums sums = s.kick_pending ? pipe_detail::drift<true>(a, begin_of(tid), end_of(tid))
-                                                           : pipe_detail::drift<false>(a, begin_of(tid), end_of(tid));
+        const pipe_detail::DriftSums sums = s.kick_pending ? pipe_detail::drift<true>(a, 0, x_.size())
+                                                           : pipe_detail::drift<false>(a, 0, x_.size());
         s.sum_x = sums.sx;
         s.sum_y = sums.sy;
         s.max_q = sums.qmax;
@@ -375,8 +333,8 @@ private:
     // no grain has moved more than skin/2 from the mean displacement c since then, so a grain
     // outside the band is farther than its reach from both walls while |c_x| stays below the
     // band's margin (must_rebuild() checks).
-    void near_from_band(int tid) {
-        Scratch& s = scratch_[std::size_t(tid)];
+    void near_from_band() {
+        Scratch& s = scratch_;
         std::size_t nn = 0;
         for (int k : s.band) {
             const std::size_t i = std::size_t(k);
@@ -388,10 +346,10 @@ private:
     double band_margin() const { return skin_; }
 
     // The grains near a wall, by a scan.
-    void find_near(int tid) {
-        Scratch& s = scratch_[std::size_t(tid)];
+    void find_near() {
+        Scratch& s = scratch_;
         std::size_t nn = 0;
-        for (std::size_t i = begin_of(tid), e = end_of(tid); i < e; ++i) {
+        for (std::size_t i = 0, e = x_.size(); i < e; ++i) {
             const double reach = rad_[i] + geo_.wall_radius;
             if (x_[i] < reach || x_[i] > geo_.width - reach) s.near[nn++] = int(i);
         }
@@ -405,22 +363,20 @@ private:
     //
     // The decision is that of the rule evaluated with c summed in id order (as the engine always
     // did; a different rounding of c could move a rebuild by a step and change the force sums'
-    // order). It is mostly settled from the threads' partial sums: with c' their mean, c_prev
-    // the previous step's c' and Q = max_i |u_i - c_prev|^2, every |u_i - c| lies within
+    // order). It is mostly settled from the drift's sums (in slot order): with c' their mean,
+    // c_prev the previous step's c' and Q = max_i |u_i - c_prev|^2, every |u_i - c| lies within
     // sqrt(Q) + |c' - c_prev| + delta, where delta bounds |c - c'| from summation rounding
     // (2 n eps max|u| per component, max|u| <= sqrt(Q) + |c_prev|). Only when lim falls inside
     // that bracket (in practice the step before a rebuild, or never) is the rule evaluated
     // exactly, in id order.
-    bool must_rebuild(int tid) {
+    bool must_rebuild() {
         const std::size_t n = x_.size();
         if (n == 0) return false;
-        double sx = 0, sy = 0, qmax = 0;
-        for (const Scratch& s : scratch_) {
-            sx += s.sum_x;
-            sy += s.sum_y;
-            qmax = std::max(qmax, s.max_q);
-        }
-        Scratch& mine = scratch_[std::size_t(tid)];
+        Scratch& mine = scratch_;
+        double sx = 0, sy = 0, qmax = 0; // (0 + sum and max(0, q): the same bits as ever)
+        sx += mine.sum_x;
+        sy += mine.sum_y;
+        qmax = std::max(qmax, mine.max_q);
         const double cx = sx / double(n), cy = sy / double(n);
         const double lim = 0.25 * skin_ * skin_;
         const double shift = std::sqrt((cx - mine.cprev_x) * (cx - mine.cprev_x) + (cy - mine.cprev_y) * (cy - mine.cprev_y));
@@ -435,9 +391,8 @@ private:
         else if (std::isfinite(cx) && std::isfinite(cy) && std::isfinite(hi) && lo * lo * (1 - slack) > lim)
             rebuild_now = true;
         else {
-            // Undecided (or not finite): every thread evaluates the exact rule (the same answer).
+            // Undecided (or not finite): the exact rule.
             rebuild_now = moved_too_far_exact();
-            if (tid == 0) ++exact_tests_;
         }
         mine.cprev_x = rebuild_now ? 0.0 : cx;
         mine.cprev_y = rebuild_now ? 0.0 : cy;
@@ -463,67 +418,52 @@ private:
     }
 
     // ---- neighbour list ------------------------------------------------------------------
-    // Re-sorts the grains into cell order (thread 0 sorts, all move their share), then every
-    // thread lists its grains' partners within r_i + r_j + skin: partners with smaller id first,
-    // in increasing id, then those with larger id in cell order (see the header comment). The
-    // cells are those of range = 2 r_max + skin, as always; the cut-off per pair is tighter
-    // (a pair farther apart than r_i + r_j + skin cannot touch before the next build).
-    void rebuild(int tid) {
+    // Re-sorts the grains into cell order, then lists each grain's partners within
+    // r_i + r_j + skin: partners with smaller id first, in increasing id, then those with larger
+    // id in cell order (see the header comment). The cells are those of range = 2 r_max + skin,
+    // as always; the cut-off per pair is tighter (a pair farther apart than r_i + r_j + skin
+    // cannot touch before the next build).
+    void rebuild() {
         const std::size_t n = x_.size();
         const std::size_t ncell = std::size_t(cells_x_) * std::size_t(cells_y_);
-        const std::size_t b = begin_of(tid), e = end_of(tid);
-        Scratch& s = scratch_[std::size_t(tid)];
-        // A counting sort by cell, shared by the threads: each counts its share, thread 0 turns
-        // the counts into offsets (cell by cell, thread by thread: a stable sort), each places
-        // its share, then sorts by id the cells that start in its share.
+        Scratch& s = scratch_;
+        ++builds_;
+        // A counting sort by cell (stable), then by id within a cell.
         s.cell_count.assign(ncell, 0);
-        for (std::size_t i = b; i < e; ++i) {
+        for (std::size_t i = 0; i < n; ++i) {
             const int ix = std::clamp(int(x_[i] / cell_w_), 0, cells_x_ - 1);
             const int iy = std::clamp(int(y_[i] / cell_h_), 0, cells_y_ - 1);
             cell_of_[i] = iy * cells_x_ + ix;
             ++s.cell_count[std::size_t(cell_of_[i])];
         }
-        sync();
-        if (tid == 0) {
-            ++builds_;
-            int total = 0;
-            for (std::size_t c = 0; c < ncell; ++c) {
-                cell_start_[c] = total;
-                for (Scratch& t : scratch_) {
-                    const int count = t.cell_count[c];
-                    t.cell_count[c] = total;
-                    total += count;
-                }
-            }
-            cell_start_[ncell] = total;
+        int total = 0;
+        for (std::size_t c = 0; c < ncell; ++c) {
+            cell_start_[c] = total;
+            const int count = s.cell_count[c];
+            s.cell_count[c] = total;
+            total += count;
         }
-        sync();
-        for (std::size_t i = b; i < e; ++i) order_[std::size_t(s.cell_count[std::size_t(cell_of_[i])]++)] = int(i);
-        sync();
+        cell_start_[ncell] = total;
+        for (std::size_t i = 0; i < n; ++i) order_[std::size_t(s.cell_count[std::size_t(cell_of_[i])]++)] = int(i);
         // Within a cell by id (the cells were sorted at the last build, so this is nearly so).
-        {
-            const std::size_t c0 = std::size_t(std::lower_bound(cell_start_.begin(), cell_start_.end() - 1, int(b)) - cell_start_.begin());
-            const std::size_t c1 = std::size_t(std::lower_bound(cell_start_.begin(), cell_start_.end() - 1, int(e)) - cell_start_.begin());
-            for (std::size_t c = c0; c < c1; ++c)
-                for (int a = cell_start_[c] + 1; a < cell_start_[c + 1]; ++a) {
-                    const int k = order_[std::size_t(a)];
-                    int b2 = a;
-                    for (; b2 > cell_start_[c] && id_[std::size_t(order_[std::size_t(b2 - 1)])] > id_[std::size_t(k)]; --b2)
-                        order_[std::size_t(b2)] = order_[std::size_t(b2 - 1)];
-                    order_[std::size_t(b2)] = k;
-                }
-        }
-        sync();
-        // Move this thread's share of the new order.
+        for (std::size_t c = 0; c < ncell; ++c)
+            for (int a = cell_start_[c] + 1; a < cell_start_[c + 1]; ++a) {
+                const int k = order_[std::size_t(a)];
+                int b2 = a;
+                for (; b2 > cell_start_[c] && id_[std::size_t(order_[std::size_t(b2 - 1)])] > id_[std::size_t(k)]; --b2)
+                    order_[std::size_t(b2)] = order_[std::size_t(b2 - 1)];
+                order_[std::size_t(b2)] = k;
+            }
+        // Move the grains into the new order.
         {
             std::vector<double>* cur[] = {&x_, &y_, &vx_, &vy_, &vpx_, &vpy_, &rad_, &mass_, &inv_mass_};
             const int* __restrict order = order_.data();
             for (std::size_t a = 0; a < kMoved; ++a) {
                 const double* __restrict src = cur[a]->data();
                 double* __restrict dst = spare_[a].data();
-                for (std::size_t i = b; i < e; ++i) dst[i] = src[order[i]];
+                for (std::size_t i = 0; i < n; ++i) dst[i] = src[order[i]];
             }
-            for (std::size_t i = b; i < e; ++i) {
+            for (std::size_t i = 0; i < n; ++i) {
                 const std::size_t o = std::size_t(order[i]);
                 const int c = cell_of_[o];
                 spare_id_[i] = id_[o];
@@ -531,40 +471,23 @@ private:
                 cell_y_[i] = cell_row_[std::size_t(c)];
                 slot_of_id_[std::size_t(id_[o])] = int(i);
             }
-            std::fill(dispx_.begin() + std::ptrdiff_t(b), dispx_.begin() + std::ptrdiff_t(e), 0.0);
-            std::fill(dispy_.begin() + std::ptrdiff_t(b), dispy_.begin() + std::ptrdiff_t(e), 0.0);
-        }
-        sync();
-        if (tid == 0) {
-            std::vector<double>* cur[] = {&x_, &y_, &vx_, &vy_, &vpx_, &vpy_, &rad_, &mass_, &inv_mass_};
+            std::fill(dispx_.begin(), dispx_.end(), 0.0);
+            std::fill(dispy_.begin(), dispy_.end(), 0.0);
             for (std::size_t a = 0; a < kMoved; ++a) cur[a]->swap(spare_[a]);
             id_.swap(spare_id_);
         }
-        sync();
-        list_share(tid);
-        sync();
-        // Concatenate the threads' lists into one, in slot order.
-        if (tid == 0) {
-            std::size_t total = 0;
-            for (Scratch& s : scratch_) {
-                s.list_offset = total;
-                total += s.partners.size();
-            }
-            if (nb_j_.size() < total + 8) { // (+8: the mirror scan reads up to 8 entries past a start)
-                const std::size_t cap = total + total / 4 + 8;
-                nb_j_.resize(cap);
-                nb_owner_.resize(cap);
-                nb_mirror_.resize(cap);
-            }
-            nb_start_[n] = int(total);
+        list_partners();
+        const std::size_t entries = s.partners.size();
+        if (nb_j_.size() < entries + 8) { // (+8: the mirror scan reads up to 8 entries past a start)
+            const std::size_t cap = entries + entries / 4 + 8;
+            nb_j_.resize(cap);
+            nb_owner_.resize(cap);
+            nb_mirror_.resize(cap);
         }
-        sync();
-        {
-            std::copy(s.partners.begin(), s.partners.end(), nb_j_.begin() + std::ptrdiff_t(s.list_offset));
-            std::copy(s.owners.begin(), s.owners.end(), nb_owner_.begin() + std::ptrdiff_t(s.list_offset));
-            for (std::size_t i = b; i < e; ++i) nb_start_[i] = int(s.list_offset) + s.counts[i - b];
-        }
-        sync();
+        std::copy(s.partners.begin(), s.partners.end(), nb_j_.begin());
+        std::copy(s.owners.begin(), s.owners.end(), nb_owner_.begin());
+        for (std::size_t i = 0; i < n; ++i) nb_start_[i] = s.counts[i];
+        nb_start_[n] = int(entries);
         // Each entry i -> j finds its mirror j -> i among j's entries: a fixed, branch-free scan
         // of the first eight (more only for a grain with more partners).
         {
@@ -572,7 +495,7 @@ private:
             const int* __restrict nbj = nb_j_.data();
             const int* __restrict own = nb_owner_.data();
             int* __restrict mirror = nb_mirror_.data();
-            for (std::size_t k = std::size_t(start[begin_of(tid)]), k1 = std::size_t(start[end_of(tid)]); k < k1; ++k) {
+            for (std::size_t k = 0; k < entries; ++k) {
                 const int i = own[k], j = nbj[k];
                 const int s0 = start[j], count = start[j + 1] - s0;
                 int m = 0; // (exactly one q matches: m = the sum of (s0 + q) [match])
@@ -584,58 +507,54 @@ private:
                 mirror[k] = m;
             }
         }
-        thread_lists(tid, true);
+        pair_lists();
     }
 
-    // What each thread derives from the whole list for its share of the grains: the pairs it
-    // tests, and the grains that touch a wall. A pair of two of its grains is tested once and
-    // yields both entries; a pair with another thread's grain is tested by both threads, each
-    // taking its own entry (the test is symmetric, so they agree), so every thread's contacts
-    // are its own entries.
-    void thread_lists(int tid, bool at_build) {
-        Scratch& s = scratch_[std::size_t(tid)];
-        const std::size_t b = begin_of(tid), e = end_of(tid);
-        const std::size_t k0 = std::size_t(nb_start_[b]), k1 = std::size_t(nb_start_[e]);
-        const std::size_t most = k1 - k0 + 1;
+    // What the step derives from the list at a build: the pairs to test (each once, yielding
+    // both entries), and the grains that touch a wall or can come near one.
+    void pair_lists() {
+        Scratch& s = scratch_;
+        const std::size_t n = x_.size();
+        const std::size_t k1 = std::size_t(nb_start_[n]);
+        const std::size_t most = k1 + 1;
         s.pi.resize(most), s.pj.resize(most), s.pk.resize(most), s.pm.resize(most);
         std::size_t np = 0;
-        for (std::size_t k = k0; k < k1; ++k) {
+        for (std::size_t k = 0; k < k1; ++k) {
             const std::size_t j = std::size_t(nb_j_[k]);
-            const bool foreign = (j < b) | (j >= e);
             s.pi[np] = nb_owner_[k];
             s.pj[np] = int(j);
             s.pk[np] = int(k);
-            s.pm[np] = foreign ? int(k) : nb_mirror_[k];
-            np += foreign | (j > std::size_t(nb_owner_[k]));
+            s.pm[np] = nb_mirror_[k];
+            np += j > std::size_t(nb_owner_[k]);
         }
         s.pi.resize(np), s.pj.resize(np), s.pk.resize(np), s.pm.resize(np);
         s.hits.resize(2 * np + 1);
-        s.near.resize(e - b + 2);
+        s.near.resize(n + 2);
         double rmax = 0;
         for (double r : rad_) rmax = std::max(rmax, r);
         const double band = rmax + geo_.wall_radius + 0.5 * skin_ + band_margin();
         s.band.clear();
-        for (std::size_t i = b; i < e; ++i)
+        for (std::size_t i = 0; i < n; ++i)
             if (x_[i] < band || x_[i] > geo_.width - band) s.band.push_back(int(i));
-        s.band_valid = at_build; // (the band is measured from the positions at the build)
-        wall_meter_.relist(tid, b, e, id_.data());
+        s.band_valid = true; // (the band is measured from the positions at the build)
+        wall_meter_.relist(n, id_.data());
     }
 
-    // Lists the partners of this thread's grains into its scratch (partners, counts). The cells
+    // Lists the partners of the grains into the scratch (partners, counts). The cells
     // are slot ranges, in a row left to right, each sorted by id (rebuild() sees to that), so
     // the partners with larger id come out of the scan of rows below / same / above in the
     // required order; those with smaller id are sorted by id (a handful).
-    void list_share(int tid) {
-        Scratch& s = scratch_[std::size_t(tid)];
-        const std::size_t b = begin_of(tid), e = end_of(tid);
-        s.counts.resize(e - b);
+    void list_partners() {
+        Scratch& s = scratch_;
+        const std::size_t n = x_.size();
+        s.counts.resize(n);
         const double* __restrict x = x_.data();
         const double* __restrict y = y_.data();
         const double* __restrict r = rad_.data();
         const int* __restrict id = id_.data();
         const double len = geo_.length, skin = skin_;
         std::size_t used = 0; // entries written to s.partners / s.owners
-        for (std::size_t i = b; i < e; ++i) {
+        for (std::size_t i = 0; i < n; ++i) {
             const int ix = cell_x_[i], iy = cell_y_[i];
             const int jx0 = std::max(ix - 1, 0), jx1 = std::min(ix + 1, cells_x_ - 1);
             int lo[3], hi[3];
@@ -687,7 +606,7 @@ private:
                 for (; c > 0 && id[low[c - 1]] > id[k]; --c) low[c] = low[c - 1];
                 low[c] = k;
             }
-            s.counts[i - b] = int(used);
+            s.counts[i] = int(used);
             int* __restrict out = s.partners.data() + used;
             int* __restrict own = s.owners.data() + used;
             for (std::size_t a = 0; a < nl; ++a) out[a] = low[a], own[a] = int(i);
@@ -714,18 +633,18 @@ private:
         fy = fn * ny + fs * nx;
     }
 
-    // Contact test of this thread's pairs (pipe_detect.hpp): the list entries in contact (not
+    // Contact test of the listed pairs (pipe_detect.hpp): the list entries in contact (not
     // d^2 >= (r_i + r_j)^2, the same in either direction), sorted into list order.
-    void detect(int tid) {
-        Scratch& s = scratch_[std::size_t(tid)];
+    void detect() {
+        Scratch& s = scratch_;
         s.nhits = pipe_detail::detect({s.pi.data(), s.pj.data(), s.pk.data(), s.pm.data(), s.pi.size()},
                                       {x_.data(), y_.data(), rad_.data(), geo_.length}, s.hits.data());
         std::sort(s.hits.begin(), s.hits.begin() + std::ptrdiff_t(s.nhits)); // list order
     }
 
-    // Force sums of this thread's grains; near_mark_ tells meter_walls() which touched a wall.
-    void forces(int tid) {
-        Scratch& s = scratch_[std::size_t(tid)];
+    // Force sums of the grains; near_mark_ tells meter_walls() which touched a wall.
+    void forces() {
+        Scratch& s = scratch_;
         const int* __restrict hits = s.hits.data();
         const std::size_t nh = s.nhits;
 
@@ -784,14 +703,14 @@ private:
         s.worst = worst;
     }
 
-    // The wall-impact meter's share of this thread's step (count false: finalize()'s force
-    // evaluation); it clears the near marks for the next step.
-    void meter_walls(int tid, bool count) {
-        const Scratch& s = scratch_[std::size_t(tid)];
+    // The wall-impact meter's part of the step (count false: finalize()'s force evaluation); it
+    // clears the near marks for the next step.
+    void meter_walls(bool count) {
+        const Scratch& s = scratch_;
         const int* near = s.near.data();
         const std::size_t nn = s.near_count;
         const double h = 0.5 * dt_;
-        wall_meter_.step(tid, count, near, nn, near_mark_.data(), id_.data(), inv_mass_.data(), [&](std::size_t i) {
+        wall_meter_.step(count, near, nn, near_mark_.data(), id_.data(), inv_mass_.data(), [&](std::size_t i) {
             // the velocities after this step's closing half kick (applied by the next drift)
             return WallImpactMeter::Velocity{vx_[i] + h * accel_x(i), vy_[i] + h * accel_y(i)};
         });
@@ -802,7 +721,7 @@ private:
         const double lam = geo_.wall_spacing;
         const double f0 = std::floor((y_[i] - shift - reach) / lam), f1 = std::ceil((y_[i] - shift + reach) / lam);
         // y is wrapped into [0, length), so the rows are within the pipe's count unless a grain
-        // blew up (NaN): then the casts would be undefined. Worker threads must not throw, so
+        // blew up (NaN): then the casts would be undefined. The step does not throw halfway, so
         // the grain gets no wall force and max_overlap_ratio() says inf.
         if (!(std::fabs(f0) < 1e15 && std::fabs(f1) < 1e15)) {
             worst = std::numeric_limits<double>::infinity();
@@ -828,11 +747,11 @@ private:
         return touched;
     }
 
-    // After the forces of a step (thread 0): the largest overlap, and (count) the meter's step,
-    // which adds the wall impacts completed in it in id order.
+    // After the forces of a step: the largest overlap, and (count) the meter's step, which adds
+    // the wall impacts completed in it in id order.
     void finish_step_stats(bool count) {
-        double worst = 0;
-        for (const Scratch& s : scratch_) worst = std::max(worst, s.worst);
+        double worst = 0; // (max(0, worst): the same bits as ever)
+        worst = std::max(worst, scratch_.worst);
         max_overlap_ = worst;
         if (count) wall_meter_.end_step(dt_);
     }
@@ -846,7 +765,7 @@ private:
     PipeGeometry geo_;
     double dt_, dt_closing_, skin_; // this step's, and the last step's (its closing half kick pending) [s]
     double t_ = 0;
-    long steps_ = 0, builds_ = 0, exact_tests_ = 0;
+    long steps_ = 0, builds_ = 0;
     bool need_build_ = true;
     double max_overlap_ = 0;
     double range_ = 0, cell_w_ = 0, cell_h_ = 0;
@@ -864,9 +783,7 @@ private:
     std::vector<double> fx_, fy_;        // force sums of the last force evaluation (cleared by drift)
     std::vector<unsigned char> near_mark_; // 1: near a wall this step, 2: and touching; else 0
     WallImpactMeter wall_meter_;
-    int threads_ = 1;
-    std::unique_ptr<SpinTeam> team_;
-    std::vector<Scratch> scratch_ = std::vector<Scratch>(1);
+    Scratch scratch_;
     long version_ = 0;
     unsigned long pause_count_ = 0; // step() calls, for the pause point
     mutable std::pair<long, std::vector<double>> out_[8];

@@ -9,9 +9,8 @@
 // the impact are no part of what the wall does, so they are not counted.
 //
 // State per grain is kept by id, because the engine re-sorts its grains (slots) at every list
-// build while an impact may last across builds. The engine's threads each meter their own
-// grains; the impacts completed in a step are added in id order (end_step()), so the sums are
-// the same bits for any thread count.
+// build while an impact may last across builds. The impacts completed in a step are added in id
+// order (end_step()), so the sums do not depend on the slots.
 #pragma once
 #include <algorithm>
 #include <cmath>
@@ -42,26 +41,22 @@ public:
     // Before the engine's first force evaluation. (The impulse of that evaluation is kept: it
     // counts in the grain's first impact, as it always did.)
     void clear_impulses() { std::fill(impulse_y_.begin(), impulse_y_.end(), 0.0); }
-    // Fresh per-thread state; the engine then re-lists each thread's grains (relist()).
-    void set_threads(int threads) { threads_.assign(std::size_t(std::max(1, threads)), Thread{}); }
-
     // Called for each wall grain a grain touches, from the force loop: the one piece of metering
     // that needs the single wall force rather than the grain's force sum.
     void add_impulse(std::size_t id, double fy_dt) { impulse_y_[id] += fy_dt; }
 
-    // After the grains moved to other slots (a list build): the slots [b, e) of thread tid that
-    // are inside an impact or hold wall impulse, i.e. those that can end one without being near a
-    // wall. id[i] is the id of slot i.
-    void relist(int tid, std::size_t b, std::size_t e, const int* id) {
-        std::vector<int>& touching = threads_[std::size_t(tid)].touching;
-        touching.clear();
-        for (std::size_t i = b; i < e; ++i) {
+    // After the grains moved to other slots (a list build): the slots [0, n) that are inside an
+    // impact or hold wall impulse, i.e. those that can end one without being near a wall. id[i]
+    // is the id of slot i.
+    void relist(std::size_t n, const int* id) {
+        touching_.clear();
+        for (std::size_t i = 0; i < n; ++i) {
             const std::size_t g = std::size_t(id[i]);
-            if (touch_[g] || impulse_y_[g] != 0) touching.push_back(int(i));
+            if (touch_[g] || impulse_y_[g] != 0) touching_.push_back(int(i));
         }
     }
 
-    // One thread's step, after its forces. near[0, count) are its slots near a wall; mark[i] is 2
+    // The engine's step, after its forces. near[0, count) are the slots near a wall; mark[i] is 2
     // for a slot that touched a wall grain this step, 1 for one near a wall only, 0 for one not
     // near. Only those and the slots touching after the last step can change state, so the rest
     // of the grains cost nothing. The meter is the marks' last reader: it sets them back to 0 for
@@ -69,53 +64,44 @@ public:
     // closing half kick; id[i] and inv_mass[i] are slot i's id and 1/m. With count false (the
     // engine's first force evaluation) no impact begins or ends: only the touching slots are noted.
     template <class VelocityAtTouch>
-    void step(int tid, bool count, const int* near, std::size_t near_count, unsigned char* mark, const int* id,
+    void step(bool count, const int* near, std::size_t near_count, unsigned char* mark, const int* id,
               const double* inv_mass, VelocityAtTouch&& velocity_at_touch) {
-        Thread& t = threads_[std::size_t(tid)];
-        t.impacts = 0;
-        t.completed.clear();
+        impacts_ = 0;
+        completed_.clear();
         auto track = [&](std::size_t i, bool now) {
             const std::size_t g = std::size_t(id[i]);
             if (now && !touch_[g]) {
-                ++t.impacts;
+                ++impacts_;
                 const Velocity v = velocity_at_touch(i);
                 vy_at_touch_[g] = v.y;
                 vx_at_touch_[g] = v.x;
             } else if (!now && touch_[g]) {
-                t.completed.push_back({id[i], impulse_y_[g] * inv_mass[i], std::abs(vy_at_touch_[g]), std::abs(vx_at_touch_[g])});
+                completed_.push_back({id[i], impulse_y_[g] * inv_mass[i], std::abs(vy_at_touch_[g]), std::abs(vx_at_touch_[g])});
             }
             if (!now) impulse_y_[g] = 0;
             touch_[g] = now;
         };
         if (count) {
-            for (int i : t.touching)
+            for (int i : touching_)
                 if (!mark[std::size_t(i)]) track(std::size_t(i), false);
             for (std::size_t a = 0; a < near_count; ++a) track(std::size_t(near[a]), mark[std::size_t(near[a])] == 2);
         }
-        t.touching.clear();
+        touching_.clear();
         for (std::size_t a = 0; a < near_count; ++a) {
             const std::size_t i = std::size_t(near[a]);
-            if (mark[i] == 2) t.touching.push_back(int(i));
+            if (mark[i] == 2) touching_.push_back(int(i));
             mark[i] = 0;
         }
     }
 
-    // After every thread's step (one thread, the others waiting): the step's impacts, and the
-    // impacts completed in it added in id order, so that no sum depends on the thread count.
+    // After step(): the step's impacts, and the impacts completed in it added in id order, so
+    // that no sum depends on the order of the slots.
     void end_step(double dt) {
-        long impacts = 0;
-        std::size_t ncomp = 0;
-        for (const Thread& t : threads_) {
-            impacts += t.impacts;
-            ncomp += t.completed.size();
-        }
-        stats_.impacts += impacts;
+        stats_.impacts += impacts_;
         stats_.time += dt;
-        if (ncomp == 0) return;
-        merged_.clear();
-        for (const Thread& t : threads_) merged_.insert(merged_.end(), t.completed.begin(), t.completed.end());
-        std::sort(merged_.begin(), merged_.end(), [](const Completion& a, const Completion& b) { return a.id < b.id; });
-        for (const Completion& c : merged_) {
+        if (completed_.empty()) return;
+        std::sort(completed_.begin(), completed_.end(), [](const Completion& a, const Completion& b) { return a.id < b.id; });
+        for (const Completion& c : completed_) {
             ++stats_.completed;
             stats_.sum_dvy += c.dvy;
             stats_.sum_vy_in += c.vy_in;
@@ -127,10 +113,10 @@ public:
     // Clears the counts only: impacts under way go on and are counted when they end.
     void reset_stats() { stats_ = {}; }
 
-    // Bytes held by the per-grain state and the per-thread lists (capacity, not just size).
+    // Bytes held by the per-grain state and the touching list (capacity, not just size).
     std::size_t bytes() const {
         std::size_t b = (vy_at_touch_.capacity() + vx_at_touch_.capacity() + impulse_y_.capacity()) * sizeof(double);
-        for (const Thread& t : threads_) b += t.touching.capacity() * sizeof(int);
+        b += touching_.capacity() * sizeof(int);
         return b + touch_.capacity();
     }
 
@@ -139,17 +125,13 @@ private:
         int id;
         double dvy, vy_in, vx_in;
     };
-    struct alignas(64) Thread { // (a cache line of its own: the threads write these every step)
-        long impacts = 0;
-        std::vector<Completion> completed;
-        std::vector<int> touching; // slots touching a wall (or holding wall impulse) after the last step
-    };
 
     std::vector<char> touch_;                          // by id: inside an impact
     std::vector<double> vy_at_touch_, vx_at_touch_;    // by id: velocity at the impact's start
     std::vector<double> impulse_y_;                    // by id: wall impulse along +y since the impact's start
-    std::vector<Thread> threads_ = std::vector<Thread>(1);
-    std::vector<Completion> merged_;
+    long impacts_ = 0;                                 // impacts begun in this step
+    std::vector<Completion> completed_;                // impacts completed in this step
+    std::vector<int> touching_; // slots touching a wall (or holding wall impulse) after the last step
     WallImpactStats stats_;
 };
 

@@ -3,7 +3,9 @@
 // list; the minimum is searched from the current bucket on, accepting only entries of the
 // current "year". With ~1-2 entries per bucket, top/update are O(1) on average. The width is
 // re-estimated from the spread of pending times every few N updates.
-// Same interface and the same total order on (time, id) as BinaryHeapQueue.
+// Same interface and the same total order on (time, id) as BinaryHeapQueue. Test-only: the
+// engine tests run BasicEdEngine<CalendarQueue> to show the engine is queue-agnostic (the
+// engine's choice of queue: the note above EdEngine in ed_engine.hpp).
 #pragma once
 #include <algorithm>
 #include <cmath>
