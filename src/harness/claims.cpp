@@ -9,6 +9,7 @@
 #include "core/input_error.hpp"
 #include "data/printable.hpp"
 #include "data/toml_file.hpp"
+#include "harness/experiment.hpp"
 
 namespace granrepro {
 
@@ -30,7 +31,7 @@ const std::string kClaimKeys[] = {"id",      "statement",       "source",       
                                   "paper",   "rel_tol",         "abs_tol",        "min",
                                   "max",     "tolerance_reason", "tolerance_kind", "scales",
                                   "known_deviation", "deviation_band", "deviation_band_reason", "deviation_band_kind",
-                                  "role", "status"};
+                                  "role", "status", "figure"};
 
 // The tolerance column shows the kind in a word, so the table stays narrow.
 std::string short_kind(const std::string& kind) {
@@ -368,6 +369,14 @@ Claim read_claim(const toml::value& c, const std::string& where, const std::stri
         throw InputError(r.where + line_of(c.at("measured")) + ": measured '" + k.measured + "' is not an output of " +
                          experiment + " (experiments/" + experiment + ".toml [outputs] declares no such scalar)");
     for (const auto& s : k.scales) r.check_scale(s, "scales");
+    if (c.contains("figure")) {
+        k.figure = toml::find<std::string>(c, "figure");
+        std::vector<std::string> ids;
+        for (const auto& f : experiment_info(experiment).figures) ids.push_back(f.id);
+        if (std::find(ids.begin(), ids.end(), k.figure) == ids.end())
+            throw InputError(r.where + line_of(c.at("figure")) + ": figure '" + printable(k.figure) + "' is not a figure of " +
+                             experiment + "; allowed: " + joined(ids));
+    }
     read_band(r, k);
     read_deviation(r, k);
     read_role_and_status(r, k);
@@ -494,6 +503,7 @@ nlohmann::json claims_to_json(const std::vector<ClaimResult>& results) {
                             {"tolerance_kind", r.claim.tolerance_kind},
                             {"measured", finite ? nlohmann::json(*r.measured) : nlohmann::json()},
                             {"verdict", to_string(r.verdict)}, {"role", r.claim.role}};
+        if (!r.claim.figure.empty()) j["figure"] = r.claim.figure;
         if (!r.claim.known_deviation.empty()) {
             j["known_deviation"] = r.claim.known_deviation;
             j["deviation_band"] = r.band_text; // text: JSON has no infinity
@@ -539,6 +549,7 @@ std::vector<int> cited_figures(const std::string& text) {
 } // namespace
 
 bool cites_figure(const Claim& claim, const std::string& figure_id) {
+    if (!claim.figure.empty()) return claim.figure == figure_id;
     const std::size_t digits = figure_id.find_last_not_of("0123456789") + 1;
     if (digits >= figure_id.size()) return false;
     const int number = std::stoi(figure_id.substr(digits, 6));
