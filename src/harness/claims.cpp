@@ -30,7 +30,7 @@ const std::string kClaimKeys[] = {"id",      "statement",       "source",       
                                   "paper",   "rel_tol",         "abs_tol",        "min",
                                   "max",     "tolerance_reason", "tolerance_kind", "scales",
                                   "known_deviation", "deviation_band", "deviation_band_reason", "deviation_band_kind",
-                                  "role", "status"};
+                                  "role", "status", "figure"};
 
 // The tolerance column shows the kind in a word, so the table stays narrow.
 std::string short_kind(const std::string& kind) {
@@ -344,9 +344,23 @@ void check_calibrations(std::vector<Claim>& claims, const std::filesystem::path&
                              c.id + "\" on the [parameters.<name>] it was chosen for)");
 }
 
+// The [[figure]] ids of the experiment file beside the claims file (as check_calibrations finds
+// it); none without one. Its own errors are the experiment file's loader's to report.
+std::vector<std::string> figures_of(const std::filesystem::path& file, const std::string& experiment) {
+    const std::filesystem::path exp_file = file.parent_path().parent_path() / "experiments" / (experiment + ".toml");
+    std::vector<std::string> ids;
+    if (!std::filesystem::exists(exp_file)) return ids;
+    const toml::value root = parse_toml_file(exp_file, "experiment file");
+    if (!root.is_table() || !root.contains("figure") || !root.at("figure").is_array()) return ids;
+    for (const auto& f : root.at("figure").as_array())
+        if (f.is_table() && f.contains("id") && f.at("id").is_string()) ids.push_back(f.at("id").as_string().str);
+    return ids;
+}
+
 // One [[claim]]: its keys, texts and measured scalar (which the experiment must declare).
 Claim read_claim(const toml::value& c, const std::string& where, const std::string& experiment,
-                 const DeclaredOutputs* outputs, const std::vector<Claim>& earlier_claims) {
+                 const DeclaredOutputs* outputs, const std::vector<std::string>& figure_ids,
+                 const std::vector<Claim>& earlier_claims) {
     Claim k;
     k.id = toml::find<std::string>(c, "id");
     const ClaimReader r{c, where + ": claim " + printable(k.id), where, printable(k.id)};
@@ -368,6 +382,12 @@ Claim read_claim(const toml::value& c, const std::string& where, const std::stri
         throw InputError(r.where + line_of(c.at("measured")) + ": measured '" + k.measured + "' is not an output of " +
                          experiment + " (experiments/" + experiment + ".toml [outputs] declares no such scalar)");
     for (const auto& s : k.scales) r.check_scale(s, "scales");
+    if (c.contains("figure")) {
+        k.figure = toml::find<std::string>(c, "figure");
+        if (std::find(figure_ids.begin(), figure_ids.end(), k.figure) == figure_ids.end())
+            throw InputError(r.where + line_of(c.at("figure")) + ": figure '" + printable(k.figure) + "' is not a figure of " +
+                             experiment + " (experiments/" + experiment + ".toml [[figure]]); allowed: " + joined(figure_ids));
+    }
     read_band(r, k);
     read_deviation(r, k);
     read_role_and_status(r, k);
@@ -388,7 +408,9 @@ std::vector<Claim> load_claims(const std::filesystem::path& file, const std::str
                 throw InputError(where + line_of(v) + ": unknown key '" + key + "'; allowed: experiment, [[claim]]");
         if (toml::find<std::string>(root, "experiment") != experiment)
             throw InputError(where + ": 'experiment' must be \"" + experiment + "\"");
-        for (const auto& c : toml::find<toml::array>(root, "claim")) claims.push_back(read_claim(c, where, experiment, outputs, claims));
+        const std::vector<std::string> figure_ids = figures_of(file, experiment);
+        for (const auto& c : toml::find<toml::array>(root, "claim"))
+            claims.push_back(read_claim(c, where, experiment, outputs, figure_ids, claims));
     } catch (const InputError& e) {
         if (std::string(e.what()).rfind(where, 0) == 0) throw;
         throw InputError(where + ": " + e.what());
@@ -494,6 +516,7 @@ nlohmann::json claims_to_json(const std::vector<ClaimResult>& results) {
                             {"tolerance_kind", r.claim.tolerance_kind},
                             {"measured", finite ? nlohmann::json(*r.measured) : nlohmann::json()},
                             {"verdict", to_string(r.verdict)}, {"role", r.claim.role}};
+        if (!r.claim.figure.empty()) j["figure"] = r.claim.figure;
         if (!r.claim.known_deviation.empty()) {
             j["known_deviation"] = r.claim.known_deviation;
             j["deviation_band"] = r.band_text; // text: JSON has no infinity
@@ -539,6 +562,7 @@ std::vector<int> cited_figures(const std::string& text) {
 } // namespace
 
 bool cites_figure(const Claim& claim, const std::string& figure_id) {
+    if (!claim.figure.empty()) return claim.figure == figure_id;
     const std::size_t digits = figure_id.find_last_not_of("0123456789") + 1;
     if (digits >= figure_id.size()) return false;
     const int number = std::stoi(figure_id.substr(digits, 6));

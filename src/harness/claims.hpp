@@ -57,6 +57,10 @@ struct Claim {
     std::vector<std::string> scales; // empty: every scale
     std::string role;   // one of kClaimRoles
     std::string status; // one of kDeviationStatuses, for a known deviation only
+    // The figure the claim belongs to, where its source names none of its experiment's figures
+    // (`figure = "luding98-fig04"`, one of experiments/<name>.toml's ids): `figure` and the
+    // report show it there. Empty: the figures its source cites (cites_figure).
+    std::string figure;
     long line = 0;      // of its [[claim]] table, for messages
     std::string publication; // "Luding 1998": the paper of the experiment (experiments/<name>.toml), if found
 
@@ -116,9 +120,9 @@ nlohmann::json claims_to_json(const std::vector<ClaimResult>& results);
 nlohmann::json headline_json(const VerdictCounts& counts);
 bool all_pass(const std::vector<ClaimResult>& results); // known deviations and skips do not fail
 
-// Claims carry no figure of their own; their `source` cites the paper's figures ("text below
-// Fig. 4", "Figs. 4, 5", "Fig. 10(a)"). True if it cites the figure numbered like the end of
-// `figure_id` ("schaefer95-fig4", "luding98-fig02"): what `figure` shows of a run's claims.
+// True if the claim belongs to figure_id ("schaefer95-fig4", "luding98-fig02"): the figure it
+// names (Claim::figure), or else one its `source` cites ("text below Fig. 4", "Figs. 4, 5",
+// "Fig. 10(a)") numbered like the end of figure_id. What `figure` and the report show of a run's claims.
 bool cites_figure(const Claim& claim, const std::string& figure_id);
 
 } // namespace granrepro

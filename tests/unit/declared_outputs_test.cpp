@@ -89,3 +89,33 @@ TEST(DeclaredOutputs, EveryLiteralPlotTableIsDeclared) {
     }
     EXPECT_GT(checked, 10);
 }
+
+// A claim may name the figure it belongs to; one its experiment does not make is refused at load
+// with the file and line, and the named figure decides where `figure` and the report show it.
+TEST(DeclaredOutputs, AClaimNamesOneOfItsExperimentsFigures) {
+    const fs::path root = fs::temp_directory_path() / ("claim-figure-" + std::to_string(::getpid()));
+    fs::create_directories(root / "experiments");
+    fs::create_directories(root / "expected");
+    fs::copy_file(project_root() / "experiments" / "emergency-brake.toml", root / "experiments" / "emergency-brake.toml");
+    const fs::path file = root / "expected" / "emergency-brake.toml";
+    auto claims_naming = [&](const std::string& figure) {
+        std::ofstream(file) << "experiment = \"emergency-brake\"\n\n[[claim]]\nid = \"c\"\nrole = \"reproduction\"\n"
+                               "statement = \"s\"\nsource = \"Eq. (4)\"\nmeasured = \"v_crit\"\npaper = 1.0\nrel_tol = 0.1\n"
+                               "tolerance_reason = \"r\"\ntolerance_kind = \"paper_precision\"\nfigure = \"" + figure + "\"\n";
+        return load_claims(file, "emergency-brake");
+    };
+    const auto claims = claims_naming("schaefer95-fig5");
+    ASSERT_EQ(claims.size(), 1u);
+    EXPECT_TRUE(cites_figure(claims[0], "schaefer95-fig5")); // its source cites no figure
+    EXPECT_FALSE(cites_figure(claims[0], "schaefer95-fig4"));
+    try {
+        claims_naming("schaefer95-fig3"); // brake-failure's
+        ADD_FAILURE() << "a figure of another experiment was accepted";
+    } catch (const InputError& e) {
+        const std::string what = e.what();
+        EXPECT_NE(what.find(file.string()), std::string::npos) << what;
+        EXPECT_NE(what.find("(line 13)"), std::string::npos) << what;
+        EXPECT_NE(what.find("schaefer95-fig3"), std::string::npos) << what;
+    }
+    fs::remove_all(root);
+}

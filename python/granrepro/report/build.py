@@ -276,11 +276,12 @@ def figure_number(fig_id: str) -> int:
     return int(m.group(1)) if m else -1
 
 
-def figure_of_claim(experiment: str, claim: dict, fig_ids: list[str], overrides: dict) -> str:
-    """The id of the figure section that shows the claim, "" for the experiment's other claims."""
-    o = overrides.get(f"{experiment}/{claim['id']}")
-    if o in fig_ids:
-        return o
+def figure_of_claim(claim: dict, fig_ids: list[str]) -> str:
+    """The id of the figure section that shows the claim, "" for the experiment's other claims: the
+    figure it names (`figure`, checked by granrepro against the experiment's ids), else the first
+    one its source cites."""
+    if claim.get("figure") in fig_ids:
+        return claim["figure"]
     by_number = {figure_number(f): f for f in fig_ids}
     for n in figures_named(claim.get("source", "")):
         if n in by_number:
@@ -486,7 +487,6 @@ def build_model(results: str, judged: dict, final_to: str, link_images: bool, wa
     from .. import reader
 
     texts = load_figure_texts()
-    overrides = texts.get("claim_figure", {})
     papers = {}  # paper_key -> the paper's row, in the order of its first experiment (the registry's)
     for x in judged["experiments"]:
         if x.get("paper_key") and x["paper_key"] not in papers:
@@ -545,7 +545,7 @@ def build_model(results: str, judged: dict, final_to: str, link_images: bool, wa
             row.role, row.status = c.get("role") or "", (c.get("status") or "") if row.known_deviation else ""
             if row.known_deviation:
                 row.gist = deviation_sentence(c)
-            fid = figure_of_claim(name, c, fig_ids, overrides)
+            fid = figure_of_claim(c, fig_ids)
             if fid:
                 by_id[fid].claims.append(row)
                 row.section, row.section_title = fid, by_id[fid].label
