@@ -62,7 +62,7 @@ TEST(Verify, FreshResultsReproduceBitForBitAndListTheirCosts) {
     ASSERT_EQ(run(kQuickBrake + out.string()).code, 0);
     const Outcome listed = run("verify brake-failure --list --out " + out.string());
     ASSERT_EQ(listed.code, 0) << listed.err;
-    EXPECT_NE(listed.out.find("15 stored points"), std::string::npos) << listed.out;
+    EXPECT_NE(listed.out.find("19 stored points"), std::string::npos) << listed.out;
     EXPECT_NE(listed.out.find("CPU s"), std::string::npos) << listed.out;
     for (const char* point : {"", " --point 0", " --point 14", " --point 3 --point-only"}) {
         const Outcome o = run("verify brake-failure --out " + out.string() + point);
@@ -94,14 +94,16 @@ TEST(Verify, AStoredValueTheCodeDoesNotComputeIsNamed) {
     const fs::path dir = out / "brake-failure";
     ASSERT_EQ(run("check brake-failure --out " + out.string()).code, 0);
     edit_point(dir, 4, [](nlohmann::json& o) {
-        ASSERT_TRUE(o.contains("dvy") && o["dvy"].is_array() && !o["dvy"].empty()) << o.dump().substr(0, 300);
-        o["dvy"][0] = o["dvy"][0].get<double>() * (1 + 1e-12);
+        // A curve point (0 to 14; 15 to 18 are the head-on shots): its Curve under "curve".
+        ASSERT_TRUE(o.contains("curve") && o["curve"]["dvy"].is_array() && !o["curve"]["dvy"].empty())
+            << o.dump().substr(0, 300);
+        o["curve"]["dvy"][0] = o["curve"]["dvy"][0].get<double>() * (1 + 1e-12);
     });
     ASSERT_EQ(run("check brake-failure --out " + out.string()).code, 0) << "the edit keeps the hashes consistent";
     const Outcome o = run("verify brake-failure --point 4 --out " + out.string());
     EXPECT_EQ(o.code, 1) << o.out << o.err;
     EXPECT_NE(o.out.find("point outcome: 1 of"), std::string::npos) << o.out;
-    EXPECT_NE(o.out.find("/dvy[0]"), std::string::npos) << o.out;
+    EXPECT_NE(o.out.find("/curve/dvy[0]"), std::string::npos) << o.out;
     EXPECT_NE(o.out.find("differs"), std::string::npos) << o.out;
     EXPECT_EQ(run("verify brake-failure --point 5 --point-only --out " + out.string()).code, 0) << "another point";
 
@@ -128,7 +130,7 @@ TEST(Verify, BadInputIsOneLineExitTwo) {
     const std::string o = " --out " + out.string();
     expect_one_line_exit(run("verify brake-failure --point abc" + o), 2, {"--point abc", "integer >= 0"});
     expect_one_line_exit(run("verify brake-failure --point -1" + o), 2, {"--point -1"});
-    expect_one_line_exit(run("verify brake-failure --point 99" + o), 2, {"--point 99", "stores points 0 to 14"});
+    expect_one_line_exit(run("verify brake-failure --point 99" + o), 2, {"--point 99", "stores points 0 to 18"});
     expect_one_line_exit(run("verify brake-failure --threads 0" + o), 2, {"--threads 0"});
     expect_one_line_exit(run("verify brake-failure --list --point 1" + o), 2, {"--list"});
     expect_one_line_exit(run("verify no-such-experiment" + o), 2, {"unknown experiment 'no-such-experiment'"});
