@@ -1,12 +1,13 @@
 // Typed specs: an experiment reads its ParameterSet once into a struct and its code reads
-// `spec.e_N`, never a string. A spec lists its fields once, with the TOML name of each; the TOML
-// stays the single source of units, ranges and sources (ParameterSet has checked them):
+// `spec.e_N`, never a string. A spec lists its fields once, each member named as its TOML key
+// (data/fields.hpp); the TOML stays the single source of units, ranges, defaults and sources
+// (ParameterSet has checked them):
 //
 //   struct CoolingSpec {
 //       long N = 0;
 //       double e_N = 0;
 //       std::vector<double> snapshots;
-//       template <class V> void fields(V&& v) { v("N", N); v("e_N", e_N); v("snapshots", snapshots); }
+//       GRANREPRO_FIELDS(N, e_N, snapshots)
 //   };
 //   const auto s = read_spec<CoolingSpec>(ctx.params);
 //
