@@ -111,10 +111,13 @@ using namespace brake_failure_detail;
 
 namespace {
 
+const ScalarOut out_incomplete_impacts = outputs.scalar("incomplete_impacts", "1",
+    "impacts that had not ended within max_steps");
+
 // Fig. 3 and its studies as a protocol (harness/protocol.hpp): one sweep point per curve, in
 // curve order, then one per head-on collision of Eq. (4) (milliseconds each, so none is saved).
 struct BrakeFailure {
-    static constexpr const char* name = "brake-failure";
+    static constexpr const char* name = outputs.experiment();
     static constexpr PointFiles files = PointFiles::None;
     using Spec = BrakeFailureSpec;
     using Outcome = Point;
@@ -152,7 +155,7 @@ struct BrakeFailure {
         int incomplete = 0;
         for (const auto& c : curves)
             for (int ok : c.complete) incomplete += !ok;
-        r.scalar("incomplete_impacts", incomplete, "1", "impacts that had not ended within max_steps");
+        r.put(out_incomplete_impacts, incomplete);
         const Peak pk = report_fig3(r, w, curves);
         report_high_velocity(r, s, w, curves);
         report_head_on(r, s, w, head_ons);

@@ -15,6 +15,9 @@
 
 namespace granrepro::experiments::brake_failure_detail {
 
+// The catalog every output handle of brake-failure registers with (data/outputs.hpp).
+inline constexpr Outputs outputs{"brake-failure"};
+
 struct BrakeFailureSpec : ImpactShotSpec {
     double offset = 0;             // flight line's distance from the wall grain's centre [m]
     double vx_i = 0;               // initial speed towards the wall [m/s]

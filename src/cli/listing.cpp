@@ -14,7 +14,9 @@ nlohmann::json experiment_listing(const ExperimentInfo& info) {
             {"paper_short", info.paper_short},
             {"paper_citation", info.paper_citation},
             {"figures", figures},
-            {"smoke", info.smoke}};
+            {"smoke", info.smoke},
+            // every scalar and table a run can write, <n> a number (the handles of data/outputs.hpp)
+            {"outputs", {{"scalars", info.outputs.scalars}, {"tables", info.outputs.tables}}}};
 }
 
 nlohmann::json experiments_listing() {

@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "data/outputs.hpp"
+
 namespace granrepro {
 
 struct Column {
@@ -55,6 +57,14 @@ struct Result {
     void scalar(std::string name, double value, std::string unit, std::string description) {
         if (find_scalar(name)) throw std::logic_error("result scalar '" + name + "' added twice");
         scalars.push_back({std::move(name), value, std::move(unit), std::move(description)});
+    }
+    // Through a handle (data/outputs.hpp), the way experiments write: n fills the pattern's <n> and <w>,
+    // more is appended to the declared description.
+    void put(const ScalarOut& h, double value, std::initializer_list<NamePart> n = {}, std::string_view more = {}) {
+        scalar(fill_pattern(h.pattern, h.words, n), value, h.unit, h.description + std::string(more));
+    }
+    Table& table(const TableOut& h, std::initializer_list<NamePart> n = {}, std::string_view more = {}) {
+        return table(fill_pattern(h.pattern, h.words, n), h.description + std::string(more));
     }
     const Scalar* find_scalar(const std::string& name) const {
         for (const auto& s : scalars)

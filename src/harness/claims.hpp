@@ -18,7 +18,7 @@
 #include <vector>
 
 #include "data/parameter_set.hpp"
-#include "harness/declared_outputs.hpp"
+#include "data/outputs.hpp"
 
 namespace granrepro {
 

@@ -10,7 +10,7 @@
 #include "data/parameter_set.hpp"
 #include "data/result.hpp"
 #include "data/sweep_points.hpp"
-#include "harness/declared_outputs.hpp"
+#include "data/outputs.hpp"
 
 namespace granrepro {
 
@@ -72,7 +72,7 @@ struct ExperimentInfo {
     // [smoke] set: --set overrides that make a quick run take about a second, for tests that run
     // every experiment many times (tests/integration/input_fuzz_test.cpp); empty if none.
     std::vector<std::string> smoke;
-    DeclaredOutputs outputs; // [outputs]: every scalar and table a run writes (declared_outputs.hpp)
+    DeclaredOutputs outputs; // every scalar and table a run can write: its reports' handles (data/outputs.hpp)
     std::filesystem::path file;
     static ExperimentInfo load(const std::filesystem::path& file); // throws InputError
 };
