@@ -8,7 +8,7 @@
 
 #include "core/input_error.hpp"
 #include "harness/claims.hpp"
-#include "harness/declared_outputs.hpp"
+#include "data/outputs.hpp"
 #include "harness/experiment.hpp"
 #include "harness/plotter.hpp"
 #include "harness/runner.hpp"
