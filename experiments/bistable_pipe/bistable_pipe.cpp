@@ -63,9 +63,13 @@ std::string series_name(double k, double e, bool fast, int role) {
     return "series_k" + number_text(k) + "_e" + number_text(e) + (fast ? "_fast" : "_slow") + suffix[role];
 }
 
+const ScalarOut out_t_col_k200000_e0_70 = outputs.scalar("t_col_k200000_e0.70", "s",
+    "free-wall contact duration at k_N = 2e5 N/m, e_N = 0.70 (Eq. 4)");
+const ScalarOut out_grains = outputs.scalar("grains", "1", "free grains in the pipe (first run)");
+
 // Fig. 6 as a protocol (harness/protocol.hpp): one sweep point per pipe run (Task).
 struct BistablePipe {
-    static constexpr const char* name = "bistable-pipe";
+    static constexpr const char* name = outputs.experiment();
     using Spec = BistablePipeSpec;
     using Outcome = RunResult;
     using Shared = std::vector<Task>;
@@ -178,12 +182,11 @@ struct BistablePipe {
         const std::vector<RunResult>& results = swept.outcomes;
         Result r;
         // The paper's t_col at k_N = 200000 N/m refers to e_N = 0.70 (gamma scaled with sqrt(k_N)).
-        r.scalar("t_col_k200000_e0.70", pipe_law(200000.0, 0.70, b.m_mean).collision_time(b.m_mean), "s",
-                 "free-wall contact duration at k_N = 2e5 N/m, e_N = 0.70 (Eq. 4)");
+        r.put(out_t_col_k200000_e0_70, pipe_law(200000.0, 0.70, b.m_mean).collision_time(b.m_mean));
         report_fig6(r, b, pipe_spec(b, ctx.seed), results);
         report_eq9_windows(r, results);
         report_series(r, results);
-        r.scalar("grains", double(results.front().grains), "1", "free grains in the pipe (first run)");
+        r.put(out_grains, double(results.front().grains));
         return r;
     }
 };

@@ -210,6 +210,11 @@ void report_vcrit_crossings_k(Result& r, const std::string& kt, const std::vecto
              "fraction of those runs that ended in a steady state above v_crit (the emergency brake of the Summary)");
 }
 
+const ScalarOut out_near_wall_phi_mean = outputs.scalar("near_wall_phi_mean", "1",
+    "mean area fraction of the layer one diameter inside the wall crests, steady states");
+const ScalarOut out_near_wall_phi_spread = outputs.scalar("near_wall_phi_spread", "1",
+    "(largest - smallest) / mean of that near-wall area fraction over the steady states");
+
 // Eq. (9)'s argument: the volume fraction near the wall is "essentially a constant for fixed global
 // volume fraction". Over every steady state of Fig. 6 (all k_N, both starts, one global phi): its spread.
 void report_near_wall_phi(Result& r, const std::vector<RunResult>& results) {
@@ -218,13 +223,17 @@ void report_near_wall_phi(Result& r, const std::vector<RunResult>& results) {
         if (rr.role == kFig6 && rr.outcome == kSteady && std::isfinite(rr.phi_wall)) pw.push_back(rr.phi_wall);
     const auto [lo, hi] = std::minmax_element(pw.begin(), pw.end());
     const double mean = mean_sd(pw).mean;
-    r.scalar("near_wall_phi_mean", mean, "1", "mean area fraction of the layer one diameter inside the wall crests, steady states");
-    r.scalar("near_wall_phi_spread", pw.size() >= 2 ? (*hi - *lo) / mean : NAN, "1",
-             "(largest - smallest) / mean of that near-wall area fraction over the steady states");
+    r.put(out_near_wall_phi_mean, mean);
+    r.put(out_near_wall_phi_spread, pw.size() >= 2 ? (*hi - *lo) / mean : NAN);
 }
 
 } // namespace
 
+
+const ScalarOut out_dt_check_change = outputs.scalar("dt_check_change", "1",
+    "the fast start at dt_check_eN (k_N = kN_list[1]) with every step halved against its Fig. 6 run: relative change of the steady speed if both settled, else of the speed at the end of the shorter run");
+const ScalarOut out_dt_check_same_outcome = outputs.scalar("dt_check_same_outcome", "1",
+    "1 if that run and its Fig. 6 run end alike (steady, free fall or unsettled)");
 
 // The fast start run again with every step halved (dt_check_eN) against its Fig. 6 run: the
 // relative change of the steady speed if both settled, else of the speed at the end of the
@@ -240,12 +249,19 @@ void report_dt_check(Result& r, const std::vector<RunResult>& results) {
         const std::size_t n = std::min(a.v.size(), h.v.size()); // samples at the same times
         change = n ? std::abs(h.v[n - 1] - a.v[n - 1]) / std::abs(a.v[n - 1]) : NAN;
     }
-    r.scalar("dt_check_change", change, "1",
-             "the fast start at dt_check_eN (k_N = kN_list[1]) with every step halved against its Fig. 6 run: relative "
-             "change of the steady speed if both settled, else of the speed at the end of the shorter run");
-    r.scalar("dt_check_same_outcome", a.outcome == h.outcome ? 1.0 : 0.0, "1",
-             "1 if that run and its Fig. 6 run end alike (steady, free fall or unsettled)");
+    r.put(out_dt_check_change, change);
+    r.put(out_dt_check_same_outcome, a.outcome == h.outcome ? 1.0 : 0.0);
 }
+
+const ScalarOut out_steady_runs = outputs.scalar("steady_runs", "1", "runs that reached a steady state");
+const ScalarOut out_fast_branch_k200_over_k2000 = outputs.scalar("fast_branch_k200_over_k2000", "1",
+    "geometric mean of v_fast(k_N = 200) / v_fast(k_N = 2000) over the e_N where both settled on the fast branch");
+const ScalarOut out_eq9_worst_deviation = outputs.scalar("eq9_worst_deviation", "1",
+    "largest |ṅ Δv_y / g - 1| over steady runs (Eq. 9)");
+const ScalarOut out_impact_slope_min = outputs.scalar("impact_slope_min", "s",
+    "smallest slope dΔv_y/dv of the impact curve at a steady state's speed (Eq. 9 argument: > 0)");
+const ScalarOut out_length_check_ratio = outputs.scalar("length_check_ratio", "1",
+    "steady speed at length_check over that at length (same k_N, e_N, slow start)");
 
 void report_fig6(Result& r, const BistablePipeSpec& b, const PipeSpec& base, const std::vector<RunResult>& results) {
     const auto &ks = b.kN_list, &es = b.eN_list;
@@ -271,7 +287,7 @@ void report_fig6(Result& r, const BistablePipeSpec& b, const PipeSpec& base, con
     }
     report_near_wall_phi(r, results);
     report_dt_check(r, results);
-    r.scalar("steady_runs", tot.steady, "1", "runs that reached a steady state");
+    r.put(out_steady_runs, tot.steady);
     // Softer grains brake earlier: the k_N = 200 fast branch against the k_N = 2000 one at the same
     // e_N (geometric mean of the speed ratio over the e_N where both fast starts settled above v_crit).
     const auto k_lo = std::find(ks.begin(), ks.end(), 200.0), k_mid = std::find(ks.begin(), ks.end(), 2000.0);
@@ -287,20 +303,26 @@ void report_fig6(Result& r, const BistablePipeSpec& b, const PipeSpec& base, con
             lr += std::log(lo.v_mean / mid.v_mean);
             ++nr;
         }
-        r.scalar("fast_branch_k200_over_k2000", nr ? std::exp(lr / nr) : NAN, "1",
-                 "geometric mean of v_fast(k_N = 200) / v_fast(k_N = 2000) over the e_N where both settled on the fast branch");
+        r.put(out_fast_branch_k200_over_k2000, nr ? std::exp(lr / nr) : NAN);
     }
-    r.scalar("eq9_worst_deviation", tot.steady ? tot.worst_balance : NAN, "1", "largest |ṅ Δv_y / g - 1| over steady runs (Eq. 9)");
-    r.scalar("impact_slope_min", std::isfinite(tot.min_slope) ? tot.min_slope : NAN, "s",
-             "smallest slope dΔv_y/dv of the impact curve at a steady state's speed (Eq. 9 argument: > 0)");
+    r.put(out_eq9_worst_deviation, tot.steady ? tot.worst_balance : NAN);
+    r.put(out_impact_slope_min, std::isfinite(tot.min_slope) ? tot.min_slope : NAN);
     if (b.length_check > 0) {
         const double k_check = ks[ks.size() > 1 ? 1 : 0]; // make_tasks' choice
         const RunResult& at_length = run_at(results, kFig6, k_check, es.back(), false);
         const RunResult& at_check = run_at(results, kLengthCheck, k_check, es.back(), false);
-        r.scalar("length_check_ratio", (at_length.outcome == kSteady && at_check.outcome == kSteady) ? at_check.v_mean / at_length.v_mean : NAN, "1",
-                 "steady speed at length_check over that at length (same k_N, e_N, slow start)");
+        r.put(out_length_check_ratio, (at_length.outcome == kSteady && at_check.outcome == kSteady) ? at_check.v_mean / at_length.v_mean : NAN);
     }
 }
+
+const TableOut out_eq9_windows = outputs.table("eq9_windows",
+    "ṅ, Δv_y, σ_vx and speed over windows of eq9_window, every run");
+const ScalarOut out_ndot_vs_sigma_vx_exponent = outputs.scalar("ndot_vs_sigma_vx_exponent", "1",
+    "exponent of ṅ ∝ σ_vx^a over all windows");
+const ScalarOut out_ndot_dvy_vs_dvy_exponent = outputs.scalar("ndot_dvy_vs_dvy_exponent", "1",
+    "exponent of ṅ Δv_y ∝ Δv_y^b over all windows");
+const ScalarOut out_sigma_vx_vs_dvy_exponent = outputs.scalar("sigma_vx_vs_dvy_exponent", "1",
+    "exponent of σ_vx ∝ Δv_y^c over all windows");
 
 // The crude estimates below Eq. (9), over windows of every run: ṅ ∝ σ_vx, and ṅ Δv_y grows
 // about quadratically with Δv_y.
@@ -322,14 +344,14 @@ void report_eq9_windows(Result& r, const std::vector<RunResult>& results) {
                 lnd.push_back(n * d);
             }
         }
-    Table& tw = r.table("eq9_windows", "ṅ, Δv_y, σ_vx and speed over windows of eq9_window, every run");
+    Table& tw = r.table(out_eq9_windows);
     tw.add({{"k_N", "N/m", wk}, {"ndot", "1/s", wn}, {"dvy", "m/s", wd}, {"sigma_vx", "m/s", ws}, {"v", "m/s", wv}});
     const auto a = lx.size() >= 10 ? fit_power_law(lx, ly, 0, INFINITY) : PowerLawFit{NAN, NAN, 0};
     const auto c = ld.size() >= 10 ? fit_power_law(ld, lnd, 0, INFINITY) : PowerLawFit{NAN, NAN, 0};
     const auto sd = ld.size() >= 10 ? fit_power_law(ld, lx, 0, INFINITY) : PowerLawFit{NAN, NAN, 0};
-    r.scalar("ndot_vs_sigma_vx_exponent", a.exponent, "1", "exponent of ṅ ∝ σ_vx^a over all windows");
-    r.scalar("ndot_dvy_vs_dvy_exponent", c.exponent, "1", "exponent of ṅ Δv_y ∝ Δv_y^b over all windows");
-    r.scalar("sigma_vx_vs_dvy_exponent", sd.exponent, "1", "exponent of σ_vx ∝ Δv_y^c over all windows");
+    r.put(out_ndot_vs_sigma_vx_exponent, a.exponent);
+    r.put(out_ndot_dvy_vs_dvy_exponent, c.exponent);
+    r.put(out_sigma_vx_vs_dvy_exponent, sd.exponent);
     r.scalar("eq9_windows", double(lx.size()), "1", "windows in those fits");
 }
 

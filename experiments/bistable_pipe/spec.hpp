@@ -13,6 +13,9 @@
 
 namespace granrepro::experiments::bistable_pipe_detail {
 
+// The catalog every output handle of bistable-pipe registers with (data/outputs.hpp).
+inline constexpr Outputs outputs{"bistable-pipe"};
+
 // Units and ranges: experiments/bistable-pipe.toml. Each run's PipeSpec is built from this.
 struct BistablePipeSpec {
     double width = 0, length = 0, length_check = 0, d_wall = 0, wall_spacing = 0; // [m]; length_check 0: off

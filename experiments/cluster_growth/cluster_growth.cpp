@@ -43,7 +43,7 @@ namespace cluster_growth_detail {
 // equilibrated state: the sweep's points 0 and 1, the main run first (the longer one: 1.8 against
 // 0.44 CPU s at quick scale).
 struct ClusterGrowth {
-    static constexpr const char* name = "cluster-growth";
+    static constexpr const char* name = outputs.experiment();
     using Spec = ClusterSpec;
     using Outcome = RunOutcome;
     // The state both runs start from, made once, by the first point that needs it (not at all

@@ -14,10 +14,12 @@ namespace granrepro::experiments::cluster_growth_detail {
 
 namespace {
 
+const TableOut out_energy = outputs.table("energy", "K/K0, C/N and TC-elastic collisions per particle against t");
+
 // Fig. 10: K/K0, C/N and the TC-elastic collisions per particle against t; returns K/K0.
 std::vector<double> fig10_table(Result& res, const Samples& st, double t0, double late_from) {
     const auto& ts = st.ts;
-    Table& t = res.table("energy", "K/K0, C/N and TC-elastic collisions per particle against t");
+    Table& t = res.table(out_energy);
     std::vector<double> kk, an, e18, s2, s1, efrac;
     for (std::size_t i = 0; i < ts.size(); ++i) {
         kk.push_back(st.ks[i] / st.ks[0]);
@@ -45,20 +47,31 @@ std::vector<double> fig10_table(Result& res, const Samples& st, double t0, doubl
     return kk;
 }
 
+const ScalarOut out_t0_fit_over_kinetic = outputs.scalar("t0_fit_over_kinetic", "1",
+    "1/t0 fitted to K(t) over t <= t0 (Eq. 18) over the kinetic-theory value");
+const ScalarOut out_K_slope_steepest_early = outputs.scalar("K_slope_steepest_early", "1",
+    "steepest slope of log K against log t over one octave, t <= late_slope_from");
+const ScalarOut out_K_slope_late = outputs.scalar("K_slope_late", "1",
+    "average slope of log K against log t from late_slope_from to the end (GSL fit)");
+const ScalarOut out_K_slope_late_err = outputs.scalar("K_slope_late_err", "1",
+    "its standard error (residual scatter of the 13-per-decade samples)");
+const ScalarOut out_K_over_eq18_end = outputs.scalar("K_over_eq18_end", "1",
+    "K over Eq. (18) at the end: how much slower than homogeneous cooling");
+
 // How K(t) departs from homogeneous cooling: Eq. (18) early, the slopes later.
 void fig10_slopes(Result& res, const std::vector<double>& ts, const std::vector<double>& kk, double t0, int m, double late_from) {
     // Early cooling: Eq. (18) fitted over t <= t0.
-    res.scalar("t0_fit_over_kinetic", fit_haff_inv_t0(ts, kk, t0) * t0, "1", "1/t0 fitted to K(t) over t <= t0 (Eq. 18) over the kinetic-theory value");
+    res.put(out_t0_fit_over_kinetic, fit_haff_inv_t0(ts, kk, t0) * t0);
     // Steepest local slope d ln K / d ln t (over one octave) before late_slope_from: Eq. (18)
     // tends to -2 only for t >> t0, while clustering sets in at a few t0.
     double steepest = 0;
     for (std::size_t i = std::size_t(m) + 1; i < ts.size() && ts[i] <= late_from; ++i)
         steepest = std::min(steepest, std::log(kk[i] / kk[i - std::size_t(m)]) / std::log(2.0));
-    res.scalar("K_slope_steepest_early", steepest, "1", "steepest slope of log K against log t over one octave, t <= late_slope_from");
+    res.put(out_K_slope_steepest_early, steepest);
     const PowerLawFit late = fit_power_law(ts, kk, late_from, ts.back());
-    res.scalar("K_slope_late", late.exponent, "1", "average slope of log K against log t from late_slope_from to the end (GSL fit)");
-    res.scalar("K_slope_late_err", late.exponent_err, "1", "its standard error (residual scatter of the 13-per-decade samples)");
-    res.scalar("K_over_eq18_end", kk.back() / theory::haff_energy_ratio(ts.back(), t0), "1", "K over Eq. (18) at the end: how much slower than homogeneous cooling");
+    res.put(out_K_slope_late, late.exponent);
+    res.put(out_K_slope_late_err, late.exponent_err);
+    res.put(out_K_over_eq18_end, kk.back() / theory::haff_energy_ratio(ts.back(), t0));
 }
 
 // The TC-elastic share three ways (see the top of cluster_growth.cpp), for t <= elastic_until and over
@@ -98,6 +111,15 @@ void report_elastic_shares(Result& res, const Samples& ls, const std::string& ta
     }
 }
 
+const ScalarOut out_elastic_share_before_until = outputs.scalar("elastic_share_before_until", "1",
+    "TC-elastic share of the pair collisions up to the last sample t <= elastic_until");
+const ScalarOut out_elastic_share_after_until = outputs.scalar("elastic_share_after_until", "1",
+    "TC-elastic share of the pair collisions from that sample to the end");
+const ScalarOut out_elastic_share_late_over_early = outputs.scalar("elastic_share_late_over_early", "1",
+    "elastic_share_after_until / elastic_share_before_until: above 1 when elastic collisions increase for t > elastic_until");
+const ScalarOut out_elastic_share_after_until_collisions = outputs.scalar("elastic_share_after_until_collisions", "1",
+    "pair collisions after elastic_until (sets the counting error of elastic_share_after_until)");
+
 // Fig. 10(b), "for larger times, the number of elastic collisions increases": the TC-elastic
 // share of the pair collisions made after elastic_until (the last sample t <= elastic_until up to
 // the end) over the share made up to it. Above 1: the squares of Fig. 10(b) rise faster than the
@@ -112,12 +134,10 @@ void report_elastic_increase(Result& res, const Samples& st, double until, doubl
         early = st.ecns[u] / st.cns[u];
         late = (st.ecns[e] - st.ecns[u]) / (st.cns[e] - st.cns[u]);
     }
-    res.scalar("elastic_share_before_until", early, "1", "TC-elastic share of the pair collisions up to the last sample t <= elastic_until");
-    res.scalar("elastic_share_after_until", late, "1", "TC-elastic share of the pair collisions from that sample to the end");
-    res.scalar("elastic_share_late_over_early", early > 0 ? late / early : NAN, "1",
-               "elastic_share_after_until / elastic_share_before_until: above 1 when elastic collisions increase for t > elastic_until");
-    res.scalar("elastic_share_after_until_collisions", e > u ? 0.5 * (st.cns[e] - st.cns[u]) * n : NAN, "1",
-               "pair collisions after elastic_until (sets the counting error of elastic_share_after_until)");
+    res.put(out_elastic_share_before_until, early);
+    res.put(out_elastic_share_after_until, late);
+    res.put(out_elastic_share_late_over_early, early > 0 ? late / early : NAN);
+    res.put(out_elastic_share_after_until_collisions, e > u ? 0.5 * (st.cns[e] - st.cns[u]) * n : NAN);
 }
 
 // The disks per cell of a grid of cells of `cell` (at least 3 x 3) over the periodic box of side L,
@@ -165,6 +185,11 @@ std::vector<double> rate_by_density(const Instant& in, double L, double cell, in
     return out;
 }
 
+const ScalarOut out_densest_tenth_rank_of_max_Nc = outputs.scalar("densest_tenth_rank_of_max_Nc", "1",
+    "over the clustered snapshots (C/N >= 70): the lowest density rank (1-10) of the tenth of particles with the largest mean N_c");
+const ScalarOut out_densest_tenth_Nc_over_mean_min = outputs.scalar("densest_tenth_Nc_over_mean_min", "1",
+    "the smallest ratio of the densest tenth's mean N_c to the overall mean there");
+
 // From the first clustered snapshot on (C/N >= 70, Sec. 4.3): the smallest rank of the tenth
 // with the largest mean N_c (10 = the densest at every such snapshot).
 void report_cluster_centres(Result& res, const std::vector<double>& mt, const std::vector<double>& mc,
@@ -175,14 +200,22 @@ void report_cluster_centres(Result& res, const std::vector<double>& mt, const st
             worst = std::isnan(worst) ? top[k] : std::min(worst, top[k]);
             min_ratio = std::isnan(min_ratio) ? ratio[k] : std::min(min_ratio, ratio[k]);
         }
-    res.scalar("densest_tenth_rank_of_max_Nc", worst, "1",
-               "over the clustered snapshots (C/N >= 70): the lowest density rank (1-10) of the tenth of particles with the largest mean N_c");
-    res.scalar("densest_tenth_Nc_over_mean_min", min_ratio, "1", "the smallest ratio of the densest tenth's mean N_c to the overall mean there");
+    res.put(out_densest_tenth_rank_of_max_Nc, worst);
+    res.put(out_densest_tenth_Nc_over_mean_min, min_ratio);
     for (std::size_t k = 0; k < mt.size(); ++k) {
         res.scalar("densest_tenth_Nc_over_mean_t" + number_text(mt[k]), ratio[k], "1", "mean N_c of the densest tenth over the overall mean at this snapshot");
         res.scalar("densest_tenth_rank_of_max_Nc_t" + number_text(mt[k]), top[k], "1", "density rank (1-10) of the tenth with the largest mean N_c");
     }
 }
+
+const ScalarOut out_density_corr_length_growing_share = outputs.scalar("density_corr_length_growing_share", "1",
+    "share of successive Fig. 11 snapshots whose density correlation length exceeds the previous one's");
+const ScalarOut out_density_corr_length_pairs = outputs.scalar("density_corr_length_pairs", "1",
+    "number of such snapshot pairs");
+const ScalarOut out_density_corr_length_last_over_first = outputs.scalar("density_corr_length_last_over_first", "1",
+    "density correlation length at the last snapshot over that at the first");
+const TableOut out_structure_growth = outputs.table("structure_growth",
+    "density correlation length at the Fig. 11 snapshots");
 
 // Fig. 11's "grow in size": the density correlation length at each snapshot, and the share of
 // successive snapshots at which it is larger than at the one before.
@@ -193,15 +226,13 @@ void report_structure_growth(Result& res, const std::vector<double>& mt, const s
         ++pairs;
         if (xi[k] > xi[k - 1]) ++growing;
     }
-    res.scalar("density_corr_length_growing_share", pairs ? double(growing) / pairs : NAN, "1",
-               "share of successive Fig. 11 snapshots whose density correlation length exceeds the previous one's");
-    res.scalar("density_corr_length_pairs", double(pairs), "1", "number of such snapshot pairs");
-    res.scalar("density_corr_length_last_over_first", xi.size() > 1 ? xi.back() / xi.front() : NAN, "1",
-               "density correlation length at the last snapshot over that at the first");
+    res.put(out_density_corr_length_growing_share, pairs ? double(growing) / pairs : NAN);
+    res.put(out_density_corr_length_pairs, double(pairs));
+    res.put(out_density_corr_length_last_over_first, xi.size() > 1 ? xi.back() / xi.front() : NAN);
     for (std::size_t k = 0; k < mt.size(); ++k)
         res.scalar("density_corr_length_t" + number_text(mt[k]), xi[k], "1",
                    "first zero of the density autocorrelation (cells of cluster_cell d), in d, at this snapshot");
-    Table& t = res.table("structure_growth", "density correlation length at the Fig. 11 snapshots");
+    Table& t = res.table(out_structure_growth);
     t.add({{"t", "s", mt}, {"corr_length_over_d", "1", xi}});
 }
 
@@ -251,22 +282,49 @@ KineticTheory kinetic_theory(const ClusterSpec& s) {
     return {rho, omega, theory::haff_t0(s.r, omega)};
 }
 
+const ScalarOut out_N = outputs.scalar("N", "1", "number of disks");
+const ScalarOut out_rho = outputs.scalar("rho", "1", "area fraction (pi/4) N / L^2");
+const ScalarOut out_t0_kinetic = outputs.scalar("t0_kinetic", "s",
+    "t0 of Eq. (18) from kinetic theory (sqrt(2 pi) in Eq. 19; see cooling.cpp)");
+const ScalarOut out_omega_equilibration_over_enskog = outputs.scalar("omega_equilibration_over_enskog", "1",
+    "elastic collision rate per particle during equilibration over Enskog's");
+const ScalarOut out_wall_seconds_run = outputs.scalar("wall_seconds_run", "s",
+    "wall time of the cooling run (after equilibration)");
+const ScalarOut out_events_per_second = outputs.scalar("events_per_second", "1/s",
+    "ED events (collisions, cell crossings, stale) per second");
+const ScalarOut out_collisions_per_second = outputs.scalar("collisions_per_second", "1/s",
+    "pair collisions per second");
+const ScalarOut out_events = outputs.scalar("events", "1", "ED events of the cooling run");
+const ScalarOut out_tc_both = outputs.scalar("tc_both", "1",
+    "pair rule of the main run: 1 = both partners within t_c, 0 = either");
+const ScalarOut out_wall_seconds_other_rule = outputs.scalar("wall_seconds_other_rule", "s",
+    "wall time of the run with the other pair rule");
+const ScalarOut out_t_end = outputs.scalar("t_end", "s", "end of the run");
+const ScalarOut out_C_over_N_end = outputs.scalar("C_over_N_end", "1", "collisions per particle at the end");
+const ScalarOut out_stopped_by_engine = outputs.scalar("stopped_by_engine", "1",
+    "1 if the collapse guard stopped the run");
+
 void report_run(Result& res, const ClusterSpec& s, const KineticTheory& kin, const RunOutcome& main_run,
                 const RunOutcome* other_run) {
-    res.scalar("N", double(s.n()), "1", "number of disks");
-    res.scalar("rho", kin.rho, "1", "area fraction (pi/4) N / L^2");
-    res.scalar("t0_kinetic", kin.t0, "s", "t0 of Eq. (18) from kinetic theory (sqrt(2 pi) in Eq. 19; see cooling.cpp)");
-    res.scalar("omega_equilibration_over_enskog", main_run.omega_eq / kin.omega_enskog, "1", "elastic collision rate per particle during equilibration over Enskog's");
-    res.scalar("wall_seconds_run", main_run.wall, "s", "wall time of the cooling run (after equilibration)");
-    res.scalar("events_per_second", main_run.events / main_run.wall, "1/s", "ED events (collisions, cell crossings, stale) per second");
-    res.scalar("collisions_per_second", main_run.collisions / main_run.wall, "1/s", "pair collisions per second");
-    res.scalar("events", main_run.events, "1", "ED events of the cooling run");
-    res.scalar("tc_both", s.tc_both ? 1.0 : 0.0, "1", "pair rule of the main run: 1 = both partners within t_c, 0 = either");
-    if (other_run) res.scalar("wall_seconds_other_rule", other_run->wall, "s", "wall time of the run with the other pair rule");
-    res.scalar("t_end", main_run.st.ts.back(), "s", "end of the run");
-    res.scalar("C_over_N_end", main_run.st.cns.back(), "1", "collisions per particle at the end");
-    res.scalar("stopped_by_engine", main_run.error.empty() ? 0.0 : 1.0, "1", "1 if the collapse guard stopped the run");
+    res.put(out_N, double(s.n()));
+    res.put(out_rho, kin.rho);
+    res.put(out_t0_kinetic, kin.t0);
+    res.put(out_omega_equilibration_over_enskog, main_run.omega_eq / kin.omega_enskog);
+    res.put(out_wall_seconds_run, main_run.wall);
+    res.put(out_events_per_second, main_run.events / main_run.wall);
+    res.put(out_collisions_per_second, main_run.collisions / main_run.wall);
+    res.put(out_events, main_run.events);
+    res.put(out_tc_both, s.tc_both ? 1.0 : 0.0);
+    if (other_run) res.put(out_wall_seconds_other_rule, other_run->wall);
+    res.put(out_t_end, main_run.st.ts.back());
+    res.put(out_C_over_N_end, main_run.st.cns.back());
+    res.put(out_stopped_by_engine, main_run.error.empty() ? 0.0 : 1.0);
 }
+
+const ScalarOut out_elastic_per_particle_end = outputs.scalar("elastic_per_particle_end", "1",
+    "TC-elastic collisions per particle at the end");
+const ScalarOut out_C_over_N_eq18_at_0_64s = outputs.scalar("C_over_N_eq18_at_0.64s", "1",
+    "C/N at 0.64 s if the gas stayed homogeneous: 4/(1-r^2) ln(1 + t/t0)");
 
 void fig10(Result& res, const ClusterSpec& s, double t0, const Samples& st, const Samples* other) {
     const std::vector<double> kk = fig10_table(res, st, t0, s.late_slope_from);
@@ -274,11 +332,13 @@ void fig10(Result& res, const ClusterSpec& s, double t0, const Samples& st, cons
     // The main pair rule and, with tc_compare_until, the other one.
     report_elastic_shares(res, st, "", s.tc_both ? "both" : "either", s.elastic_until);
     if (other) report_elastic_shares(res, *other, s.tc_both ? "_either" : "_both", s.tc_both ? "either" : "both", s.elastic_until);
-    res.scalar("elastic_per_particle_end", st.ecns.back(), "1", "TC-elastic collisions per particle at the end");
+    res.put(out_elastic_per_particle_end, st.ecns.back());
     report_elastic_increase(res, st, s.elastic_until, double(s.n()));
-    res.scalar("C_over_N_eq18_at_0.64s", 4 / (1 - s.r * s.r) * std::log(1 + 0.64 / t0), "1",
-               "C/N at 0.64 s if the gas stayed homogeneous: 4/(1-r^2) ln(1 + t/t0)");
+    res.put(out_C_over_N_eq18_at_0_64s, 4 / (1 - s.r * s.r) * std::log(1 + 0.64 / t0));
 }
+
+const TableOut out_fig11_selection = outputs.table("fig11_selection",
+    "instants of the snapshots, the common colour range, and N_c in the densest tenth");
 
 // Fig. 11: positions coloured by N_c at the paper's times, one colour range for all panels.
 // Sec. 4.2: "in the bright regions in the centers of the clusters the collision frequency is
@@ -310,7 +370,7 @@ void fig11(Result& res, const std::vector<Instant>& instants, const ClusterSpec&
         xi.push_back(density_correlation_length(*in, s.L(), s.cluster_cell * s.d, s.d));
         ratio.push_back(g.back() / in->mean_rate);
     }
-    Table& meta = res.table("fig11_selection", "instants of the snapshots, the common colour range, and N_c in the densest tenth");
+    Table& meta = res.table(out_fig11_selection);
     meta.add({{"t", "s", mt}, {"C_over_N", "1", mc}, {"Nc_colour_lo", "1/s", std::vector<double>(mt.size(), lo)},
               {"Nc_colour_hi", "1/s", std::vector<double>(mt.size(), hi)}, {"densest_tenth_with_max_Nc", "1", top},
               {"densest_tenth_Nc_over_mean", "1", ratio}});

@@ -146,9 +146,12 @@ Instant make_instant(InstantRecord rec, const ClusterSpec& s) {
     return in;
 }
 
+const TableOut out_instants = outputs.table("instants",
+    "per instant t = t_base 2^k: C/N, N_c statistics and the fits of Eqs. (20)-(22)");
+
 // Fig. 12, every instant: C/N, N_c statistics and the fits of Eqs. (20)-(22).
 void fig12_instants_table(Result& res, const std::vector<Instant>& instants) {
-    Table& t = res.table("instants", "per instant t = t_base 2^k: C/N, N_c statistics and the fits of Eqs. (20)-(22)");
+    Table& t = res.table(out_instants);
     using I = Instant;
     auto col = [&](const char* name, const char* unit, auto get) { t.add(name, unit).values = column(instants, get); };
     const std::vector<std::tuple<const char*, const char*, double I::*>> plain = {
@@ -171,6 +174,11 @@ void fig12_instants_table(Result& res, const std::vector<Instant>& instants) {
     col("bins", "1", [](const Instant& in) { return double(in.hist.centres.size()); });
 }
 
+const ScalarOut out_poisson_mean_width_falling_share = outputs.scalar("poisson_mean_width_falling_share", "1",
+    "share of consecutive instants with C/N <= poisson_until_cn where mean and standard deviation of N_c both fall");
+const ScalarOut out_poisson_mean_width_pairs = outputs.scalar("poisson_mean_width_pairs", "1",
+    "number of such pairs of instants");
+
 // Sec. 4.3: "a Poisson distribution whose mean and width chi/Dt continuously decrease with time
 // for C/N <= 39": the share of the consecutive instants with C/N <= 39 over which both the mean
 // and the standard deviation of N_c fall.
@@ -181,10 +189,12 @@ void report_poisson_falling(Result& res, const std::vector<Instant>& instants, d
             ++pairs;
             if (instants[k].mean_rate < instants[k - 1].mean_rate && instants[k].sd_rate < instants[k - 1].sd_rate) ++falling;
         }
-    res.scalar("poisson_mean_width_falling_share", pairs ? double(falling) / pairs : NAN, "1",
-               "share of consecutive instants with C/N <= poisson_until_cn where mean and standard deviation of N_c both fall");
-    res.scalar("poisson_mean_width_pairs", double(pairs), "1", "number of such pairs of instants");
+    res.put(out_poisson_mean_width_falling_share, pairs ? double(falling) / pairs : NAN);
+    res.put(out_poisson_mean_width_pairs, double(pairs));
 }
+
+const TableOut out_fig12_selection = outputs.table("fig12_selection",
+    "instants shown in Fig. 12: the paper's C/N and ours");
 
 // The instants nearest to the paper's C/N values, and the last: histogram tables and scalars for the claims.
 void fig12_panels(Result& res, const std::vector<Instant>& instants, const std::vector<double>& pcn) {
@@ -207,7 +217,7 @@ void fig12_panels(Result& res, const std::vector<Instant>& instants, const std::
         fig12_panel_scalars(res, in, s < pcn.size() ? "_cn" + number_text(paper) : std::string("_last"));
     }
     // Created last: res.table() may move the tables created before.
-    Table& meta = res.table("fig12_selection", "instants shown in Fig. 12: the paper's C/N and ours");
+    Table& meta = res.table(out_fig12_selection);
     meta.add({{"paper_C_over_N", "1", mp}, {"C_over_N", "1", mc}, {"t", "s", mt}, {"window", "s", mw}});
 }
 
@@ -220,6 +230,15 @@ void report_at_paper_cn(Result& res, const std::vector<Instant>& instants, const
         res.scalar("t" + tag, at_cn(instants, c, [](const Instant& in) { return in.t; }), "s", "time at which C/N reached the paper's value (interpolated)");
     }
 }
+
+const ScalarOut out_B_geomean_70_1404 = outputs.scalar("B_geomean_70_1404", "1/s",
+    "geometric mean of B over the instants with 70 <= C/N <= 1404");
+const ScalarOut out_B_min_70_1404 = outputs.scalar("B_min_70_1404", "1/s", "smallest B there");
+const ScalarOut out_B_tail_geomean_70_1404 = outputs.scalar("B_tail_geomean_70_1404", "1/s",
+    "geometric mean of the tail-fitted B over the instants with 70 <= C/N <= 1404");
+const ScalarOut out_powerlaw_better_tail_share_70_1404 = outputs.scalar("powerlaw_better_tail_share_70_1404", "1",
+    "share of those instants where Eq. (22) fits the tail better than Eq. (21)");
+const ScalarOut out_B_max_70_1404 = outputs.scalar("B_max_70_1404", "1/s", "largest B there");
 
 // B over the clustered instants 70 <= C/N <= 1404 (the paper quotes one B for them).
 void report_clustered_B(Result& res, const std::vector<Instant>& instants) {
@@ -239,14 +258,25 @@ void report_clustered_B(Result& res, const std::vector<Instant>& instants) {
             if (in.power_tail.chi2_reduced < in.expo_tail.chi2_reduced) ++better;
         }
     }
-    res.scalar("B_geomean_70_1404", cnt ? std::exp(lsum / cnt) : NAN, "1/s", "geometric mean of B over the instants with 70 <= C/N <= 1404");
-    res.scalar("B_min_70_1404", cnt ? bmin : NAN, "1/s", "smallest B there");
-    res.scalar("B_tail_geomean_70_1404", c ? std::exp(ls / c) : NAN, "1/s",
-               "geometric mean of the tail-fitted B over the instants with 70 <= C/N <= 1404");
-    res.scalar("powerlaw_better_tail_share_70_1404", c ? double(better) / c : NAN, "1",
-               "share of those instants where Eq. (22) fits the tail better than Eq. (21)");
-    res.scalar("B_max_70_1404", cnt ? bmax : NAN, "1/s", "largest B there");
+    res.put(out_B_geomean_70_1404, cnt ? std::exp(lsum / cnt) : NAN);
+    res.put(out_B_min_70_1404, cnt ? bmin : NAN);
+    res.put(out_B_tail_geomean_70_1404, c ? std::exp(ls / c) : NAN);
+    res.put(out_powerlaw_better_tail_share_70_1404, c ? double(better) / c : NAN);
+    res.put(out_B_max_70_1404, cnt ? bmax : NAN);
 }
+
+const ScalarOut out_powerlaw_better_from_cn = outputs.scalar("powerlaw_better_from_cn", "1",
+    "smallest C/N from which on Eq. (22) fits better than Eq. (21) at every instant");
+const ScalarOut out_B_ratio_1404_over_183 = outputs.scalar("B_ratio_1404_over_183", "1",
+    "B at the instant nearest C/N = 1404 over B nearest 183 (shape change), fits over the whole P(N_c)");
+const ScalarOut out_B_tail_ratio_1404_over_183 = outputs.scalar("B_tail_ratio_1404_over_183", "1",
+    "tail-fitted B at the instant nearest C/N = 1404 over that nearest 183 (shape change)");
+const ScalarOut out_tail_ratio_2567_over_1404 = outputs.scalar("tail_ratio_2567_over_1404", "1",
+    "P(N_c > tail_rate) nearest C/N = 2567 over that nearest 1404 (< 1: the tail drops again)");
+const ScalarOut out_tail_ratio_last_over_1404 = outputs.scalar("tail_ratio_last_over_1404", "1",
+    "P(N_c > tail_rate) at the last instant over that nearest C/N = 1404");
+const ScalarOut out_powerlaw_better_share_after_70 = outputs.scalar("powerlaw_better_share_after_70", "1",
+    "share of the instants with C/N > 70 where Eq. (22) fits better than Eq. (21)");
 
 // Where the power law Eq. (22) takes over from the exponential Eq. (21), and how the shape
 // changes after (Section 4.3).
@@ -257,20 +287,15 @@ void report_powerlaw_onset(Result& res, const std::vector<Instant>& instants) {
         if (!(instants[k].power.chi2_reduced < instants[k].expo.chi2_reduced)) break;
         from = instants[k].cn;
     }
-    res.scalar("powerlaw_better_from_cn", from, "1", "smallest C/N from which on Eq. (22) fits better than Eq. (21) at every instant");
+    res.put(out_powerlaw_better_from_cn, from);
     const int k1 = nearest(instants, 1404.0), k2 = nearest(instants, 2567.0), k0 = nearest(instants, 183.0);
     if (k0 >= 0 && k1 >= 0 && k2 >= 0) {
-        res.scalar("B_ratio_1404_over_183", instants[std::size_t(k1)].power.value / instants[std::size_t(k0)].power.value, "1",
-                   "B at the instant nearest C/N = 1404 over B nearest 183 (shape change), fits over the whole P(N_c)");
+        res.put(out_B_ratio_1404_over_183, instants[std::size_t(k1)].power.value / instants[std::size_t(k0)].power.value);
         // The same with the tail estimator of powerlaw_B (N_c >= tail_fit_from x mean), so that the
         // shape claim and the B claim read Eq. (22) one way (issue 27 §4).
-        res.scalar("B_tail_ratio_1404_over_183",
-                   instants[std::size_t(k1)].power_tail.value / instants[std::size_t(k0)].power_tail.value, "1",
-                   "tail-fitted B at the instant nearest C/N = 1404 over that nearest 183 (shape change)");
-        res.scalar("tail_ratio_2567_over_1404", instants[std::size_t(k2)].tail_fraction / instants[std::size_t(k1)].tail_fraction, "1",
-                   "P(N_c > tail_rate) nearest C/N = 2567 over that nearest 1404 (< 1: the tail drops again)");
-        res.scalar("tail_ratio_last_over_1404", instants.back().tail_fraction / instants[std::size_t(k1)].tail_fraction, "1",
-                   "P(N_c > tail_rate) at the last instant over that nearest C/N = 1404");
+        res.put(out_B_tail_ratio_1404_over_183, instants[std::size_t(k1)].power_tail.value / instants[std::size_t(k0)].power_tail.value);
+        res.put(out_tail_ratio_2567_over_1404, instants[std::size_t(k2)].tail_fraction / instants[std::size_t(k1)].tail_fraction);
+        res.put(out_tail_ratio_last_over_1404, instants.back().tail_fraction / instants[std::size_t(k1)].tail_fraction);
     }
     // Which form fits best over the instants after C/N = 70 (Section 4.3: power law).
     double n_after = 0, pow_best = 0;
@@ -279,8 +304,7 @@ void report_powerlaw_onset(Result& res, const std::vector<Instant>& instants) {
             ++n_after;
             if (in.power.chi2_reduced < in.expo.chi2_reduced) ++pow_best;
         }
-    res.scalar("powerlaw_better_share_after_70", n_after > 0 ? pow_best / n_after : NAN, "1",
-               "share of the instants with C/N > 70 where Eq. (22) fits better than Eq. (21)");
+    res.put(out_powerlaw_better_share_after_70, n_after > 0 ? pow_best / n_after : NAN);
 }
 
 } // namespace granrepro::experiments::cluster_growth_detail

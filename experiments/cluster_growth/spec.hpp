@@ -17,6 +17,9 @@
 
 namespace granrepro::experiments::cluster_growth_detail {
 
+// The catalog every output handle of cluster-growth registers with (data/outputs.hpp).
+inline constexpr Outputs outputs{"cluster-growth"};
+
 enum class Start { lattice, random };
 inline void parse_choice(const std::string& s, Start& x) { x = s == "lattice" ? Start::lattice : Start::random; }
 

@@ -82,7 +82,7 @@ void validate(const ParameterSet& p) {
 // order, ED first (quick scale: ED 0.46, DSMC 0.12 CPU s a seed). A point's random streams are its
 // seed index's, whichever thread, rank or shard computes it.
 struct Cooling {
-    static constexpr const char* name = "cooling";
+    static constexpr const char* name = outputs.experiment();
     using Spec = CoolingSpec;
     using Outcome = Trace;
     using Shared = Setups;

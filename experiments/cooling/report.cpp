@@ -62,6 +62,23 @@ void add_seed_tables(Result& res, const std::vector<Trace>& trs, const std::vect
     }
 }
 
+const ScalarOut out_N = outputs.scalar("N", "1", "number of disks");
+const ScalarOut out_seeds = outputs.scalar("seeds", "1",
+    "independent initial states (equilibration, ED and DSMC each)");
+const ScalarOut out_wall_time_ed = outputs.scalar("wall_time_ed", "s",
+    "wall time of the ED runs from t = 0 with their observables, summed over seeds and resumed parts");
+const ScalarOut out_wall_time_dsmc = outputs.scalar("wall_time_dsmc", "s",
+    "wall time of the DSMC runs from t = 0 with their observables, summed over seeds and resumed parts");
+const ScalarOut out_box = outputs.scalar("box", "m", "side of the periodic box");
+const ScalarOut out_t0_inv_eq19_printed = outputs.scalar("t0_inv_eq19_printed", "1/s",
+    "1/t0 from Eq. (19) as printed (sqrt(pi))");
+const ScalarOut out_t0_inv_kinetic_theory = outputs.scalar("t0_inv_kinetic_theory", "1/s",
+    "1/t0 = (1-r^2) omega_E / 4 with Henderson's g(d): sqrt(2 pi)");
+const ScalarOut out_omega_equilibration_over_enskog = outputs.scalar("omega_equilibration_over_enskog", "1",
+    "elastic ED collision rate over the second half of the equilibration over the Enskog-Henderson rate");
+const ScalarOut out_t0_inv_measured_rate = outputs.scalar("t0_inv_measured_rate", "1/s",
+    "1/t0 from the measured elastic collision rate");
+
 // The run's size and cost, and t0 in its three readings: Eq. (19) as printed, kinetic theory, and
 // the measured elastic collision rate.
 void add_setup(Result& res, const CoolingSpec& c, const Setup& s, const std::vector<Trace>& eds, const std::vector<Trace>& dss) {
@@ -71,18 +88,26 @@ void add_setup(Result& res, const CoolingSpec& c, const Setup& s, const std::vec
     const double s_star = 1 / theory::henderson_contact_value(c.rho);
     const double t0_printed = std::sqrt(M_PI) * c.d * s_star / (2 * (1 - r * r) * c.rho * c.vbar);
     const double t0_measured_rate = 4 / ((1 - r * r) * s.collision_rate);
-    res.scalar("N", double(s.pos.size()), "1", "number of disks");
-    res.scalar("seeds", double(c.seeds), "1", "independent initial states (equilibration, ED and DSMC each)");
-    res.scalar("wall_time_ed", wall_seconds(eds), "s", "wall time of the ED runs from t = 0 with their observables, summed over seeds and resumed parts");
+    res.put(out_N, double(s.pos.size()));
+    res.put(out_seeds, double(c.seeds));
+    res.put(out_wall_time_ed, wall_seconds(eds));
     if (c.run_dsmc)
-        res.scalar("wall_time_dsmc", wall_seconds(dss), "s", "wall time of the DSMC runs from t = 0 with their observables, summed over seeds and resumed parts");
-    res.scalar("box", s.L, "m", "side of the periodic box");
-    res.scalar("t0_inv_eq19_printed", 1 / t0_printed, "1/s", "1/t0 from Eq. (19) as printed (sqrt(pi))");
-    res.scalar("t0_inv_kinetic_theory", 1 / c.t0(), "1/s", "1/t0 = (1-r^2) omega_E / 4 with Henderson's g(d): sqrt(2 pi)");
-    res.scalar("omega_equilibration_over_enskog", s.collision_rate / c.omega_enskog(), "1",
-               "elastic ED collision rate over the second half of the equilibration over the Enskog-Henderson rate");
-    res.scalar("t0_inv_measured_rate", 1 / t0_measured_rate, "1/s", "1/t0 from the measured elastic collision rate");
+        res.put(out_wall_time_dsmc, wall_seconds(dss));
+    res.put(out_box, s.L);
+    res.put(out_t0_inv_eq19_printed, 1 / t0_printed);
+    res.put(out_t0_inv_kinetic_theory, 1 / c.t0());
+    res.put(out_omega_equilibration_over_enskog, s.collision_rate / c.omega_enskog());
+    res.put(out_t0_inv_measured_rate, 1 / t0_measured_rate);
 }
+
+const ScalarOut out_a2_initial_velocities = outputs.scalar("a2_initial_velocities", "1",
+    "a2 of the velocities drawn before the equilibration (uniform components: -0.3)");
+const ScalarOut out_a2_equilibrated = outputs.scalar("a2_equilibrated", "1",
+    "Sonine a2 of the velocities at t = 0 (after the elastic equilibration), all seeds");
+const ScalarOut out_a2_equilibrated_err = outputs.scalar("a2_equilibrated_err", "1",
+    "its standard error (sample variance of v^4)");
+const ScalarOut out_a2_equilibrated_z = outputs.scalar("a2_equilibrated_z", "1",
+    "a2 at t = 0 in standard errors (Maxwellian: |z| ~ 1)");
 
 // The equilibrated state is Maxwellian (Sec. 3: "so that a Maxwellian velocity distribution ...
 // exists"): a2 pooled over the seeds, against 0 with its standard error.
@@ -92,11 +117,26 @@ void add_equilibrated_a2(Result& res, const CoolingSpec& c, std::uint64_t seed, 
     const auto a2 = sonine_a2(all);
     RngStream rng(seed, setup_stream(0));
     const auto v0 = initial_velocities(c, setups[0].mass, rng);
-    res.scalar("a2_initial_velocities", sonine_a2(v0)[0], "1", "a2 of the velocities drawn before the equilibration (uniform components: -0.3)");
-    res.scalar("a2_equilibrated", a2[0], "1", "Sonine a2 of the velocities at t = 0 (after the elastic equilibration), all seeds");
-    res.scalar("a2_equilibrated_err", a2[1], "1", "its standard error (sample variance of v^4)");
-    res.scalar("a2_equilibrated_z", a2[0] / a2[1], "1", "a2 at t = 0 in standard errors (Maxwellian: |z| ~ 1)");
+    res.put(out_a2_initial_velocities, sonine_a2(v0)[0]);
+    res.put(out_a2_equilibrated, a2[0]);
+    res.put(out_a2_equilibrated_err, a2[1]);
+    res.put(out_a2_equilibrated_z, a2[0] / a2[1]);
 }
+
+const ScalarOut out_dsmc_eq18_max_dev_2t0 = outputs.scalar("dsmc_eq18_max_dev_2t0", "1",
+    "max |K/K_18 - 1| for t <= 2 t0, DSMC");
+const ScalarOut out_dsmc_g_inside_contact_mean = outputs.scalar("dsmc_g_inside_contact_mean", "1",
+    "mean g(r/d < 0.9), last snapshot, DSMC (no exclusion hole: about 1)");
+const ScalarOut out_dsmc_g_contact_peak = outputs.scalar("dsmc_g_contact_peak", "1",
+    "g near contact over g at 2.5-5 d, last snapshot, DSMC");
+const ScalarOut out_dsmc_Sk_small_k_growth = outputs.scalar("dsmc_Sk_small_k_growth", "1",
+    "mean S(k <= sk_k_max) at the last snapshot over that at t = 0, DSMC, first seed");
+const ScalarOut out_dsmc_Sk_growth_over_equilibrium = outputs.scalar("dsmc_Sk_growth_over_equilibrium", "1",
+    "mean S(k <= sk_k_max) at the last snapshot over the hard-disk equilibrium S(0), DSMC, first seed");
+const ScalarOut out_dsmc_C_over_N_end = outputs.scalar("dsmc_C_over_N_end", "1",
+    "collisions per particle at t_end, DSMC");
+const ScalarOut out_dsmc_pbd_grazing_ratio_last = outputs.scalar("dsmc_pbd_grazing_ratio_last", "1",
+    "P(b/d>0.8)/P(b/d<0.2), last window, DSMC (molecular chaos: 1)");
 
 // Figs. 2, 6 and 7 of DSMC, and DSMC against ED.
 void add_dsmc(Result& res, const CoolingSpec& c, const std::vector<Trace>& eds, const std::vector<Trace>& dss) {
@@ -105,24 +145,21 @@ void add_dsmc(Result& res, const CoolingSpec& c, const std::vector<Trace>& eds, 
     const std::vector<double> snaps = c.snapshots();
     add_energy_table(res, ds, t0, "dsmc");
     add_structure_tables(res, ds, snaps, c.rho, "dsmc");
-    res.scalar("dsmc_eq18_max_dev_2t0", max_dev(ds, t0, 2 * t0), "1", "max |K/K_18 - 1| for t <= 2 t0, DSMC");
+    res.put(out_dsmc_eq18_max_dev_2t0, max_dev(ds, t0, 2 * t0));
     add_dsmc_kinetics(res, dss, c);
     add_ed_dsmc_energy(res, eds, dss, t0, c.departure_level);
     add_loss_per_collision(res, c, eds, dss);
     const auto& g_last = ds.snaps.back().g;
-    res.scalar("dsmc_g_inside_contact_mean", mean_over(g_last, ds.g_r, 0.0, 0.9), "1", "mean g(r/d < 0.9), last snapshot, DSMC (no exclusion hole: about 1)");
-    res.scalar("dsmc_g_contact_peak", max_over(g_last, ds.g_r, 0.9, 1.1) / mean_over(g_last, ds.g_r, 2.5, 5.0), "1",
-               "g near contact over g at 2.5-5 d, last snapshot, DSMC");
+    res.put(out_dsmc_g_inside_contact_mean, mean_over(g_last, ds.g_r, 0.0, 0.9));
+    res.put(out_dsmc_g_contact_peak, max_over(g_last, ds.g_r, 0.9, 1.1) / mean_over(g_last, ds.g_r, 2.5, 5.0));
     add_sk_agreement(res, eds, dss, snaps, k_small);
     add_cell_imprint(res, eds, dss);
-    res.scalar("dsmc_Sk_small_k_growth", small_k_S(ds, ds.snaps.back(), k_small) / small_k_S(ds, ds.snaps.front(), k_small), "1",
-               "mean S(k <= sk_k_max) at the last snapshot over that at t = 0, DSMC, first seed");
-    res.scalar("dsmc_Sk_growth_over_equilibrium", small_k_S(ds, ds.snaps.back(), k_small) / theory::hard_disk_structure_factor_zero(c.rho), "1",
-               "mean S(k <= sk_k_max) at the last snapshot over the hard-disk equilibrium S(0), DSMC, first seed");
-    res.scalar("dsmc_C_over_N_end", ds.cn.back(), "1", "collisions per particle at t_end, DSMC");
+    res.put(out_dsmc_Sk_small_k_growth, small_k_S(ds, ds.snaps.back(), k_small) / small_k_S(ds, ds.snaps.front(), k_small));
+    res.put(out_dsmc_Sk_growth_over_equilibrium, small_k_S(ds, ds.snaps.back(), k_small) / theory::hard_disk_structure_factor_zero(c.rho));
+    res.put(out_dsmc_C_over_N_end, ds.cn.back());
     add_seed_tables(res, dss, snaps, "dsmc");
     if (c.velocity_correlation) add_velocity_correlation(res, c, dss, "dsmc");
-    res.scalar("dsmc_pbd_grazing_ratio_last", grazing_ratio(ds.pbd.back(), ds.pbd_centres), "1", "P(b/d>0.8)/P(b/d<0.2), last window, DSMC (molecular chaos: 1)");
+    res.put(out_dsmc_pbd_grazing_ratio_last, grazing_ratio(ds.pbd.back(), ds.pbd_centres));
 }
 
 } // namespace

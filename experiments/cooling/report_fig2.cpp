@@ -99,13 +99,19 @@ void hcs_a2(Result& res, const std::vector<Trace>& trs, const CoolingSpec& c, co
 
 } // namespace
 
+const ScalarOut out_dsmc_rate_over_enskog_early = outputs.scalar("dsmc_rate_over_enskog_early", "1",
+    "C/N at t = 0.25 t0 over Haff's law with the Enskog rate, DSMC");
+const ScalarOut out_t0_fit_over_kinetic_dsmc = outputs.scalar("t0_fit_over_kinetic_dsmc", "1",
+    "1/t0 fitted to the DSMC K(t) over t <= t0 (Eq. 18) over the kinetic-theory 1/t0");
+const ScalarOut out_dsmc_over_eq18_2t0 = outputs.scalar("dsmc_over_eq18_2t0", "1", "K/K_18 at t = 2 t0, DSMC");
+
 // What a DSMC variant does before clustering, against kinetic theory (first seed, a2 all seeds).
 void add_dsmc_kinetics(Result& res, const std::vector<Trace>& dss, const CoolingSpec& c) {
     const double t0 = c.t0();
     const Trace& ds = dss.front();
-    res.scalar("dsmc_rate_over_enskog_early", rate_over_enskog(ds, t0, c.omega_enskog()), "1", "C/N at t = 0.25 t0 over Haff's law with the Enskog rate, DSMC");
-    res.scalar("t0_fit_over_kinetic_dsmc", fit_haff_inv_t0(ds.t, k_ratio(ds), t0) * t0, "1", "1/t0 fitted to the DSMC K(t) over t <= t0 (Eq. 18) over the kinetic-theory 1/t0");
-    res.scalar("dsmc_over_eq18_2t0", ratio_at(ds, t0, 2 * t0), "1", "K/K_18 at t = 2 t0, DSMC");
+    res.put(out_dsmc_rate_over_enskog_early, rate_over_enskog(ds, t0, c.omega_enskog()));
+    res.put(out_t0_fit_over_kinetic_dsmc, fit_haff_inv_t0(ds.t, k_ratio(ds), t0) * t0);
+    res.put(out_dsmc_over_eq18_2t0, ratio_at(ds, t0, 2 * t0));
     hcs_a2(res, dss, c, "dsmc");
 }
 
@@ -122,20 +128,36 @@ void add_energy_table(Result& res, const Trace& tr, double t0, const char* name)
            {"elastic_C_over_N", "1", tr.elastic_cn}, {"a2", "1", tr.a2}, {"a2_err", "1", tr.a2_err}});
 }
 
+const ScalarOut out_t0_inv_fit_ed = outputs.scalar("t0_inv_fit_ed", "1/s",
+    "1/t0 fitted to the ED K(t) over t <= t0 (Eq. 18)");
+const ScalarOut out_t0_fit_over_kinetic_ed = outputs.scalar("t0_fit_over_kinetic_ed", "1",
+    "fitted over kinetic-theory 1/t0, ED");
+const ScalarOut out_ed_rate_over_enskog_early = outputs.scalar("ed_rate_over_enskog_early", "1",
+    "C/N at t = 0.25 t0 over Haff's law with the Enskog rate, ED");
+const ScalarOut out_ed_eq18_max_dev_2t0 = outputs.scalar("ed_eq18_max_dev_2t0", "1",
+    "max |K/K_18 - 1| for t <= 2 t0, ED");
+const ScalarOut out_ed_over_eq18_10t0 = outputs.scalar("ed_over_eq18_10t0", "1", "K/K_18 at t = 10 t0, ED");
+const ScalarOut out_ed_over_eq18_end = outputs.scalar("ed_over_eq18_end", "1", "K/K_18 at t_end, ED");
+const ScalarOut out_ed_C_over_N_end = outputs.scalar("ed_C_over_N_end", "1", "collisions per particle at t_end, ED");
+const ScalarOut out_ed_elastic_fraction_end = outputs.scalar("ed_elastic_fraction_end", "1",
+    "TC-elastic share of collisions, ED");
+const ScalarOut out_a2_van_noije_ernst = outputs.scalar("a2_van_noije_ernst", "1",
+    "van Noije-Ernst a2 of the 2D HCS at this r (first Sonine approximation)");
+
 // Fig. 2, ED against kinetic theory: early cooling (Eq. 18, the Enskog rate), where K(t) departs
 // from Eq. (18), and the HCS a2.
 void add_ed_cooling(Result& res, const CoolingSpec& c, const std::vector<Trace>& eds) {
     const Trace& ed = eds.front();
     const double t0 = c.t0();
     const double inv_t0_fit = fit_haff_inv_t0(ed.t, k_ratio(ed), t0);
-    res.scalar("t0_inv_fit_ed", inv_t0_fit, "1/s", "1/t0 fitted to the ED K(t) over t <= t0 (Eq. 18)");
-    res.scalar("t0_fit_over_kinetic_ed", inv_t0_fit * t0, "1", "fitted over kinetic-theory 1/t0, ED");
-    res.scalar("ed_rate_over_enskog_early", rate_over_enskog(ed, t0, c.omega_enskog()), "1", "C/N at t = 0.25 t0 over Haff's law with the Enskog rate, ED");
-    res.scalar("ed_eq18_max_dev_2t0", max_dev(ed, t0, 2 * t0), "1", "max |K/K_18 - 1| for t <= 2 t0, ED");
-    res.scalar("ed_over_eq18_10t0", ratio_at(ed, t0, 10 * t0), "1", "K/K_18 at t = 10 t0, ED");
-    res.scalar("ed_over_eq18_end", ratio_at(ed, t0, ed.t.back()), "1", "K/K_18 at t_end, ED");
-    res.scalar("ed_C_over_N_end", ed.cn.back(), "1", "collisions per particle at t_end, ED");
-    res.scalar("ed_elastic_fraction_end", ed.elastic_cn.back() / ed.cn.back(), "1", "TC-elastic share of collisions, ED");
+    res.put(out_t0_inv_fit_ed, inv_t0_fit);
+    res.put(out_t0_fit_over_kinetic_ed, inv_t0_fit * t0);
+    res.put(out_ed_rate_over_enskog_early, rate_over_enskog(ed, t0, c.omega_enskog()));
+    res.put(out_ed_eq18_max_dev_2t0, max_dev(ed, t0, 2 * t0));
+    res.put(out_ed_over_eq18_10t0, ratio_at(ed, t0, 10 * t0));
+    res.put(out_ed_over_eq18_end, ratio_at(ed, t0, ed.t.back()));
+    res.put(out_ed_C_over_N_end, ed.cn.back());
+    res.put(out_ed_elastic_fraction_end, ed.elastic_cn.back() / ed.cn.back());
     // Departure from homogeneous cooling (Sec. 3.1: "at t/t0 ≈ 2 substantial deviations"): the
     // first t/t0 where the ED K(t) leaves Eq. (18) by more than departure_level, per seed.
     std::vector<double> dep;
@@ -154,9 +176,17 @@ void add_ed_cooling(Result& res, const CoolingSpec& c, const std::vector<Trace>&
     }
     add_mean_sd(res, "ed_departure_from_fit_t_over_t0", dep_fit,
                 "first t/t0 with |K_ED/K_18(t; fitted t0) - 1| > departure_level, 1/t0 fitted per seed over t <= t0, mean over seeds");
-    res.scalar("a2_van_noije_ernst", theory::van_noije_ernst_a2(c.r, 2), "1", "van Noije-Ernst a2 of the 2D HCS at this r (first Sonine approximation)");
+    res.put(out_a2_van_noije_ernst, theory::van_noije_ernst_a2(c.r, 2));
     hcs_a2(res, eds, c, "ed");
 }
+
+const ScalarOut out_dsmc_vs_ed_max_dev_5t0 = outputs.scalar("dsmc_vs_ed_max_dev_5t0", "1",
+    "max |K_DSMC/K_ED - 1| for t <= 5 t0");
+const ScalarOut out_dsmc_over_ed_max_late = outputs.scalar("dsmc_over_ed_max_late", "1",
+    "largest K_DSMC/K_ED for t >= 30 t0");
+const ScalarOut out_dsmc_over_ed_end = outputs.scalar("dsmc_over_ed_end", "1", "K_DSMC/K_ED at t_end");
+const ScalarOut out_dsmc_over_ed_t0 = outputs.scalar("dsmc_over_ed_t0", "1", "K_DSMC/K_ED at t = t0");
+const ScalarOut out_dsmc_over_ed_5t0 = outputs.scalar("dsmc_over_ed_5t0", "1", "K_DSMC/K_ED at t = 5 t0");
 
 // Fig. 2, DSMC against ED: where their K(t) agree, and where they split (Sec. 3.1: "only at
 // t/t0 ≈ 10 a difference"): the first t/t0 with |K_DSMC/K_ED - 1| > level, per seed.
@@ -168,16 +198,29 @@ void add_ed_dsmc_energy(Result& res, const std::vector<Trace>& eds, const std::v
         if (ed.t[i] <= 5 * t0) early = std::max(early, std::abs(kd[i] / ke[i] - 1));
         if (ed.t[i] >= 30 * t0) late_max = std::max(late_max, kd[i] / ke[i]);
     }
-    res.scalar("dsmc_vs_ed_max_dev_5t0", early, "1", "max |K_DSMC/K_ED - 1| for t <= 5 t0");
-    res.scalar("dsmc_over_ed_max_late", late_max > 0 ? late_max : NAN, "1", "largest K_DSMC/K_ED for t >= 30 t0");
-    res.scalar("dsmc_over_ed_end", kd.back() / ke.back(), "1", "K_DSMC/K_ED at t_end");
-    res.scalar("dsmc_over_ed_t0", ratio_at(ds, t0, t0) / ratio_at(ed, t0, t0), "1", "K_DSMC/K_ED at t = t0");
-    res.scalar("dsmc_over_ed_5t0", ratio_at(ds, t0, 5 * t0) / ratio_at(ed, t0, 5 * t0), "1", "K_DSMC/K_ED at t = 5 t0");
+    res.put(out_dsmc_vs_ed_max_dev_5t0, early);
+    res.put(out_dsmc_over_ed_max_late, late_max > 0 ? late_max : NAN);
+    res.put(out_dsmc_over_ed_end, kd.back() / ke.back());
+    res.put(out_dsmc_over_ed_t0, ratio_at(ds, t0, t0) / ratio_at(ed, t0, t0));
+    res.put(out_dsmc_over_ed_5t0, ratio_at(ds, t0, 5 * t0) / ratio_at(ed, t0, 5 * t0));
     std::vector<double> split;
     for (std::size_t k = 0; k < eds.size(); ++k)
         split.push_back(first_departure(eds[k].t, k_ratio(dss[k]), k_ratio(eds[k]), t0, level));
     add_mean_sd(res, "dsmc_ed_split_t_over_t0", split, "first t/t0 with |K_DSMC/K_ED - 1| > departure_level, mean over seeds");
 }
+
+const TableOut out_loss_per_collision = outputs.table("loss_per_collision",
+    "energy lost per collision, DSMC over ED, windows of t/t0 (mean over seeds)");
+const ScalarOut out_loss_per_collision_dsmc_over_ed_min_after_2t0 = outputs.scalar("loss_per_collision_dsmc_over_ed_min_after_2t0", "1",
+    "smallest DSMC/ED energy loss per collision over the windows 2-5, 5-10, 10-20, 20-50 t0 (those inside the run), seed mean");
+const ScalarOut out_loss_per_collision_dsmc_over_ed_min_after_2t0_sd = outputs.scalar("loss_per_collision_dsmc_over_ed_min_after_2t0_sd", "1",
+    "its seed standard deviation (NaN for one seed)");
+const ScalarOut out_loss_per_collision_dsmc_over_ed_2_5t0 = outputs.scalar("loss_per_collision_dsmc_over_ed_2_5t0", "1",
+    "DSMC/ED energy loss per collision over 2-5 t0, seed mean");
+const ScalarOut out_loss_per_collision_ratio_rising_share = outputs.scalar("loss_per_collision_ratio_rising_share", "1",
+    "share of successive windows from 2 t0 on in which DSMC/ED energy loss per collision rises");
+const ScalarOut out_loss_per_collision_ratio_rising_pairs = outputs.scalar("loss_per_collision_ratio_rising_pairs", "1",
+    "number of such window pairs");
 
 // Sec. 3.1, "DSMC dissipates more energy than ED as soon as the number of central collisions is
 // overestimated": the energy lost per collision, -ln(K(b)/K(a)) / ((1 - r^2)/2 (C/N(b) - C/N(a)))
@@ -212,7 +255,7 @@ void add_loss_per_collision(Result& res, const CoolingSpec& c, const std::vector
         ratio.push_back(ms.mean);
         sd.push_back(ms.sd);
     }
-    Table& t = res.table("loss_per_collision", "energy lost per collision, DSMC over ED, windows of t/t0 (mean over seeds)");
+    Table& t = res.table(out_loss_per_collision);
     t.add({{"t_over_t0_begin", "1", lo}, {"t_over_t0_end", "1", hi}, {"dsmc_over_ed", "1", ratio}, {"dsmc_over_ed_sd", "1", sd}});
     double min_ratio = NAN, min_sd = NAN;
     int pairs = 0, rising = 0;
@@ -227,13 +270,10 @@ void add_loss_per_collision(Result& res, const CoolingSpec& c, const std::vector
             if (ratio[w] > ratio[w - 1]) ++rising;
         }
     }
-    res.scalar("loss_per_collision_dsmc_over_ed_min_after_2t0", min_ratio, "1",
-               "smallest DSMC/ED energy loss per collision over the windows 2-5, 5-10, 10-20, 20-50 t0 (those inside the run), seed mean");
-    res.scalar("loss_per_collision_dsmc_over_ed_min_after_2t0_sd", min_sd, "1", "its seed standard deviation (NaN for one seed)");
-    res.scalar("loss_per_collision_dsmc_over_ed_2_5t0", ratio.size() > 3 && lo[3] == 2 ? ratio[3] : NAN, "1",
-               "DSMC/ED energy loss per collision over 2-5 t0, seed mean");
-    res.scalar("loss_per_collision_ratio_rising_share", pairs ? double(rising) / pairs : NAN, "1",
-               "share of successive windows from 2 t0 on in which DSMC/ED energy loss per collision rises");
-    res.scalar("loss_per_collision_ratio_rising_pairs", double(pairs), "1", "number of such window pairs");
+    res.put(out_loss_per_collision_dsmc_over_ed_min_after_2t0, min_ratio);
+    res.put(out_loss_per_collision_dsmc_over_ed_min_after_2t0_sd, min_sd);
+    res.put(out_loss_per_collision_dsmc_over_ed_2_5t0, ratio.size() > 3 && lo[3] == 2 ? ratio[3] : NAN);
+    res.put(out_loss_per_collision_ratio_rising_share, pairs ? double(rising) / pairs : NAN);
+    res.put(out_loss_per_collision_ratio_rising_pairs, double(pairs));
 }
 } // namespace granrepro::experiments::cooling_detail

@@ -118,28 +118,44 @@ void add_velocity_correlation(Result& res, const CoolingSpec& c, const std::vect
     }
 }
 
+const ScalarOut out_ed_g_inside_contact_max = outputs.scalar("ed_g_inside_contact_max", "1",
+    "largest g(r/d) for r/d < 0.98, last snapshot, ED");
+const ScalarOut out_ed_g_peak_sqrt3_contrast = outputs.scalar("ed_g_peak_sqrt3_contrast", "1",
+    "max g near sqrt(3) over min g in [1.4, 1.6], last snapshot, ED");
+const ScalarOut out_ed_g_peak_2_contrast = outputs.scalar("ed_g_peak_2_contrast", "1",
+    "max g near 2 over min g in [1.8, 1.9], last snapshot, ED");
+const ScalarOut out_ed_g_peak_3_contrast = outputs.scalar("ed_g_peak_3_contrast", "1",
+    "max g near 3 over min g in [2.75, 2.9], last snapshot, ED");
+const ScalarOut out_ed_g_contact = outputs.scalar("ed_g_contact", "1", "g at contact, last snapshot, ED");
+const ScalarOut out_ed_g_early_vs_elastic_chi2 = outputs.scalar("ed_g_early_vs_elastic_chi2", "1",
+    "chi^2 per bin of g(r/d) at the first snapshot after t = 0 against t = 0 (elastic), 0.98 <= r/d <= 5, ED");
+const ScalarOut out_ed_g_early_vs_elastic_chi2_beyond_contact = outputs.scalar("ed_g_early_vs_elastic_chi2_beyond_contact", "1",
+    "the same over 1.1 <= r/d <= 5");
+const ScalarOut out_ed_g_early_vs_elastic_bins_beyond_contact = outputs.scalar("ed_g_early_vs_elastic_bins_beyond_contact", "1",
+    "bins in that range");
+const ScalarOut out_ed_g_early_time_over_t0 = outputs.scalar("ed_g_early_time_over_t0", "1",
+    "time of that snapshot in t0");
+const ScalarOut out_ed_g_contact_early_over_elastic = outputs.scalar("ed_g_contact_early_over_elastic", "1",
+    "contact value of g at the first snapshot after t = 0 over that at t = 0, ED");
+
 // Fig. 6, ED: the clustered g at the last snapshot (exclusion hole, the peaks of packed disks at
 // sqrt(3), 2 and 3 d, contact value), and early g as elastic.
 void add_ed_g(Result& res, const std::vector<Trace>& eds, const std::vector<double>& snaps, double t0) {
     const Trace& ed = eds.front();
     const auto& g_last = ed.snaps.back().g;
-    res.scalar("ed_g_inside_contact_max", max_over(g_last, ed.g_r, 0.0, 0.98), "1", "largest g(r/d) for r/d < 0.98, last snapshot, ED");
-    res.scalar("ed_g_peak_sqrt3_contrast", max_over(g_last, ed.g_r, 1.68, 1.78) / min_over(g_last, ed.g_r, 1.4, 1.6), "1",
-               "max g near sqrt(3) over min g in [1.4, 1.6], last snapshot, ED");
-    res.scalar("ed_g_peak_2_contrast", max_over(g_last, ed.g_r, 1.95, 2.05) / min_over(g_last, ed.g_r, 1.8, 1.9), "1",
-               "max g near 2 over min g in [1.8, 1.9], last snapshot, ED");
-    res.scalar("ed_g_peak_3_contrast", max_over(g_last, ed.g_r, 2.95, 3.05) / min_over(g_last, ed.g_r, 2.75, 2.9), "1",
-               "max g near 3 over min g in [2.75, 2.9], last snapshot, ED");
-    res.scalar("ed_g_contact", max_over(g_last, ed.g_r, 1.0, 1.04), "1", "g at contact, last snapshot, ED");
+    res.put(out_ed_g_inside_contact_max, max_over(g_last, ed.g_r, 0.0, 0.98));
+    res.put(out_ed_g_peak_sqrt3_contrast, max_over(g_last, ed.g_r, 1.68, 1.78) / min_over(g_last, ed.g_r, 1.4, 1.6));
+    res.put(out_ed_g_peak_2_contrast, max_over(g_last, ed.g_r, 1.95, 2.05) / min_over(g_last, ed.g_r, 1.8, 1.9));
+    res.put(out_ed_g_peak_3_contrast, max_over(g_last, ed.g_r, 2.95, 3.05) / min_over(g_last, ed.g_r, 2.75, 2.9));
+    res.put(out_ed_g_contact, max_over(g_last, ed.g_r, 1.0, 1.04));
     // Early g equals the elastic one (Sec. 3.3: "for short times one observes g as for an elastic
     // hard sphere gas"): the first snapshot after t = 0 against t = 0 (the end of the elastic
     // equilibration), over 0.98 <= r/d <= 5.
     if (ed.snaps.size() < 2) return;
     const auto all = early_g_chi2(ed, 0.98), beyond = early_g_chi2(ed, 1.1);
-    res.scalar("ed_g_early_vs_elastic_chi2", all[0], "1",
-               "chi^2 per bin of g(r/d) at the first snapshot after t = 0 against t = 0 (elastic), 0.98 <= r/d <= 5, ED");
-    res.scalar("ed_g_early_vs_elastic_chi2_beyond_contact", beyond[0], "1", "the same over 1.1 <= r/d <= 5");
-    res.scalar("ed_g_early_vs_elastic_bins_beyond_contact", beyond[1], "1", "bins in that range");
+    res.put(out_ed_g_early_vs_elastic_chi2, all[0]);
+    res.put(out_ed_g_early_vs_elastic_chi2_beyond_contact, beyond[0]);
+    res.put(out_ed_g_early_vs_elastic_bins_beyond_contact, beyond[1]);
     // Every seed's chi^2 beyond contact (issue 43 §3: two first-seed runs gave 1.19 and 1.58,
     // further apart than the counting spread sqrt(2/195) = 0.10 of one), its seed mean and spread.
     std::vector<double> per_seed;
@@ -147,16 +163,26 @@ void add_ed_g(Result& res, const std::vector<Trace>& eds, const std::vector<doub
         if (tr.snaps.size() >= 2) per_seed.push_back(early_g_chi2(tr, 1.1)[0]);
     add_mean_sd(res, "ed_g_early_vs_elastic_chi2_beyond_contact_mean", per_seed,
                 "chi^2 per bin of g(r/d) at the first snapshot after t = 0 against t = 0 over 1.1 <= r/d <= 5, ED, mean over seeds");
-    res.scalar("ed_g_early_time_over_t0", snaps[1] / t0, "1", "time of that snapshot in t0");
-    res.scalar("ed_g_contact_early_over_elastic", max_over(ed.snaps[1].g, ed.g_r, 1.0, 1.04) / max_over(ed.snaps[0].g, ed.g_r, 1.0, 1.04), "1",
-               "contact value of g at the first snapshot after t = 0 over that at t = 0, ED");
+    res.put(out_ed_g_early_time_over_t0, snaps[1] / t0);
+    res.put(out_ed_g_contact_early_over_elastic, max_over(ed.snaps[1].g, ed.g_r, 1.0, 1.04) / max_over(ed.snaps[0].g, ed.g_r, 1.0, 1.04));
 }
+
+const ScalarOut out_Sk_equilibrium_hard_disks = outputs.scalar("Sk_equilibrium_hard_disks", "1",
+    "S(k -> 0) of the elastic hard-disk gas at rho (Henderson's equation of state)");
+const ScalarOut out_ed_Sk_growth_over_equilibrium = outputs.scalar("ed_Sk_growth_over_equilibrium", "1",
+    "mean S(1 <= k <= sk_k_max) at the last snapshot over the equilibrium S(0), ED, mean over seeds");
+const ScalarOut out_ed_Sk_t0_over_equilibrium = outputs.scalar("ed_Sk_t0_over_equilibrium", "1",
+    "the same at t = 0: below 1 where the long waves have not forgotten the lattice start");
+const ScalarOut out_ed_Sk_small_k_growth = outputs.scalar("ed_Sk_small_k_growth", "1",
+    "mean S(k <= sk_k_max) at the last snapshot over that at t = 0 (lattice leftover), ED, first seed");
+const ScalarOut out_ed_Sk_log_seed_sd = outputs.scalar("ed_Sk_log_seed_sd", "1",
+    "seed standard deviation of ln(mean S_ED(k <= sk_k_max)) at the last snapshot: the run-to-run scatter of one run");
 
 // Fig. 7, ED: growth of S(k) at small k, measured from equilibrium: against the elastic hard-disk
 // S(0) (Henderson's equation of state; what an equilibrated elastic gas has at k <= 25), not
 // against the t = 0 snapshot, whose long waves still carry the lattice start.
 void add_ed_sk(Result& res, const std::vector<Trace>& eds, const std::vector<double>& snaps, double k_small, double s_eq) {
-    res.scalar("Sk_equilibrium_hard_disks", s_eq, "1", "S(k -> 0) of the elastic hard-disk gas at rho (Henderson's equation of state)");
+    res.put(out_Sk_equilibrium_hard_disks, s_eq);
     const auto i20 = snapshot_20s(snaps);
     std::vector<double> growth, lattice, change, lns;
     for (const Trace& tr : eds) {
@@ -167,17 +193,16 @@ void add_ed_sk(Result& res, const std::vector<Trace>& eds, const std::vector<dou
         lns.push_back(std::log(growth.back()));
     }
     const Trace& ed = eds.front();
-    res.scalar("ed_Sk_growth_over_equilibrium", mean_sd(growth, NonFinite::censored).mean, "1",
-               "mean S(1 <= k <= sk_k_max) at the last snapshot over the equilibrium S(0), ED, mean over seeds");
-    res.scalar("ed_Sk_t0_over_equilibrium", mean_sd(lattice, NonFinite::censored).mean, "1",
-               "the same at t = 0: below 1 where the long waves have not forgotten the lattice start");
-    res.scalar("ed_Sk_small_k_growth", small_k_S(ed, ed.snaps.back(), k_small) / small_k_S(ed, ed.snaps.front(), k_small), "1",
-               "mean S(k <= sk_k_max) at the last snapshot over that at t = 0 (lattice leftover), ED, first seed");
+    res.put(out_ed_Sk_growth_over_equilibrium, mean_sd(growth, NonFinite::censored).mean);
+    res.put(out_ed_Sk_t0_over_equilibrium, mean_sd(lattice, NonFinite::censored).mean);
+    res.put(out_ed_Sk_small_k_growth, small_k_S(ed, ed.snaps.back(), k_small) / small_k_S(ed, ed.snaps.front(), k_small));
     add_mean_sd(res, "ed_Sk_change_after_20s", change,
                 "relative change of mean S(k <= sk_k_max) from t = 20 s to the last snapshot, ED, mean over seeds");
-    res.scalar("ed_Sk_log_seed_sd", mean_sd(lns, NonFinite::censored).sd, "1",
-               "seed standard deviation of ln(mean S_ED(k <= sk_k_max)) at the last snapshot: the run-to-run scatter of one run");
+    res.put(out_ed_Sk_log_seed_sd, mean_sd(lns, NonFinite::censored).sd);
 }
+
+const TableOut out_sk_change_intervals = outputs.table("sk_change_intervals",
+    "relative change of mean S(1 <= k <= sk_k_max) between successive snapshots from 20 s on: seed mean of the per-seed change (judged convention) with its seed sd, and the change of the seed-mean S");
 
 // Fig. 7, "the structure factor ceases to change for t >= 20 s" (Sec. 3.3), interval by interval:
 // for each pair of successive snapshots from 20 s on (runs to 80 s: 20-40, 40-60, 60-80 s) the
@@ -189,9 +214,7 @@ void add_sk_change_intervals(Result& res, const std::vector<Trace>& eds, const s
                              const std::vector<double>& snaps, double k_small) {
     const auto i20 = snapshot_20s(snaps);
     if (!i20) return;
-    Table& t = res.table("sk_change_intervals",
-                         "relative change of mean S(1 <= k <= sk_k_max) between successive snapshots from 20 s on: seed mean of the "
-                         "per-seed change (judged convention) with its seed sd, and the change of the seed-mean S");
+    Table& t = res.table(out_sk_change_intervals);
     std::vector<double> lo, hi;
     for (std::size_t i = *i20; i + 1 < snaps.size(); ++i) lo.push_back(snaps[i]), hi.push_back(snaps[i + 1]);
     t.add({{"t_begin", "s", lo}, {"t_end", "s", hi}});
@@ -214,6 +237,13 @@ void add_sk_change_intervals(Result& res, const std::vector<Trace>& eds, const s
     }
 }
 
+const TableOut out_sk_seeds = outputs.table("sk_seeds",
+    "per seed: mean S(1 <= k <= sk_k_max) of ED and DSMC at 20 s and at the last snapshot, and the mean ln ratio");
+const ScalarOut out_Sk_dsmc_over_ed_factor = outputs.scalar("Sk_dsmc_over_ed_factor", "1",
+    "exp of Sk_dsmc_over_ed_log: DSMC's S(k <= sk_k_max) in units of ED's");
+const ScalarOut out_Sk_ed_dsmc_mean_abs_log_ratio = outputs.scalar("Sk_ed_dsmc_mean_abs_log_ratio", "1",
+    "mean |ln(S_ED/S_DSMC)| over 1 <= k <= sk_k_max at the last snapshot, mean over seeds");
+
 // Fig. 7, DSMC against ED: agreement of S(k) at small k. Per seed: m = mean over
 // 1 <= k <= sk_k_max of ln(S_DSMC/S_ED) at the last snapshot (and at 20 s); then mean and
 // scatter over seeds, and a table of the seeds.
@@ -232,17 +262,26 @@ void add_sk_agreement(Result& res, const std::vector<Trace>& eds, const std::vec
         abs_last.push_back(mean_log_ratio(a.snaps.back().S, b.snaps.back().S, a.S_k, k_small, true));
         if (i20) m_20.push_back(mean_log_ratio(b.snaps[*i20].S, a.snaps[*i20].S, a.S_k, k_small));
     }
-    Table& t = res.table("sk_seeds", "per seed: mean S(1 <= k <= sk_k_max) of ED and DSMC at 20 s and at the last snapshot, and the mean ln ratio");
+    Table& t = res.table(out_sk_seeds);
     t.add({{"seed_index", "1", idx}, {"S_ed_20s", "1", e20}, {"S_ed_last", "1", elast}, {"S_dsmc_20s", "1", d20},
            {"S_dsmc_last", "1", dlast}, {"mean_ln_ratio_last", "1", m_last}});
     add_mean_sd(res, "Sk_dsmc_over_ed_log", m_last, "ln(S_DSMC/S_ED) averaged over 1 <= k <= sk_k_max at the last snapshot, mean over seeds");
-    res.scalar("Sk_dsmc_over_ed_factor", std::exp(mean_sd(m_last, NonFinite::censored).mean), "1", "exp of Sk_dsmc_over_ed_log: DSMC's S(k <= sk_k_max) in units of ED's");
+    res.put(out_Sk_dsmc_over_ed_factor, std::exp(mean_sd(m_last, NonFinite::censored).mean));
     if (!m_20.empty()) add_mean_sd(res, "Sk_dsmc_over_ed_log_20s", m_20, "the same at t = 20 s");
-    res.scalar("Sk_ed_dsmc_mean_abs_log_ratio", mean_sd(abs_last, NonFinite::censored).mean, "1",
-               "mean |ln(S_ED/S_DSMC)| over 1 <= k <= sk_k_max at the last snapshot, mean over seeds");
+    res.put(out_Sk_ed_dsmc_mean_abs_log_ratio, mean_sd(abs_last, NonFinite::censored).mean);
     add_mean_sd(res, "dsmc_Sk_change_after_20s", d_change,
                 "relative change of mean S(k <= sk_k_max) from t = 20 s to the last snapshot, DSMC, mean over seeds");
 }
+
+const ScalarOut out_dsmc_cells_per_side = outputs.scalar("dsmc_cells_per_side", "1", "DSMC cells per box side");
+const ScalarOut out_dsmc_cell_shell = outputs.scalar("dsmc_cell_shell", "1",
+    "the S(k) shell of the cell lattice (box/cell, aliased into 1..M/2)");
+const ScalarOut out_dsmc_Sk_cell_imprint = outputs.scalar("dsmc_Sk_cell_imprint", "1",
+    "S at the cell shell over the geometric mean of the flanks at 0.75 and 1.25 of it, last snapshot, DSMC, mean over seeds");
+const ScalarOut out_ed_Sk_cell_imprint_control = outputs.scalar("ed_Sk_cell_imprint_control", "1",
+    "the same measure on ED's S(k) (no cells)");
+const ScalarOut out_dsmc_Sk_cell_imprint_over_ed = outputs.scalar("dsmc_Sk_cell_imprint_over_ed", "1",
+    "DSMC's contrast at the cell shell over ED's there (1: no imprint)");
 
 // Fig. 7, the DSMC cell lattice's imprint on S(k): the bump of S at the cell shell, DSMC against
 // ED (no cells), last snapshot, mean over seeds. The cells per side are the first seed's DSMC run's.
@@ -256,11 +295,10 @@ void add_cell_imprint(Result& res, const std::vector<Trace>& eds, const std::vec
         imprint.push_back(bump_contrast(dss[k].snaps.back().S, dss[k].S_k, kc));
         imprint_ed.push_back(bump_contrast(eds[k].snaps.back().S, eds[k].S_k, kc));
     }
-    res.scalar("dsmc_cells_per_side", cells, "1", "DSMC cells per box side");
-    res.scalar("dsmc_cell_shell", kc, "1", "the S(k) shell of the cell lattice (box/cell, aliased into 1..M/2)");
-    res.scalar("dsmc_Sk_cell_imprint", mean_sd(imprint, NonFinite::censored).mean, "1",
-               "S at the cell shell over the geometric mean of the flanks at 0.75 and 1.25 of it, last snapshot, DSMC, mean over seeds");
-    res.scalar("ed_Sk_cell_imprint_control", mean_sd(imprint_ed, NonFinite::censored).mean, "1", "the same measure on ED's S(k) (no cells)");
-    res.scalar("dsmc_Sk_cell_imprint_over_ed", mean_sd(imprint, NonFinite::censored).mean / mean_sd(imprint_ed, NonFinite::censored).mean, "1", "DSMC's contrast at the cell shell over ED's there (1: no imprint)");
+    res.put(out_dsmc_cells_per_side, cells);
+    res.put(out_dsmc_cell_shell, kc);
+    res.put(out_dsmc_Sk_cell_imprint, mean_sd(imprint, NonFinite::censored).mean);
+    res.put(out_ed_Sk_cell_imprint_control, mean_sd(imprint_ed, NonFinite::censored).mean);
+    res.put(out_dsmc_Sk_cell_imprint_over_ed, mean_sd(imprint, NonFinite::censored).mean / mean_sd(imprint_ed, NonFinite::censored).mean);
 }
 } // namespace granrepro::experiments::cooling_detail

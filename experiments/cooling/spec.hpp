@@ -31,6 +31,9 @@ inline void parse_choice(const std::string& s, DsmcPartner& v) { v = s == "neare
 // Not granrepro::experiments::cooling: that name is the experiment's function (registry.cpp).
 namespace granrepro::experiments::cooling_detail {
 
+// The catalog every output handle of cooling registers with (data/outputs.hpp).
+inline constexpr Outputs outputs{"cooling"};
+
 enum class InitialVelocities { uniform, maxwellian };
 inline void parse_choice(const std::string& s, InitialVelocities& v) {
     v = s == "maxwellian" ? InitialVelocities::maxwellian : InitialVelocities::uniform;

@@ -22,6 +22,9 @@ namespace granrepro::experiments {
 
 namespace {
 
+// The catalog every output handle of emergency-brake registers with (data/outputs.hpp).
+constexpr Outputs outputs{"emergency-brake"};
+
 struct EmergencyBrakeSpec : ImpactShotSpec {
     double wall_spacing = 0;       // wall-grain centre distance, the wall's wavelength [m]
     double pipe_wall_spacing = 0;  // the bistable pipe's, for its impact curves [m]
@@ -213,10 +216,17 @@ double grows_with_kN(const Result& r, const EmergencyBrakeSpec& s) {
     return monotone;
 }
 
+const ScalarOut out_incomplete_impacts = outputs.scalar("incomplete_impacts", "1",
+    "impacts that had not ended within max_steps");
+const ScalarOut out_e_N = outputs.scalar("e_N", "1", "free-wall restitution of the linear law, Eq. (4)");
+const ScalarOut out_t_col = outputs.scalar("t_col", "s", "free-wall contact duration, Eq. (4)");
+const ScalarOut out_v_crit_and_peak_grow_with_kN = outputs.scalar("v_crit_and_peak_grow_with_kN", "1",
+    "1 if v_crit and the peak height increase with k_N");
+
 // Figs. 4 and 5 as a protocol (harness/protocol.hpp): one sweep point per series (milliseconds
 // each, so none is saved), in series order.
 struct EmergencyBrake {
-    static constexpr const char* name = "emergency-brake";
+    static constexpr const char* name = outputs.experiment();
     static constexpr PointFiles files = PointFiles::None;
     using Spec = EmergencyBrakeSpec;
     using Outcome = SeriesPoints;
@@ -241,12 +251,12 @@ struct EmergencyBrake {
         int incomplete = 0;
         for (const auto& se : swept.outcomes)
             for (const auto& q : se.points) incomplete += q.incomplete;
-        r.scalar("incomplete_impacts", incomplete, "1", "impacts that had not ended within max_steps");
-        r.scalar("e_N", sh.law.restitution(s.m_free), "1", "free-wall restitution of the linear law, Eq. (4)");
-        r.scalar("t_col", sh.law.collision_time(s.m_free), "s", "free-wall contact duration, Eq. (4)");
+        r.put(out_incomplete_impacts, incomplete);
+        r.put(out_e_N, sh.law.restitution(s.m_free));
+        r.put(out_t_col, sh.law.collision_time(s.m_free));
         for (std::size_t si = 0; si < sh.series.size(); ++si) report_series(r, sh.vy, sh.series[si], swept.outcomes[si].points);
         if (!s.kN_scan.empty())
-            r.scalar("v_crit_and_peak_grow_with_kN", grows_with_kN(r, s), "1", "1 if v_crit and the peak height increase with k_N");
+            r.put(out_v_crit_and_peak_grow_with_kN, grows_with_kN(r, s));
         return r;
     }
 };

@@ -79,10 +79,14 @@ std::vector<long> cost_order(const ImpactSpec& s) {
     return order;
 }
 
+const ScalarOut out_box_side = outputs.scalar("box_side", "m",
+    "side of the periodic square box at rho (N pi d^2 / (4 L^2) = rho)");
+const ScalarOut out_box_side_over_d = outputs.scalar("box_side_over_d", "1", "box side in diameters");
+
 // Figs. 4 and 5 as a protocol (harness/protocol.hpp): one sweep point per 2D run (random stream
 // i, see ImpactSpec::per_seed) or 3D packing.
 struct ImpactParameter {
-    static constexpr const char* name = "impact-parameter";
+    static constexpr const char* name = outputs.experiment();
     using Spec = ImpactSpec;
     using Outcome = PointResult;
     static void validate(const ParameterSet& p) { granrepro::experiments::validate(p); }
@@ -94,8 +98,8 @@ struct ImpactParameter {
         const std::vector<PointResult>& pts = swept.outcomes;
         Result res;
         const double l = box_side(static_cast<std::size_t>(s.N), s.d, s.rho);
-        res.scalar("box_side", l, "m", "side of the periodic square box at rho (N pi d^2 / (4 L^2) = rho)");
-        res.scalar("box_side_over_d", l / s.d, "1", "box side in diameters");
+        res.put(out_box_side, l);
+        res.put(out_box_side_over_d, l / s.d);
         std::vector<double> centres(static_cast<std::size_t>(s.n_bins));
         for (int b = 0; b < s.n_bins; ++b) centres[static_cast<std::size_t>(b)] = (b + 0.5) / s.n_bins;
         fig4_inelastic(res, s, pts, centres);

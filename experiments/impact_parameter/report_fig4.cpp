@@ -92,9 +92,12 @@ double grazing_ratio_seed_sem(const ImpactSpec& s, const std::vector<PointResult
 
 } // namespace
 
+const TableOut out_fig4_inelastic = outputs.table("fig4_inelastic",
+    "P(b/d) at rho = 0.7495 per r: whole run 0 <= t < t_end and last window");
+
 // Fig. 4, inelastic: whole run and the late window (the last of window_edges).
 void fig4_inelastic(Result& res, const ImpactSpec& s, const std::vector<PointResult>& pts, const std::vector<double>& centres) {
-    Table& t4 = res.table("fig4_inelastic", "P(b/d) at rho = 0.7495 per r: whole run 0 <= t < t_end and last window");
+    Table& t4 = res.table(out_fig4_inelastic);
     t4.add("b_over_d", "1").values = centres;
     for (std::size_t k = 0; k < s.n_r(); ++k) {
         const std::string lb = r_label(s, k);
@@ -139,9 +142,13 @@ void fig4_windows(Result& res, const ImpactSpec& s, const std::vector<PointResul
     }
 }
 
+const TableOut out_fig4_elastic = outputs.table("fig4_elastic", "P(b/d) at r = 1 for N = 240 and several densities");
+const ScalarOut out_elastic_chi2_dof_worst = outputs.scalar("elastic_chi2_dof_worst", "1",
+    "largest chi^2 per dof over the elastic densities");
+
 // Fig. 4, elastic check (Sec. 3.2, "P(b/d) is not sensitive to the density").
 void fig4_elastic(Result& res, const ImpactSpec& s, const std::vector<PointResult>& pts, const std::vector<double>& centres) {
-    Table& te = res.table("fig4_elastic", "P(b/d) at r = 1 for N = 240 and several densities");
+    Table& te = res.table(out_fig4_elastic);
     te.add("b_over_d", "1").values = centres;
     double worst_chi2 = 0.0;
     for (std::size_t j = 0; j < s.elastic_densities.size(); ++j) {
@@ -156,14 +163,17 @@ void fig4_elastic(Result& res, const ImpactSpec& s, const std::vector<PointResul
         res.scalar("elastic_grazing_z_" + lb, ra.z, "1", "(P(b/d > 0.8)/P(b/d < 0.2) - 1) / error at r = 1");
         res.scalar("elastic_collisions_" + lb, static_cast<double>(h.total), "1", "pair collisions counted, all seeds");
     }
-    res.scalar("elastic_chi2_dof_worst", worst_chi2, "1", "largest chi^2 per dof over the elastic densities");
+    res.put(out_elastic_chi2_dof_worst, worst_chi2);
 }
+
+const TableOut out_fig4_elastic_3d = outputs.table("fig4_elastic_3d",
+    "P(b/d) of elastic smooth hard spheres in 3D (periodic cube), per packing fraction, and 2 b/d");
 
 // The 3D check per packing fraction: chi^2 of the bins against 2 b/d (and, to show the test's
 // power, against 1).
 void fig4_elastic_3d(Result& res, const ImpactSpec& s, const std::vector<PointResult>& pts, const std::vector<double>& centres) {
     const int nb = s.n_bins;
-    Table& t3 = res.table("fig4_elastic_3d", "P(b/d) of elastic smooth hard spheres in 3D (periodic cube), per packing fraction, and 2 b/d");
+    Table& t3 = res.table(out_fig4_elastic_3d);
     t3.add("b_over_d", "1").values = centres;
     t3.add("P_2bd", "1").values = column(centres, [](double x) { return 2 * x; });
     for (std::size_t k = 0; k < s.elastic3d_packing.size(); ++k) {

@@ -74,6 +74,9 @@ long find_r(const std::vector<double>& rs, double r) {
 
 } // namespace
 
+const TableOut out_fig5_meta = outputs.table("fig5_meta",
+    "per panel: r, box side, arrow scale, sigma_max, rms speed at t_end");
+
 // One panel of Fig. 5 per r: the figure run (seed 0), and how typical it is over the seeds.
 void fig5_panels(Result& res, const ImpactSpec& s, const std::vector<PointResult>& pts, double l) {
     std::vector<double> sig_max, v_rms, taus;
@@ -98,10 +101,31 @@ void fig5_panels(Result& res, const ImpactSpec& s, const std::vector<PointResult
         res.scalar("flow_fraction_mean_" + lb, seed_sum(s, pts, k, &PointResult::flow_fraction) / ns, "1", "flow_fraction_end averaged over seeds");
         res.scalar("sigma_max_mean_" + lb, seed_sum(s, pts, k, &PointResult::sigma_max) / ns, "N/m", "sigma_max averaged over seeds");
     }
-    Table& tm = res.table("fig5_meta", "per panel: r, box side, arrow scale, sigma_max, rms speed at t_end");
+    Table& tm = res.table(out_fig5_meta);
     tm.add({{"r", "1", s.restitutions}, {"box_over_d", "1", std::vector<double>(s.n_r(), l / s.d)},
             {"sigma_max", "N/m", sig_max}, {"v_rms", "m/s", v_rms}, {"arrow_tau", "s", taus}});
 }
+
+const ScalarOut out_sigma_max_ratio_080_over_090 = outputs.scalar("sigma_max_ratio_080_over_090", "1",
+    "sigma_max(r=0.8)/sigma_max(r=0.9)");
+const ScalarOut out_sigma_max_ratio_095_over_090 = outputs.scalar("sigma_max_ratio_095_over_090", "1",
+    "sigma_max(r=0.95)/sigma_max(r=0.9)");
+const ScalarOut out_v_rms_ratio_080_over_095 = outputs.scalar("v_rms_ratio_080_over_095", "1",
+    "rms speed at t_end, r=0.8 over r=0.95");
+const ScalarOut out_seeds_sigma_max_090_lowest = outputs.scalar("seeds_sigma_max_090_lowest", "1",
+    "fraction of seeds where sigma_max(0.9) is the smallest of the three (as in the paper)");
+const ScalarOut out_seeds_sigma_max_095_highest = outputs.scalar("seeds_sigma_max_095_highest", "1",
+    "fraction of seeds where sigma_max(0.95) is the largest of the three (as in the paper)");
+const ScalarOut out_seeds_v_rms_order_080_090_095 = outputs.scalar("seeds_v_rms_order_080_090_095", "1",
+    "fraction of seeds with v_rms(0.8) > v_rms(0.9) > v_rms(0.95) at t_end (the paper's arrow factors 1, 3, 7)");
+const ScalarOut out_seeds_v_rms_order_reversed = outputs.scalar("seeds_v_rms_order_reversed", "1",
+    "fraction of seeds with v_rms(0.8) < v_rms(0.9) < v_rms(0.95) (homogeneous cooling: v ~ 1/((1 - r^2) t))");
+const ScalarOut out_seeds_v_rms_order_095_080_090 = outputs.scalar("seeds_v_rms_order_095_080_090", "1",
+    "fraction of seeds with v_rms(0.95) > v_rms(0.8) > v_rms(0.9), the order of the paper's sigma_max values 1.56 > 0.894 > 0.568");
+const ScalarOut out_v_rms_ratio_080_over_090_geomean = outputs.scalar("v_rms_ratio_080_over_090_geomean", "1",
+    "v_rms(0.8)/v_rms(0.9) at t_end, geometric mean over seeds (paper's factors: 3)");
+const ScalarOut out_v_rms_ratio_080_over_095_geomean = outputs.scalar("v_rms_ratio_080_over_095_geomean", "1",
+    "v_rms(0.8)/v_rms(0.95) at t_end, geometric mean over seeds (paper's factors: 7)");
 
 // The ordering of Fig. 5's panels over seeds, when r = 0.8, 0.9 and 0.95 are all swept.
 // sigma_max: the paper's values are in arbitrary units, only ratios are comparable: 0.894 / 0.568 =
@@ -112,9 +136,9 @@ void fig5_orderings(Result& res, const ImpactSpec& s, const std::vector<PointRes
     const long k8 = find_r(s.restitutions, 0.8), k9 = find_r(s.restitutions, 0.9), k95 = find_r(s.restitutions, 0.95);
     if (k8 < 0 || k9 < 0 || k95 < 0) return;
     const PointResult &f8 = pts[std::size_t(k8)], &f9 = pts[std::size_t(k9)], &f95 = pts[std::size_t(k95)]; // seed 0
-    res.scalar("sigma_max_ratio_080_over_090", f8.sigma_max / f9.sigma_max, "1", "sigma_max(r=0.8)/sigma_max(r=0.9)");
-    res.scalar("sigma_max_ratio_095_over_090", f95.sigma_max / f9.sigma_max, "1", "sigma_max(r=0.95)/sigma_max(r=0.9)");
-    res.scalar("v_rms_ratio_080_over_095", f8.v_rms / f95.v_rms, "1", "rms speed at t_end, r=0.8 over r=0.95");
+    res.put(out_sigma_max_ratio_080_over_090, f8.sigma_max / f9.sigma_max);
+    res.put(out_sigma_max_ratio_095_over_090, f95.sigma_max / f9.sigma_max);
+    res.put(out_v_rms_ratio_080_over_095, f8.v_rms / f95.v_rms);
     const double ns = static_cast<double>(s.n_seeds());
     double n_090_lowest = 0, n_095_highest = 0, ordered = 0, reversed = 0, stress_order = 0, r89 = 0, r895 = 0;
     std::vector<double> q9, q95; // per seed: sigma_max(0.9) and sigma_max(0.95) over sigma_max(0.8)
@@ -147,18 +171,13 @@ void fig5_orderings(Result& res, const ImpactSpec& s, const std::vector<PointRes
         res.scalar(n + "_fraction_below_paper", share_below(q.q, q.paper), "1",
                    "share of seeds whose ratio lies below the caption's " + number_text(q.paper, 4) + " (Fig. 5: 0.568, 1.56 over 0.894)");
     }
-    res.scalar("seeds_sigma_max_090_lowest", n_090_lowest / ns, "1",
-               "fraction of seeds where sigma_max(0.9) is the smallest of the three (as in the paper)");
-    res.scalar("seeds_sigma_max_095_highest", n_095_highest / ns, "1",
-               "fraction of seeds where sigma_max(0.95) is the largest of the three (as in the paper)");
-    res.scalar("seeds_v_rms_order_080_090_095", ordered / ns, "1",
-               "fraction of seeds with v_rms(0.8) > v_rms(0.9) > v_rms(0.95) at t_end (the paper's arrow factors 1, 3, 7)");
-    res.scalar("seeds_v_rms_order_reversed", reversed / ns, "1",
-               "fraction of seeds with v_rms(0.8) < v_rms(0.9) < v_rms(0.95) (homogeneous cooling: v ~ 1/((1 - r^2) t))");
-    res.scalar("seeds_v_rms_order_095_080_090", stress_order / ns, "1",
-               "fraction of seeds with v_rms(0.95) > v_rms(0.8) > v_rms(0.9), the order of the paper's sigma_max values 1.56 > 0.894 > 0.568");
-    res.scalar("v_rms_ratio_080_over_090_geomean", std::exp(r89), "1", "v_rms(0.8)/v_rms(0.9) at t_end, geometric mean over seeds (paper's factors: 3)");
-    res.scalar("v_rms_ratio_080_over_095_geomean", std::exp(r895), "1", "v_rms(0.8)/v_rms(0.95) at t_end, geometric mean over seeds (paper's factors: 7)");
+    res.put(out_seeds_sigma_max_090_lowest, n_090_lowest / ns);
+    res.put(out_seeds_sigma_max_095_highest, n_095_highest / ns);
+    res.put(out_seeds_v_rms_order_080_090_095, ordered / ns);
+    res.put(out_seeds_v_rms_order_reversed, reversed / ns);
+    res.put(out_seeds_v_rms_order_095_080_090, stress_order / ns);
+    res.put(out_v_rms_ratio_080_over_090_geomean, std::exp(r89));
+    res.put(out_v_rms_ratio_080_over_095_geomean, std::exp(r895));
 }
 
 // Fig. 5 left: two co-rotating eddies with small stresses inside.
@@ -222,9 +241,12 @@ void fig5_eddies(Result& res, const ImpactSpec& s, const std::vector<PointResult
     }
 }
 
+const TableOut out_cooling = outputs.table("cooling",
+    "K(t)/K(0) of the figure runs (seed 0) and Eq. (18) with t0 from Eq. (19)");
+
 // Cooling curves of the figure runs, for reference: Eq. (18) with t0 of Eq. (19) as printed.
 void cooling_curves(Result& res, const ImpactSpec& s, const std::vector<PointResult>& pts) {
-    Table& tk = res.table("cooling", "K(t)/K(0) of the figure runs (seed 0) and Eq. (18) with t0 from Eq. (19)");
+    Table& tk = res.table(out_cooling);
     tk.add("t", "s").values = pts[0].k_t;
     for (std::size_t k = 0; k < s.n_r(); ++k) {
         const std::string lb = r_label(s, k);

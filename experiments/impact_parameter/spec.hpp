@@ -14,6 +14,9 @@
 // Not granrepro::experiments::impact_parameter: that name is the experiment's function (registry.cpp).
 namespace granrepro::experiments::impact_parameter_detail {
 
+// The catalog every output handle of impact-parameter registers with (data/outputs.hpp).
+inline constexpr Outputs outputs{"impact-parameter"};
+
 struct ImpactSpec {
     long N = 0, seeds = 0, stress_snapshots = 0, eddy_shuffles = 0, elastic3d_n_side = 0;
     int n_bins = 0, stress_cells = 0;       // stress cells per side

@@ -47,7 +47,7 @@ Sweep make_sweep(const ParameterStudySpec& s) {
 // Figs. 8 and 9 as a protocol (harness/protocol.hpp): sweep point i is (point i / seeds, seed
 // i % seeds) with random stream i.
 struct ParameterStudy {
-    static constexpr const char* name = "parameter-study";
+    static constexpr const char* name = outputs.experiment();
     using Spec = ParameterStudySpec;
     using Outcome = Trace;
     using Shared = Sweep;

@@ -89,11 +89,20 @@ MeanCurve mean_curve(const std::vector<Trace>& seeds, const std::vector<double>&
     return m;
 }
 
+const ScalarOut out_N = outputs.scalar("N", "1", "number of disks");
+const ScalarOut out_rho = outputs.scalar("rho", "1", "area fraction (pi/4) N / L^2");
+const ScalarOut out_sweep_wall_seconds = outputs.scalar("sweep_wall_seconds", "s",
+    "wall time of the sweep (all points, --threads as given)");
+const ScalarOut out_events_per_second = outputs.scalar("events_per_second", "1/s",
+    "ED events (collisions, cell crossings, stale) per second of one thread");
+const ScalarOut out_runs_stopped_by_engine = outputs.scalar("runs_stopped_by_engine", "1",
+    "runs the collapse guard stopped before cn_end");
+
 void report_totals(Result& res, const ParameterStudySpec& s, const Sweep& sw) {
     const double n = double(s.n_side * s.n_side), L = s.box_over_d;
-    res.scalar("N", n, "1", "number of disks");
-    res.scalar("rho", M_PI / 4 * n / (L * L), "1", "area fraction (pi/4) N / L^2");
-    res.scalar("sweep_wall_seconds", sw.wall, "s", "wall time of the sweep (all points, --threads as given)");
+    res.put(out_N, n);
+    res.put(out_rho, M_PI / 4 * n / (L * L));
+    res.put(out_sweep_wall_seconds, sw.wall);
     double events = 0, cpu = 0, failed = 0;
     for (const auto& pt : sw.traces)
         for (const auto& tr : pt) {
@@ -102,8 +111,8 @@ void report_totals(Result& res, const ParameterStudySpec& s, const Sweep& sw) {
             failed += tr.error.empty() ? 0 : 1;
             if (!tr.error.empty()) warn("parameter-study: " + tr.error);
         }
-    res.scalar("events_per_second", events / cpu, "1/s", "ED events (collisions, cell crossings, stale) per second of one thread");
-    res.scalar("runs_stopped_by_engine", failed, "1", "runs the collapse guard stopped before cn_end");
+    res.put(out_events_per_second, events / cpu);
+    res.put(out_runs_stopped_by_engine, failed);
 }
 
 // Every point's seed 0 and its seed means against C/N (on cn_grid) and against t.
@@ -132,6 +141,17 @@ void report_points(Result& res, Sweep& sw, const std::vector<double>& cn_grid) {
     }
 }
 
+const ScalarOut out_cn_jump_strong_mean = outputs.scalar("cn_jump_strong_mean", "1",
+    "seed mean of the largest C/N jump factor over the Fig. 8 runs with r <= 0.6");
+const ScalarOut out_cn_jump_weak_mean = outputs.scalar("cn_jump_weak_mean", "1",
+    "seed mean of the largest C/N jump factor over the Fig. 8 runs with r >= 0.9");
+const ScalarOut out_cn_jump_strong_minus_weak_z = outputs.scalar("cn_jump_strong_minus_weak_z", "1",
+    "seed mean of (strong - weak) jump factor over its standard error (paired by seed)");
+const ScalarOut out_cn_jump_strong_over_weak = outputs.scalar("cn_jump_strong_over_weak", "1",
+    "cn_jump_strong_mean / cn_jump_weak_mean");
+const TableOut out_cn_jumps = outputs.table("cn_jumps",
+    "largest jump of the normalised collision rate (dC/N/dt)/sqrt(K/K0) over its 16 neighbours, per point (seed mean)");
+
 // Jump factors of every run of Figs. 8 and 9 (seed mean), and per seed the largest over the
 // strong-dissipation runs of Fig. 8 (r <= 0.6) against the largest over the weak ones (r >= 0.9,
 // Sec. 3.2's "weak dissipation"): their paired difference over its standard error.
@@ -157,12 +177,11 @@ void report_cn_jumps(Result& res, const ParameterStudySpec& s, const Sweep& sw) 
         weak.push_back(jw);
         diff.push_back(js - jw);
     }
-    res.scalar("cn_jump_strong_mean", mean_sd(strong).mean, "1", "seed mean of the largest C/N jump factor over the Fig. 8 runs with r <= 0.6");
-    res.scalar("cn_jump_weak_mean", mean_sd(weak).mean, "1", "seed mean of the largest C/N jump factor over the Fig. 8 runs with r >= 0.9");
-    res.scalar("cn_jump_strong_minus_weak_z", mean_sd(diff).mean / mean_sd(diff).sem, "1",
-               "seed mean of (strong - weak) jump factor over its standard error (paired by seed)");
-    res.scalar("cn_jump_strong_over_weak", mean_sd(strong).mean / mean_sd(weak).mean, "1", "cn_jump_strong_mean / cn_jump_weak_mean");
-    Table& t = res.table("cn_jumps", "largest jump of the normalised collision rate (dC/N/dt)/sqrt(K/K0) over its 16 neighbours, per point (seed mean)");
+    res.put(out_cn_jump_strong_mean, mean_sd(strong).mean);
+    res.put(out_cn_jump_weak_mean, mean_sd(weak).mean);
+    res.put(out_cn_jump_strong_minus_weak_z, mean_sd(diff).mean / mean_sd(diff).sem);
+    res.put(out_cn_jump_strong_over_weak, mean_sd(strong).mean / mean_sd(weak).mean);
+    Table& t = res.table(out_cn_jumps);
     t.add({{"r", "1", pr}, {"t_c", "s", ptc}, {"jump_factor", "1", mean}, {"jump_factor_sem", "1", sem}});
 }
 

@@ -38,12 +38,15 @@ struct Fig9 {
     std::vector<MeanCurve> mean_t;                 // seed means against t
     double t_common = INFINITY;                    // [s] the latest time every seed mean reaches
 };
+const ScalarOut out_fig9_common_end_time = outputs.scalar("fig9_common_end_time", "s",
+    "latest time every Fig. 9 run reached");
+
 Fig9 report_fig9_rows(Result& res, const ParameterStudySpec& s, const Sweep& sw, const std::vector<double>& cn_grid) {
     Fig9 f;
     const auto &e1 = s.zeta_fit_early, &e2 = s.zeta_fit_late, &e3 = s.zeta_fit_tail;
     for (std::size_t k : sw.fig9_idx) f.mean_t.push_back(sw.mean_t[k]);
     for (const MeanCurve& m : f.mean_t) f.t_common = std::min(f.t_common, m.x.empty() ? 0.0 : m.x.back());
-    res.scalar("fig9_common_end_time", f.t_common, "s", "latest time every Fig. 9 run reached");
+    res.put(out_fig9_common_end_time, f.t_common);
     for (std::size_t b = 0; b < s.fig9_t_c.size(); ++b) {
         const std::size_t k = sw.fig9_idx[b];
         Fig9Row& row = f.rows.emplace_back(Fig9Row{s.fig9_t_c[b]});
@@ -77,8 +80,31 @@ Fig9 report_fig9_rows(Result& res, const ParameterStudySpec& s, const Sweep& sw,
     return f;
 }
 
+const TableOut out_fig9_summary = outputs.table("fig9_summary",
+    "per t_c at r = fig9_r: power-law exponents of the seed-mean K against C/N");
+const ScalarOut out_zeta_early_mean = outputs.scalar("zeta_early_mean", "1",
+    "early exponent averaged over the t_c values of Fig. 9");
+const ScalarOut out_zeta_early_sem = outputs.scalar("zeta_early_sem", "1",
+    "its standard error from the scatter over t_c");
+const ScalarOut out_zeta_late_mean = outputs.scalar("zeta_late_mean", "1",
+    "late exponent averaged over the t_c values of Fig. 9");
+const ScalarOut out_zeta_late_sem = outputs.scalar("zeta_late_sem", "1",
+    "its standard error from the scatter over t_c");
+const ScalarOut out_zeta_tail_mean = outputs.scalar("zeta_tail_mean", "1",
+    "exponent of the seed-mean K over zeta_fit_tail, averaged over t_c");
+const ScalarOut out_zeta_tail_sem = outputs.scalar("zeta_tail_sem", "1",
+    "its standard error from the scatter over t_c");
+const ScalarOut out_zeta_early_single_run_sd = outputs.scalar("zeta_early_single_run_sd", "1",
+    "standard deviation of the early exponent of single runs (all seeds and t_c)");
+const ScalarOut out_zeta_late_single_run_sd = outputs.scalar("zeta_late_single_run_sd", "1",
+    "standard deviation of the late exponent of single runs (all seeds and t_c)");
+const ScalarOut out_zeta_late_single_run_q10 = outputs.scalar("zeta_late_single_run_q10", "1",
+    "10th percentile of the late exponent of single runs (all seeds and t_c)");
+const ScalarOut out_zeta_late_single_run_q90 = outputs.scalar("zeta_late_single_run_q90", "1",
+    "90th percentile of the late exponent of single runs (all seeds and t_c)");
+
 void report_fig9_summary(Result& res, const Fig9& f) {
-    Table& t = res.table("fig9_summary", "per t_c at r = fig9_r: power-law exponents of the seed-mean K against C/N");
+    Table& t = res.table(out_fig9_summary);
     t.add("t_c", "s").values = column(f.rows, &Fig9Row::t_c);
     const std::pair<const char*, double Fig9Row::*> columns[] = {
         {"zeta_early", &Fig9Row::z1}, {"zeta_early_err", &Fig9Row::z1e}, {"zeta_late", &Fig9Row::z2},
@@ -87,22 +113,30 @@ void report_fig9_summary(Result& res, const Fig9& f) {
     for (const auto& [name, field] : columns) t.add(name, "1").values = column(f.rows, field);
     const MeanSd z1 = mean_sd(column(f.rows, &Fig9Row::z1)), z2 = mean_sd(column(f.rows, &Fig9Row::z2)),
                  z3 = mean_sd(column(f.rows, &Fig9Row::z3));
-    res.scalar("zeta_early_mean", z1.mean, "1", "early exponent averaged over the t_c values of Fig. 9");
-    res.scalar("zeta_early_sem", z1.sem, "1", "its standard error from the scatter over t_c");
-    res.scalar("zeta_late_mean", z2.mean, "1", "late exponent averaged over the t_c values of Fig. 9");
-    res.scalar("zeta_late_sem", z2.sem, "1", "its standard error from the scatter over t_c");
-    res.scalar("zeta_tail_mean", z3.mean, "1", "exponent of the seed-mean K over zeta_fit_tail, averaged over t_c");
-    res.scalar("zeta_tail_sem", z3.sem, "1", "its standard error from the scatter over t_c");
+    res.put(out_zeta_early_mean, z1.mean);
+    res.put(out_zeta_early_sem, z1.sem);
+    res.put(out_zeta_late_mean, z2.mean);
+    res.put(out_zeta_late_sem, z2.sem);
+    res.put(out_zeta_tail_mean, z3.mean);
+    res.put(out_zeta_tail_sem, z3.sem);
     // Single-run scatter of the exponents (the paper's numbers come from single runs).
-    res.scalar("zeta_early_single_run_sd", mean_sd(f.single_early).sem * std::sqrt(double(f.single_early.size())), "1",
-               "standard deviation of the early exponent of single runs (all seeds and t_c)");
-    res.scalar("zeta_late_single_run_sd", mean_sd(f.single_late).sem * std::sqrt(double(f.single_late.size())), "1",
-               "standard deviation of the late exponent of single runs (all seeds and t_c)");
+    res.put(out_zeta_early_single_run_sd, mean_sd(f.single_early).sem * std::sqrt(double(f.single_early.size())));
+    res.put(out_zeta_late_single_run_sd, mean_sd(f.single_late).sem * std::sqrt(double(f.single_late.size())));
     // Its 10th and 90th percentiles: the range of what one run, as the paper shows, gives over the
     // same fit window (expected/README.md, rule 'single run').
-    res.scalar("zeta_late_single_run_q10", quantile(f.single_late, 0.1), "1", "10th percentile of the late exponent of single runs (all seeds and t_c)");
-    res.scalar("zeta_late_single_run_q90", quantile(f.single_late, 0.9), "1", "90th percentile of the late exponent of single runs (all seeds and t_c)");
+    res.put(out_zeta_late_single_run_q10, quantile(f.single_late, 0.1));
+    res.put(out_zeta_late_single_run_q90, quantile(f.single_late, 0.9));
 }
+
+const ScalarOut out_tc_late_slope = outputs.scalar("tc_late_slope", "1",
+    "d log10 K / d log10 t_c at the common end time (> 0: larger t_c loses less energy)");
+const ScalarOut out_tc_late_slope_err = outputs.scalar("tc_late_slope_err", "1",
+    "its standard error (weights from the seed standard errors)");
+const ScalarOut out_tc_late_slope_z = outputs.scalar("tc_late_slope_z", "1", "slope over its standard error");
+const ScalarOut out_tc_late_log10K_gain = outputs.scalar("tc_late_log10K_gain", "1",
+    "log10 K(largest t_c) - log10 K(smallest t_c) at the common end time (> 0: larger t_c lost less)");
+const ScalarOut out_tc_late_log10K_gain_z = outputs.scalar("tc_late_log10K_gain_z", "1",
+    "that difference over its standard error");
 
 // Later times: the weighted least-squares slope of log10 K(t_common) against log10 t_c (GSL), and
 // K of the largest t_c against K of the smallest.
@@ -116,16 +150,14 @@ void report_tc_late(Result& res, const Fig9& f) {
         }
     double c0 = NAN, c1 = NAN, v00, v01, v11 = NAN, chisq;
     if (x.size() >= 3) gsl_fit_wlinear(x.data(), 1, w.data(), 1, y.data(), 1, x.size(), &c0, &c1, &v00, &v01, &v11, &chisq);
-    res.scalar("tc_late_slope", c1, "1", "d log10 K / d log10 t_c at the common end time (> 0: larger t_c loses less energy)");
-    res.scalar("tc_late_slope_err", std::sqrt(v11), "1", "its standard error (weights from the seed standard errors)");
-    res.scalar("tc_late_slope_z", c1 / std::sqrt(v11), "1", "slope over its standard error");
+    res.put(out_tc_late_slope, c1);
+    res.put(out_tc_late_slope_err, std::sqrt(v11));
+    res.put(out_tc_late_slope_z, c1 / std::sqrt(v11));
     auto by_tc = [](const Fig9Row& a, const Fig9Row& b) { return a.t_c < b.t_c; };
     const Fig9Row& hi = *std::max_element(f.rows.begin(), f.rows.end(), by_tc);
     const Fig9Row& lo = *std::min_element(f.rows.begin(), f.rows.end(), by_tc);
-    res.scalar("tc_late_log10K_gain", hi.k_late - lo.k_late, "1",
-               "log10 K(largest t_c) - log10 K(smallest t_c) at the common end time (> 0: larger t_c lost less)");
-    res.scalar("tc_late_log10K_gain_z", (hi.k_late - lo.k_late) / std::hypot(hi.k_late_e, lo.k_late_e), "1",
-               "that difference over its standard error");
+    res.put(out_tc_late_log10K_gain, hi.k_late - lo.k_late);
+    res.put(out_tc_late_log10K_gain_z, (hi.k_late - lo.k_late) / std::hypot(hi.k_late_e, lo.k_late_e));
 }
 
 // The widest spread of the seed-mean log10 K among the Fig. 9 runs with t_c <= tc_max that reach
@@ -153,6 +185,18 @@ Spread widest_spread(const Fig9& f, const std::vector<double>& times, double tc_
     return w;
 }
 
+const ScalarOut out_tc_spread_log10K_early = outputs.scalar("tc_spread_log10K_early", "1",
+    "largest spread of the seed-mean log10(K/K0) among the t_c runs for t <= tc_compare_time");
+const ScalarOut out_tc_spread_time = outputs.scalar("tc_spread_time", "s", "time of that largest spread");
+const ScalarOut out_tc_spread_z_early = outputs.scalar("tc_spread_z_early", "1", "that spread over its standard error");
+const ScalarOut out_tc_small_spread_z_all = outputs.scalar("tc_small_spread_z_all", "1",
+    "largest spread of the seed-mean log10(K/K0) among the runs with t_c <= tc_small_max over the whole run, in combined standard errors");
+const ScalarOut out_tc_small_spread_log10K_all = outputs.scalar("tc_small_spread_log10K_all", "1",
+    "that spread in decades");
+const ScalarOut out_tc_small_spread_time = outputs.scalar("tc_small_spread_time", "s", "time of that spread");
+const ScalarOut out_tc_small_elastic_fraction_max = outputs.scalar("tc_small_elastic_fraction_max", "1",
+    "largest TC-elastic share of all collisions at the end among the runs with t_c <= tc_small_max");
+
 // Fig. 9(a): the t_c runs agree early (t <= tc_compare_time, log-spaced times from a thousandth
 // of it), and by Sec. 6 those with t_c small enough agree over the whole run.
 void report_tc_spread(Result& res, const ParameterStudySpec& s, const Fig9& f) {
@@ -163,18 +207,17 @@ void report_tc_spread(Result& res, const ParameterStudySpec& s, const Fig9& f) {
     const int steps = int(std::ceil(10 * std::log10(f.t_common / (t_cmp / 1000))));
     for (int i = 0; i <= steps; ++i) whole.push_back(std::min(f.t_common, t_cmp / 1000 * std::pow(10.0, 0.1 * i)));
     const Spread e = widest_spread(f, early, INFINITY, false), w = widest_spread(f, whole, s.tc_small_max, true);
-    res.scalar("tc_spread_log10K_early", e.decades, "1", "largest spread of the seed-mean log10(K/K0) among the t_c runs for t <= tc_compare_time");
-    res.scalar("tc_spread_time", e.t, "s", "time of that largest spread");
-    res.scalar("tc_spread_z_early", e.z, "1", "that spread over its standard error");
+    res.put(out_tc_spread_log10K_early, e.decades);
+    res.put(out_tc_spread_time, e.t);
+    res.put(out_tc_spread_z_early, e.z);
     // Sec. 6: TCED "does not affect the system's behaviour as long as t_c is small enough".
     double el_max = 0;
     for (const Fig9Row& row : f.rows)
         if (row.t_c <= s.tc_small_max) el_max = std::max(el_max, row.el_frac);
-    res.scalar("tc_small_spread_z_all", w.z, "1",
-               "largest spread of the seed-mean log10(K/K0) among the runs with t_c <= tc_small_max over the whole run, in combined standard errors");
-    res.scalar("tc_small_spread_log10K_all", w.decades, "1", "that spread in decades");
-    res.scalar("tc_small_spread_time", w.t, "s", "time of that spread");
-    res.scalar("tc_small_elastic_fraction_max", el_max, "1", "largest TC-elastic share of all collisions at the end among the runs with t_c <= tc_small_max");
+    res.put(out_tc_small_spread_z_all, w.z);
+    res.put(out_tc_small_spread_log10K_all, w.decades);
+    res.put(out_tc_small_spread_time, w.t);
+    res.put(out_tc_small_elastic_fraction_max, el_max);
 }
 
 } // namespace

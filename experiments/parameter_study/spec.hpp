@@ -12,6 +12,9 @@
 // Not granrepro::experiments::parameter_study: that name is the experiment's function (registry.cpp).
 namespace granrepro::experiments::parameter_study_detail {
 
+// The catalog every output handle of parameter-study registers with (data/outputs.hpp).
+inline constexpr Outputs outputs{"parameter-study"};
+
 // Units and ranges: experiments/parameter-study.toml.
 struct ParameterStudySpec {
     long n_side = 0, seeds = 0;

@@ -35,9 +35,12 @@ namespace {
 
 using namespace pipe_arching_detail;
 
+const ScalarOut out_n_seeds = outputs.scalar("n_seeds", "1", "independent runs");
+const ScalarOut out_layers = outputs.scalar("layers", "1", "rows of the initial lattice");
+
 // Sec. 5 and Figs. 13-14 as a protocol (harness/protocol.hpp): one sweep point per seed run.
 struct PipeArching {
-    static constexpr const char* name = "pipe-arching";
+    static constexpr const char* name = outputs.experiment();
     using Spec = PipeArchingSpec;
     using Outcome = SeedRun;
     using Shared = Pipe;
@@ -85,9 +88,8 @@ struct PipeArching {
     static Result report(const Spec&, const Pipe& s, const Swept<SeedRun>& swept, const RunContext&) {
         const std::vector<SeedRun>& runs = swept.outcomes;
         Result res;
-        res.scalar("n_seeds", double(s.n_seeds), "1", "independent runs");
-        res.scalar("layers", std::ceil(double(s.n_particles) / (std::floor((s.L - s.d) / s.a + 1e-9) + 0.5)), "1",
-                   "rows of the initial lattice");
+        res.put(out_n_seeds, double(s.n_seeds));
+        res.put(out_layers, std::ceil(double(s.n_particles) / (std::floor((s.L - s.d) / s.a + 1e-9) + 0.5)));
         for (const FigureTable& f : runs.front().figure) {
             Table& t = res.table(f.name, f.description);
             for (std::size_t c = 0; c < f.columns.size(); ++c) t.add(f.columns[c], f.units[c]).values = f.values[c];

@@ -18,6 +18,9 @@
 // Not granrepro::experiments::pipe_arching: that name is the experiment's function (registry.cpp).
 namespace granrepro::experiments::pipe_arching_detail {
 
+// The catalog every output handle of pipe-arching registers with (data/outputs.hpp).
+inline constexpr Outputs outputs{"pipe-arching"};
+
 enum class TcRule { either, both };    // Eq. (7) for a pair: elastic if either or both partners collided within t_c
 enum class TcFriction { drop, keep }; // what a TC-elastic collision does to mu and beta0
 // Where the lattice's free room (L - d minus the widest row's span) sits: all at the right wall

@@ -66,7 +66,7 @@ ExperimentInfo ExperimentInfo::load(const std::filesystem::path& file) {
         }
         // Outputs are declared by the handles the experiment's reports write through (data/outputs.hpp).
         info.outputs = declared_outputs(info.name);
-        if (!info.outputs.declared() && root.contains("outputs")) { // TRANSITION: experiments not yet converted to handles
+        if (root.contains("outputs")) { // TRANSITION: experiments not yet converted to handles
             const toml::value& o = root.at("outputs");
             for (auto [key, list] : {std::pair{"scalars", &info.outputs.scalars}, std::pair{"tables", &info.outputs.tables}}) {
                 if (!o.contains(key)) continue;
