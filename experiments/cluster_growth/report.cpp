@@ -74,6 +74,27 @@ void fig10_slopes(Result& res, const std::vector<double>& ts, const std::vector<
     res.put(out_K_over_eq18_end, kk.back() / theory::haff_energy_ratio(ts.back(), t0));
 }
 
+// The TC-elastic shares of the main run carry no suffix, those of the run with the other pair
+// rule "_both" (the TOML declared only that one: with tc_both = true the comparison run's
+// "_either" names were refused before and are still).
+const Words rule_words{"", "_both"};
+const ScalarOut out_elastic_fraction_early_max = outputs.scalar("elastic_fraction_early_max<w>", "1",
+    "largest TC-elastic share of all pair collisions, cumulative, for t <= elastic_until", rule_words);
+const ScalarOut out_elastic_fraction_max = outputs.scalar("elastic_fraction_max<w>", "1",
+    "largest TC-elastic share of all pair collisions over the run", rule_words);
+const ScalarOut out_own_interval_share_early_max = outputs.scalar("own_interval_share_early_max<w>", "1",
+    "largest cumulative share of particle-collisions within t_c of that particle's previous one, t <= elastic_until", rule_words);
+const ScalarOut out_hot_particles_early_max = outputs.scalar("hot_particles_early_max<w>", "1",
+    "largest fraction of particles whose latest collision came within t_c of the previous one, samples t <= elastic_until",
+    rule_words);
+const ScalarOut out_hot_particles_early_mean = outputs.scalar("hot_particles_early_mean<w>", "1",
+    "its mean over those (log-spaced) samples", rule_words);
+// At t = 0.04, 0.64 and 10.24 s, the time in the name as the literal in the code spells it.
+const ScalarOut out_C_over_N_at = outputs.scalar("C_over_N_at_<n>s<w>", "1",
+    "C/N = (sum of per-particle counts)/N = 2 pair collisions/N at t = ", rule_words);
+const ScalarOut out_pairs_over_N_at = outputs.scalar("pairs_over_N_at_<n>s<w>", "1",
+    "pair collisions/N (each collision counted once) at t = ", rule_words);
+
 // The TC-elastic share three ways (see the top of cluster_growth.cpp), for t <= elastic_until and over
 // the whole run, of one run with pair rule `rule`.
 void report_elastic_shares(Result& res, const Samples& ls, const std::string& tag, const char* rule, double until) {
@@ -90,13 +111,11 @@ void report_elastic_shares(Result& res, const Samples& ls, const std::string& ta
         ++hot_n;
     }
     const std::string r = std::string(" (") + rule + " rule)";
-    res.scalar("elastic_fraction_early_max" + tag, coll, "1", "largest TC-elastic share of all pair collisions, cumulative, for t <= elastic_until" + r);
-    res.scalar("elastic_fraction_max" + tag, coll_all, "1", "largest TC-elastic share of all pair collisions over the run" + r);
-    res.scalar("own_interval_share_early_max" + tag, own, "1",
-               "largest cumulative share of particle-collisions within t_c of that particle's previous one, t <= elastic_until" + r);
-    res.scalar("hot_particles_early_max" + tag, hot_max, "1",
-               "largest fraction of particles whose latest collision came within t_c of the previous one, samples t <= elastic_until" + r);
-    res.scalar("hot_particles_early_mean" + tag, hot_n ? hot_sum / hot_n : NAN, "1", "its mean over those (log-spaced) samples" + r);
+    res.put(out_elastic_fraction_early_max, coll, {tag}, r);
+    res.put(out_elastic_fraction_max, coll_all, {tag}, r);
+    res.put(out_own_interval_share_early_max, own, {tag}, r);
+    res.put(out_hot_particles_early_max, hot_max, {tag}, r);
+    res.put(out_hot_particles_early_mean, hot_n ? hot_sum / hot_n : NAN, {tag}, r);
     auto at = [&](double tq, const std::vector<double>& v) -> double {
         for (std::size_t i = 0; i < ls.ts.size(); ++i)
             if (same_time(ls.ts[i], tq)) return v[i];
@@ -104,10 +123,8 @@ void report_elastic_shares(Result& res, const Samples& ls, const std::string& ta
     };
     for (const char* when : {"0.04", "0.64", "10.24"}) {
         const double tq = std::stod(when);
-        res.scalar(std::string("C_over_N_at_") + when + "s" + tag, at(tq, ls.cns), "1",
-                   std::string("C/N = (sum of per-particle counts)/N = 2 pair collisions/N at t = ") + when + " s" + r);
-        res.scalar(std::string("pairs_over_N_at_") + when + "s" + tag, 0.5 * at(tq, ls.cns), "1",
-                   std::string("pair collisions/N (each collision counted once) at t = ") + when + " s" + r);
+        res.put(out_C_over_N_at, at(tq, ls.cns), {when, tag}, when + (" s" + r));
+        res.put(out_pairs_over_N_at, 0.5 * at(tq, ls.cns), {when, tag}, when + (" s" + r));
     }
 }
 
@@ -189,6 +206,10 @@ const ScalarOut out_densest_tenth_rank_of_max_Nc = outputs.scalar("densest_tenth
     "over the clustered snapshots (C/N >= 70): the lowest density rank (1-10) of the tenth of particles with the largest mean N_c");
 const ScalarOut out_densest_tenth_Nc_over_mean_min = outputs.scalar("densest_tenth_Nc_over_mean_min", "1",
     "the smallest ratio of the densest tenth's mean N_c to the overall mean there");
+const ScalarOut out_densest_tenth_Nc_over_mean_t = outputs.scalar("densest_tenth_Nc_over_mean_t<n>", "1",
+    "mean N_c of the densest tenth over the overall mean at this snapshot");
+const ScalarOut out_densest_tenth_rank_of_max_Nc_t = outputs.scalar("densest_tenth_rank_of_max_Nc_t<n>", "1",
+    "density rank (1-10) of the tenth with the largest mean N_c");
 
 // From the first clustered snapshot on (C/N >= 70, Sec. 4.3): the smallest rank of the tenth
 // with the largest mean N_c (10 = the densest at every such snapshot).
@@ -203,8 +224,8 @@ void report_cluster_centres(Result& res, const std::vector<double>& mt, const st
     res.put(out_densest_tenth_rank_of_max_Nc, worst);
     res.put(out_densest_tenth_Nc_over_mean_min, min_ratio);
     for (std::size_t k = 0; k < mt.size(); ++k) {
-        res.scalar("densest_tenth_Nc_over_mean_t" + number_text(mt[k]), ratio[k], "1", "mean N_c of the densest tenth over the overall mean at this snapshot");
-        res.scalar("densest_tenth_rank_of_max_Nc_t" + number_text(mt[k]), top[k], "1", "density rank (1-10) of the tenth with the largest mean N_c");
+        res.put(out_densest_tenth_Nc_over_mean_t, ratio[k], {mt[k]});
+        res.put(out_densest_tenth_rank_of_max_Nc_t, top[k], {mt[k]});
     }
 }
 
@@ -214,6 +235,8 @@ const ScalarOut out_density_corr_length_pairs = outputs.scalar("density_corr_len
     "number of such snapshot pairs");
 const ScalarOut out_density_corr_length_last_over_first = outputs.scalar("density_corr_length_last_over_first", "1",
     "density correlation length at the last snapshot over that at the first");
+const ScalarOut out_density_corr_length_t = outputs.scalar("density_corr_length_t<n>", "1",
+    "first zero of the density autocorrelation (cells of cluster_cell d), in d, at this snapshot");
 const TableOut out_structure_growth = outputs.table("structure_growth",
     "density correlation length at the Fig. 11 snapshots");
 
@@ -230,8 +253,7 @@ void report_structure_growth(Result& res, const std::vector<double>& mt, const s
     res.put(out_density_corr_length_pairs, double(pairs));
     res.put(out_density_corr_length_last_over_first, xi.size() > 1 ? xi.back() / xi.front() : NAN);
     for (std::size_t k = 0; k < mt.size(); ++k)
-        res.scalar("density_corr_length_t" + number_text(mt[k]), xi[k], "1",
-                   "first zero of the density autocorrelation (cells of cluster_cell d), in d, at this snapshot");
+        res.put(out_density_corr_length_t, xi[k], {mt[k]});
     Table& t = res.table(out_structure_growth);
     t.add({{"t", "s", mt}, {"corr_length_over_d", "1", xi}});
 }
@@ -337,8 +359,7 @@ void fig10(Result& res, const ClusterSpec& s, double t0, const Samples& st, cons
     res.put(out_C_over_N_eq18_at_0_64s, 4 / (1 - s.r * s.r) * std::log(1 + 0.64 / t0));
 }
 
-const TableOut out_fig11_selection = outputs.table("fig11_selection",
-    "instants of the snapshots, the common colour range, and N_c in the densest tenth");
+const TableOut out_snapshot = outputs.table("snapshot_<n>", "positions and N_c over the last t/2 at t = ");
 
 // Fig. 11: positions coloured by N_c at the paper's times, one colour range for all panels.
 // Sec. 4.2: "in the bright regions in the centers of the clusters the collision frequency is
@@ -360,8 +381,7 @@ void fig11(Result& res, const std::vector<Instant>& instants, const ClusterSpec&
     const std::vector<double> mt = column(shown, &Instant::t), mc = column(shown, &Instant::cn);
     std::vector<double> top, ratio, xi;
     for (const Instant* in : shown) {
-        Table& sn = res.table("snapshot_" + std::to_string(top.size()),
-                              "positions and N_c over the last t/2 at t = " + number_text(in->t) + " s");
+        Table& sn = res.table(out_snapshot, {std::to_string(top.size())}, number_text(in->t) + " s");
         const auto x = column(in->pos, [&](const Vec2& q) { return q.x / s.d; });
         const auto y = column(in->pos, [&](const Vec2& q) { return q.y / s.d; });
         sn.add({{"x_over_d", "1", x}, {"y_over_d", "1", y}, {"N_c", "1/s", in->rate}});
@@ -370,7 +390,8 @@ void fig11(Result& res, const std::vector<Instant>& instants, const ClusterSpec&
         xi.push_back(density_correlation_length(*in, s.L(), s.cluster_cell * s.d, s.d));
         ratio.push_back(g.back() / in->mean_rate);
     }
-    Table& meta = res.table(out_fig11_selection);
+    Table& meta = res.table(out_fig_selection, {11},
+                            "instants of the snapshots, the common colour range, and N_c in the densest tenth");
     meta.add({{"t", "s", mt}, {"C_over_N", "1", mc}, {"Nc_colour_lo", "1/s", std::vector<double>(mt.size(), lo)},
               {"Nc_colour_hi", "1/s", std::vector<double>(mt.size(), hi)}, {"densest_tenth_with_max_Nc", "1", top},
               {"densest_tenth_Nc_over_mean", "1", ratio}});

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <functional>
 #include <gsl/gsl_statistics_double.h>
+#include <optional>
 #include <string>
 #include <tuple>
 
@@ -50,9 +51,11 @@ int nearest(const std::vector<Instant>& in, double cn) {
     return best;
 }
 
+const TableOut out_pnc = outputs.table("pnc_<n>", "P(N_c) and the fitted Eqs. (20)-(22) at t = ");
+
 // P(N_c) at one instant with the fitted Eqs. (20)-(22), as Fig. 12 shows it.
 void fig12_histogram_table(Result& res, const Instant& in, std::size_t panel) {
-    Table& h = res.table("pnc_" + std::to_string(panel), "P(N_c) and the fitted Eqs. (20)-(22) at t = " + number_text(in.t) + " s");
+    Table& h = res.table(out_pnc, {std::to_string(panel)}, number_text(in.t) + " s");
     std::vector<double> pp, pe, pw, pwt, pet;
     for (std::size_t b = 0; b < in.hist.centres.size(); ++b) {
         const double w = in.hist.edges[b + 1] - std::max(0.0, in.hist.edges[b]);
@@ -72,31 +75,66 @@ void fig12_histogram_table(Result& res, const Instant& in, std::size_t panel) {
            {"powerlaw_eq22_tail", "s", pwt}, {"exponential_eq21_tail", "s", pet}});
 }
 
-void fig12_panel_scalars(Result& res, const Instant& in, const std::string& tag) {
-    res.scalar("cn_nearest" + tag, in.cn, "1", "our C/N at the instant nearest to the paper's");
-    res.scalar("t_nearest" + tag, in.t, "s", "its time");
-    res.scalar("chi" + tag, in.poisson.value, "1", "Poisson Eq. (20) chi (mean count in Δt = t/2)");
-    res.scalar("chi_err" + tag, in.poisson.error, "1", "its standard error (Cramer-Rao)");
-    res.scalar("chi_since_start" + tag, in.poisson_full.value, "1", "Eq. (20) chi for the counts over (0, t] (window t, not t/2)");
-    res.scalar("chi_since_start_err" + tag, in.poisson_full.error, "1", "its standard error");
-    res.scalar("chi_rate" + tag, in.poisson.value / in.window, "1/s", "chi / Δt, the Poisson mean rate");
-    res.scalar("chi2red_poisson" + tag, in.poisson.chi2_reduced, "1", "Pearson chi^2/dof of the Poisson fit");
-    res.scalar("A" + tag, in.expo.value, "1/s", "exponential Eq. (21) A");
-    res.scalar("A_err" + tag, in.expo.error, "1/s", "its standard error");
-    res.scalar("chi2red_exponential" + tag, in.expo.chi2_reduced, "1", "Pearson chi^2/dof of the exponential fit");
-    res.scalar("B" + tag, in.power.value, "1/s", "power law Eq. (22) B");
-    res.scalar("B_tail" + tag, in.power_tail.value, "1/s", "Eq. (22) B fitted to the tail N_c >= tail_fit_from x mean N_c");
-    res.scalar("B_tail_err" + tag, in.power_tail.error, "1/s", "its standard error");
-    res.scalar("powerlaw_over_exponential_chi2_tail" + tag, in.power_tail.chi2_reduced / in.expo_tail.chi2_reduced, "1",
-               "chi^2/dof of Eq. (22) over that of Eq. (21), both fitted to the tail only (< 1: power law better there)");
-    res.scalar("B_err" + tag, in.power.error, "1/s", "its standard error");
-    res.scalar("chi2red_powerlaw" + tag, in.power.chi2_reduced, "1", "Pearson chi^2/dof of the power-law fit");
-    res.scalar("mean_Nc" + tag, in.mean_rate, "1/s", "mean N_c");
-    res.scalar("tail_fraction" + tag, in.tail_fraction, "1", "fraction of particles with N_c > tail_rate");
-    res.scalar("poisson_over_best_other_chi2" + tag, in.poisson.chi2_reduced / std::min(in.expo.chi2_reduced, in.power.chi2_reduced), "1",
-               "chi^2/dof of Eq. (20) over the better of Eqs. (21), (22) (< 1: Poisson fits best)");
-    res.scalar("powerlaw_over_exponential_chi2" + tag, in.power.chi2_reduced / in.expo.chi2_reduced, "1",
-               "chi^2/dof of Eq. (22) over that of Eq. (21) (< 1: the power law fits better)");
+// A panel's scalars come twice: at the instant nearest to one of the paper's C/N ("chi_cn8") and
+// at the last instant ("chi_last").
+struct PanelOut {
+    ScalarOut near_cn, last;
+};
+PanelOut panel(const std::string& what, const char* unit, const char* description) {
+    return {outputs.scalar(what + "_cn<n>", unit, description), outputs.scalar(what + "_last", unit, description)};
+}
+const PanelOut out_cn_nearest = panel("cn_nearest", "1", "our C/N at the instant nearest to the paper's");
+const PanelOut out_t_nearest = panel("t_nearest", "s", "its time");
+const PanelOut out_chi = panel("chi", "1", "Poisson Eq. (20) chi (mean count in Δt = t/2)");
+const PanelOut out_chi_err = panel("chi_err", "1", "its standard error (Cramer-Rao)");
+const PanelOut out_chi_since_start = panel("chi_since_start", "1", "Eq. (20) chi for the counts over (0, t] (window t, not t/2)");
+const PanelOut out_chi_since_start_err = panel("chi_since_start_err", "1", "its standard error");
+const PanelOut out_chi_rate = panel("chi_rate", "1/s", "chi / Δt, the Poisson mean rate");
+const PanelOut out_chi2red_poisson = panel("chi2red_poisson", "1", "Pearson chi^2/dof of the Poisson fit");
+const PanelOut out_A = panel("A", "1/s", "exponential Eq. (21) A");
+const PanelOut out_A_err = panel("A_err", "1/s", "its standard error");
+const PanelOut out_chi2red_exponential = panel("chi2red_exponential", "1", "Pearson chi^2/dof of the exponential fit");
+const PanelOut out_B = panel("B", "1/s", "power law Eq. (22) B");
+const PanelOut out_B_tail = panel("B_tail", "1/s", "Eq. (22) B fitted to the tail N_c >= tail_fit_from x mean N_c");
+const PanelOut out_B_tail_err = panel("B_tail_err", "1/s", "its standard error");
+const PanelOut out_powerlaw_over_exponential_chi2_tail = panel("powerlaw_over_exponential_chi2_tail", "1",
+    "chi^2/dof of Eq. (22) over that of Eq. (21), both fitted to the tail only (< 1: power law better there)");
+const PanelOut out_B_err = panel("B_err", "1/s", "its standard error");
+const PanelOut out_chi2red_powerlaw = panel("chi2red_powerlaw", "1", "Pearson chi^2/dof of the power-law fit");
+const PanelOut out_mean_Nc = panel("mean_Nc", "1/s", "mean N_c");
+const PanelOut out_tail_fraction = panel("tail_fraction", "1", "fraction of particles with N_c > tail_rate");
+const PanelOut out_poisson_over_best_other_chi2 = panel("poisson_over_best_other_chi2", "1",
+    "chi^2/dof of Eq. (20) over the better of Eqs. (21), (22) (< 1: Poisson fits best)");
+const PanelOut out_powerlaw_over_exponential_chi2 = panel("powerlaw_over_exponential_chi2", "1",
+    "chi^2/dof of Eq. (22) over that of Eq. (21) (< 1: the power law fits better)");
+
+// paper: the paper's C/N the instant is nearest to; none for the last instant.
+void fig12_panel_scalars(Result& res, const Instant& in, std::optional<double> paper) {
+    auto put = [&](const PanelOut& h, double value) {
+        if (paper) res.put(h.near_cn, value, {*paper});
+        else res.put(h.last, value);
+    };
+    put(out_cn_nearest, in.cn);
+    put(out_t_nearest, in.t);
+    put(out_chi, in.poisson.value);
+    put(out_chi_err, in.poisson.error);
+    put(out_chi_since_start, in.poisson_full.value);
+    put(out_chi_since_start_err, in.poisson_full.error);
+    put(out_chi_rate, in.poisson.value / in.window);
+    put(out_chi2red_poisson, in.poisson.chi2_reduced);
+    put(out_A, in.expo.value);
+    put(out_A_err, in.expo.error);
+    put(out_chi2red_exponential, in.expo.chi2_reduced);
+    put(out_B, in.power.value);
+    put(out_B_tail, in.power_tail.value);
+    put(out_B_tail_err, in.power_tail.error);
+    put(out_powerlaw_over_exponential_chi2_tail, in.power_tail.chi2_reduced / in.expo_tail.chi2_reduced);
+    put(out_B_err, in.power.error);
+    put(out_chi2red_powerlaw, in.power.chi2_reduced);
+    put(out_mean_Nc, in.mean_rate);
+    put(out_tail_fraction, in.tail_fraction);
+    put(out_poisson_over_best_other_chi2, in.poisson.chi2_reduced / std::min(in.expo.chi2_reduced, in.power.chi2_reduced));
+    put(out_powerlaw_over_exponential_chi2, in.power.chi2_reduced / in.expo.chi2_reduced);
 }
 
 // The fitted parameters at exactly the paper's C/N: linear interpolation of ln(parameter) in
@@ -193,9 +231,6 @@ void report_poisson_falling(Result& res, const std::vector<Instant>& instants, d
     res.put(out_poisson_mean_width_pairs, double(pairs));
 }
 
-const TableOut out_fig12_selection = outputs.table("fig12_selection",
-    "instants shown in Fig. 12: the paper's C/N and ours");
-
 // The instants nearest to the paper's C/N values, and the last: histogram tables and scalars for the claims.
 void fig12_panels(Result& res, const std::vector<Instant>& instants, const std::vector<double>& pcn) {
     std::vector<int> sel;
@@ -214,20 +249,24 @@ void fig12_panels(Result& res, const std::vector<Instant>& instants, const std::
         mt.push_back(in.t);
         mw.push_back(in.window);
         fig12_histogram_table(res, in, s);
-        fig12_panel_scalars(res, in, s < pcn.size() ? "_cn" + number_text(paper) : std::string("_last"));
+        fig12_panel_scalars(res, in, s < pcn.size() ? std::optional(paper) : std::nullopt);
     }
     // Created last: res.table() may move the tables created before.
-    Table& meta = res.table(out_fig12_selection);
+    Table& meta = res.table(out_fig_selection, {12}, "instants shown in Fig. 12: the paper's C/N and ours");
     meta.add({{"paper_C_over_N", "1", mp}, {"C_over_N", "1", mc}, {"t", "s", mt}, {"window", "s", mw}});
 }
 
+const ScalarOut out_chi_at_cn = outputs.scalar("chi_at_cn<n>", "1", "Eq. (20) chi interpolated to the paper's C/N");
+const ScalarOut out_A_at_cn = outputs.scalar("A_at_cn<n>", "1/s", "Eq. (21) A interpolated to the paper's C/N");
+const ScalarOut out_B_at_cn = outputs.scalar("B_at_cn<n>", "1/s", "Eq. (22) B interpolated to the paper's C/N");
+const ScalarOut out_t_at_cn = outputs.scalar("t_at_cn<n>", "s", "time at which C/N reached the paper's value (interpolated)");
+
 void report_at_paper_cn(Result& res, const std::vector<Instant>& instants, const std::vector<double>& paper_cn) {
     for (double c : paper_cn) {
-        const std::string tag = "_at_cn" + number_text(c);
-        res.scalar("chi" + tag, at_cn(instants, c, [](const Instant& in) { return in.poisson.value; }), "1", "Eq. (20) chi interpolated to the paper's C/N");
-        res.scalar("A" + tag, at_cn(instants, c, [](const Instant& in) { return in.expo.value; }), "1/s", "Eq. (21) A interpolated to the paper's C/N");
-        res.scalar("B" + tag, at_cn(instants, c, [](const Instant& in) { return in.power.value; }), "1/s", "Eq. (22) B interpolated to the paper's C/N");
-        res.scalar("t" + tag, at_cn(instants, c, [](const Instant& in) { return in.t; }), "s", "time at which C/N reached the paper's value (interpolated)");
+        res.put(out_chi_at_cn, at_cn(instants, c, [](const Instant& in) { return in.poisson.value; }), {c});
+        res.put(out_A_at_cn, at_cn(instants, c, [](const Instant& in) { return in.expo.value; }), {c});
+        res.put(out_B_at_cn, at_cn(instants, c, [](const Instant& in) { return in.power.value; }), {c});
+        res.put(out_t_at_cn, at_cn(instants, c, [](const Instant& in) { return in.t; }), {c});
     }
 }
 

@@ -19,6 +19,9 @@ namespace granrepro::experiments::cluster_growth_detail {
 
 // The catalog every output handle of cluster-growth registers with (data/outputs.hpp).
 inline constexpr Outputs outputs{"cluster-growth"};
+// The instants Figs. 11 and 12 show (report.cpp, report_fig12.cpp): one family, as the TOML
+// declared it, each figure's own description passed where it is written.
+inline const TableOut out_fig_selection = outputs.table("fig<n>_selection", "");
 
 enum class Start { lattice, random };
 inline void parse_choice(const std::string& s, Start& x) { x = s == "lattice" ? Start::lattice : Start::random; }

@@ -27,10 +27,11 @@ double ln_k_at(const Trace& tr, const std::vector<double>& xs, double x, bool lo
 // ln(K/K0) at time t (linear interpolation in log t); NaN outside the run.
 double ln_k_at_t(const Trace& tr, double t) { return ln_k_at(tr, tr.t, t, true); }
 
+const TableOut out_run = outputs.table("run_r<n>_tc<n>", "seed 0: K/K0, anisotropy, C/N against t for r = ");
+
 // Seed 0 of one point as it ran (the paper shows single runs), with Eq. (18)'s line.
-void report_seed0(Result& res, const Trace& tr, const Point& pt, const std::string& tag) {
-    Table& t = res.table("run_" + tag, "seed 0: K/K0, anisotropy, C/N against t for r = " + number_text(pt.r) +
-                                           ", t_c = " + number_text(pt.t_c) + " s");
+void report_seed0(Result& res, const Trace& tr, const Point& pt) {
+    Table& t = res.table(out_run, {pt.r, pt.t_c}, number_text(pt.r) + ", t_c = " + number_text(pt.t_c) + " s");
     std::vector<double> kk, an, line;
     const double c_th = (1 - pt.r * pt.r) / 2;
     for (std::size_t i = 0; i < tr.t.size(); ++i) {
@@ -115,17 +116,19 @@ void report_totals(Result& res, const ParameterStudySpec& s, const Sweep& sw) {
     res.put(out_runs_stopped_by_engine, failed);
 }
 
+const TableOut out_mean_cn = outputs.table("mean_cn_r<n>_tc<n>", "log10(K/K0) against C/N, mean and standard error over the seeds");
+const TableOut out_mean_t = outputs.table("mean_t_r<n>_tc<n>", "log10(K/K0) against t, mean and standard error over the seeds");
+
 // Every point's seed 0 and its seed means against C/N (on cn_grid) and against t.
 void report_points(Result& res, Sweep& sw, const std::vector<double>& cn_grid) {
-    auto mean_table = [&](const std::string& name, const char* against, const char* x, const char* unit, const MeanCurve& m) {
-        Table& t = res.table(name, std::string("log10(K/K0) against ") + against + ", mean and standard error over the seeds");
+    auto mean_table = [&](const TableOut& h, const Point& pt, const char* x, const char* unit, const MeanCurve& m) {
+        Table& t = res.table(h, {pt.r, pt.t_c});
         t.add(x, unit).values = m.x;
         t.add({{"log10_K_over_K0", "1", m.mean}, {"log10_K_over_K0_sem", "1", m.sem}});
     };
     for (std::size_t k = 0; k < sw.points.size(); ++k) {
         const Point& pt = sw.points[k];
-        const std::string tag = "r" + number_text(pt.r) + "_tc" + number_text(pt.t_c);
-        report_seed0(res, sw.traces[k][0], pt, tag);
+        report_seed0(res, sw.traces[k][0], pt);
         sw.mean_cn.push_back(mean_curve(sw.traces[k], cn_grid, ln_k_at_cn));
         double t_lo = INFINITY;
         for (const auto& s : sw.traces[k]) t_lo = std::min(t_lo, s.t.back());
@@ -136,8 +139,8 @@ void report_points(Result& res, Sweep& sw, const std::vector<double>& cn_grid) {
         const std::vector<double> t_grid =
             t_lo > 0 ? log_space(t_first, t_lo, int(std::round(20 * std::log10(t_lo / t_first))) + 1) : std::vector<double>{};
         sw.mean_t.push_back(mean_curve(sw.traces[k], t_grid, ln_k_at_t));
-        mean_table("mean_cn_" + tag, "C/N", "C_over_N", "1", sw.mean_cn[k]);
-        mean_table("mean_t_" + tag, "t", "t", "s", sw.mean_t[k]);
+        mean_table(out_mean_cn, pt, "C_over_N", "1", sw.mean_cn[k]);
+        mean_table(out_mean_t, pt, "t", "s", sw.mean_t[k]);
     }
 }
 

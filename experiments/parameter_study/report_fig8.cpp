@@ -53,6 +53,19 @@ Fig8Run fig8_run(const Trace& tr, double cth, const ParameterStudySpec& s) {
     return o;
 }
 
+// Per r of fig8_r ("c_fit_r0.3"); where the description ends in "r = " the run adds r.
+const ScalarOut out_c_fit = outputs.scalar("c_fit_r<n>", "1",
+    "fitted c of K/K0 = exp(-c C/N) over the first exp_fit_efolds, seed mean, r = ");
+const ScalarOut out_c_fit_err = outputs.scalar("c_fit_err_r<n>", "1", "its standard error over the seeds");
+const ScalarOut out_c_over_theory = outputs.scalar("c_over_theory_r<n>", "1", "fitted c over (1 - r^2)/2 from Eq. (18), r = ");
+const ScalarOut out_line_departure = outputs.scalar("line_departure_r<n>", "1",
+    "ln(K/K_line) where the fitted line has decayed by line_check_efolds, seed mean, r = ");
+const ScalarOut out_line_departure_err = outputs.scalar("line_departure_err_r<n>", "1", "its standard error over the seeds");
+const ScalarOut out_aniso_onset_cn = outputs.scalar("aniso_onset_cn_r<n>", "1",
+    "median over seeds of the first C/N with |K_x - K_y|/K > aniso_threshold (NaN: most never), r = ");
+const ScalarOut out_aniso_max = outputs.scalar("aniso_max_r<n>", "1", "seed mean of the largest |K_x - K_y|/K of a run, r = ");
+const ScalarOut out_aniso_early_mean = outputs.scalar("aniso_early_mean_r<n>", "1", "mean |K_x - K_y|/K over C/N <= 10, r = ");
+
 // One fig8_r: statistics over the seeds.
 struct Fig8Row { double r, c_fit, c_err, c_th, dev, dev_err, onset, max_aniso, early_aniso, onset_q25, onset_q75; };
 std::vector<Fig8Row> report_fig8_rows(Result& res, const ParameterStudySpec& s, const Sweep& sw) {
@@ -70,15 +83,15 @@ std::vector<Fig8Row> report_fig8_rows(Result& res, const ParameterStudySpec& s, 
                                                      // judge an ordering of medians (never = +inf, NaN)
                                                      quantile(column(runs, &Fig8Run::onset), 0.25, NonFinite::censored),
                                                      quantile(column(runs, &Fig8Run::onset), 0.75, NonFinite::censored)});
-        const std::string rv = number_text(r), rl = "_r" + rv;
-        res.scalar("c_fit" + rl, f.c_fit, "1", "fitted c of K/K0 = exp(-c C/N) over the first exp_fit_efolds, seed mean, r = " + rv);
-        res.scalar("c_fit_err" + rl, f.c_err, "1", "its standard error over the seeds");
-        res.scalar("c_over_theory" + rl, f.c_fit / cth, "1", "fitted c over (1 - r^2)/2 from Eq. (18), r = " + rv);
-        res.scalar("line_departure" + rl, f.dev, "1", "ln(K/K_line) where the fitted line has decayed by line_check_efolds, seed mean, r = " + rv);
-        res.scalar("line_departure_err" + rl, f.dev_err, "1", "its standard error over the seeds");
-        res.scalar("aniso_onset_cn" + rl, f.onset, "1", "median over seeds of the first C/N with |K_x - K_y|/K > aniso_threshold (NaN: most never), r = " + rv);
-        res.scalar("aniso_max" + rl, f.max_aniso, "1", "seed mean of the largest |K_x - K_y|/K of a run, r = " + rv);
-        res.scalar("aniso_early_mean" + rl, f.early_aniso, "1", "mean |K_x - K_y|/K over C/N <= 10, r = " + rv);
+        const std::string rv = number_text(r);
+        res.put(out_c_fit, f.c_fit, {r}, rv);
+        res.put(out_c_fit_err, f.c_err, {r});
+        res.put(out_c_over_theory, f.c_fit / cth, {r}, rv);
+        res.put(out_line_departure, f.dev, {r}, rv);
+        res.put(out_line_departure_err, f.dev_err, {r});
+        res.put(out_aniso_onset_cn, f.onset, {r}, rv);
+        res.put(out_aniso_max, f.max_aniso, {r}, rv);
+        res.put(out_aniso_early_mean, f.early_aniso, {r}, rv);
     }
     return rows;
 }
@@ -103,8 +116,6 @@ OnsetOrder onset_order(const std::vector<Fig8Row>& rows, double r_min) {
     return o;
 }
 
-const TableOut out_fig8_summary = outputs.table("fig8_summary",
-    "per r at t_c = fig8_t_c (seed statistics): exponential fit, departure, anisotropy");
 const ScalarOut out_aniso_early_mean_max = outputs.scalar("aniso_early_mean_max", "1",
     "largest (over r) mean |K_x - K_y|/K for C/N <= 10");
 const ScalarOut out_line_departure_min_r_le_095 = outputs.scalar("line_departure_min_r_le_095", "1",
@@ -127,7 +138,8 @@ const ScalarOut out_aniso_max_min_r_le_06 = outputs.scalar("aniso_max_min_r_le_0
 // The table of Fig. 8's rows and the orderings the figure shows across r: departure from the
 // line, initial slope, shear-mode onset.
 void report_fig8_summary(Result& res, const std::vector<Fig8Row>& rows) {
-    Table& t = res.table(out_fig8_summary);
+    Table& t = res.table(out_fig_summary, {8},
+                         "per r at t_c = fig8_t_c (seed statistics): exponential fit, departure, anisotropy");
     const std::pair<const char*, double Fig8Row::*> columns[] = {
         {"r", &Fig8Row::r}, {"c_fit", &Fig8Row::c_fit}, {"c_fit_err", &Fig8Row::c_err}, {"c_theory", &Fig8Row::c_th},
         {"line_departure", &Fig8Row::dev}, {"line_departure_err", &Fig8Row::dev_err},

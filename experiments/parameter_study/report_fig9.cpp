@@ -40,6 +40,17 @@ struct Fig9 {
 };
 const ScalarOut out_fig9_common_end_time = outputs.scalar("fig9_common_end_time", "s",
     "latest time every Fig. 9 run reached");
+// Per t_c of fig9_t_c; where the description ends in "t_c = " the run adds t_c and its unit.
+const ScalarOut out_zeta_early = outputs.scalar("zeta_early_tc<n>", "1",
+    "-d log K / d log(C/N) of the seed mean over zeta_fit_early, t_c = ");
+const ScalarOut out_zeta_early_err = outputs.scalar("zeta_early_err_tc<n>", "1",
+    "its uncertainty: standard error of the single-seed exponents");
+const ScalarOut out_zeta_late = outputs.scalar("zeta_late_tc<n>", "1",
+    "-d log K / d log(C/N) of the seed mean over zeta_fit_late, t_c = ");
+const ScalarOut out_zeta_late_err = outputs.scalar("zeta_late_err_tc<n>", "1",
+    "its uncertainty: standard error of the single-seed exponents");
+const ScalarOut out_elastic_fraction = outputs.scalar("elastic_fraction_tc<n>", "1",
+    "TC-elastic share of all collisions at the end (seed mean), t_c = ");
 
 Fig9 report_fig9_rows(Result& res, const ParameterStudySpec& s, const Sweep& sw, const std::vector<double>& cn_grid) {
     Fig9 f;
@@ -70,18 +81,16 @@ Fig9 report_fig9_rows(Result& res, const ParameterStudySpec& s, const Sweep& sw,
         double el = 0;
         for (const Trace& tr : sw.traces[k]) el += tr.elastic_cn.back() / tr.cn.back();
         row.el_frac = el / double(sw.traces[k].size());
-        const std::string tv = number_text(row.t_c), tl = "_tc" + tv;
-        res.scalar("zeta_early" + tl, row.z1, "1", "-d log K / d log(C/N) of the seed mean over zeta_fit_early, t_c = " + tv + " s");
-        res.scalar("zeta_early_err" + tl, row.z1e, "1", "its uncertainty: standard error of the single-seed exponents");
-        res.scalar("zeta_late" + tl, row.z2, "1", "-d log K / d log(C/N) of the seed mean over zeta_fit_late, t_c = " + tv + " s");
-        res.scalar("zeta_late_err" + tl, row.z2e, "1", "its uncertainty: standard error of the single-seed exponents");
-        res.scalar("elastic_fraction" + tl, row.el_frac, "1", "TC-elastic share of all collisions at the end (seed mean), t_c = " + tv + " s");
+        const std::string tv = number_text(row.t_c) + " s";
+        res.put(out_zeta_early, row.z1, {row.t_c}, tv);
+        res.put(out_zeta_early_err, row.z1e, {row.t_c});
+        res.put(out_zeta_late, row.z2, {row.t_c}, tv);
+        res.put(out_zeta_late_err, row.z2e, {row.t_c});
+        res.put(out_elastic_fraction, row.el_frac, {row.t_c}, tv);
     }
     return f;
 }
 
-const TableOut out_fig9_summary = outputs.table("fig9_summary",
-    "per t_c at r = fig9_r: power-law exponents of the seed-mean K against C/N");
 const ScalarOut out_zeta_early_mean = outputs.scalar("zeta_early_mean", "1",
     "early exponent averaged over the t_c values of Fig. 9");
 const ScalarOut out_zeta_early_sem = outputs.scalar("zeta_early_sem", "1",
@@ -104,7 +113,8 @@ const ScalarOut out_zeta_late_single_run_q90 = outputs.scalar("zeta_late_single_
     "90th percentile of the late exponent of single runs (all seeds and t_c)");
 
 void report_fig9_summary(Result& res, const Fig9& f) {
-    Table& t = res.table(out_fig9_summary);
+    Table& t = res.table(out_fig_summary, {9},
+                         "per t_c at r = fig9_r: power-law exponents of the seed-mean K against C/N");
     t.add("t_c", "s").values = column(f.rows, &Fig9Row::t_c);
     const std::pair<const char*, double Fig9Row::*> columns[] = {
         {"zeta_early", &Fig9Row::z1}, {"zeta_early_err", &Fig9Row::z1e}, {"zeta_late", &Fig9Row::z2},

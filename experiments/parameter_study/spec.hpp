@@ -14,6 +14,9 @@ namespace granrepro::experiments::parameter_study_detail {
 
 // The catalog every output handle of parameter-study registers with (data/outputs.hpp).
 inline constexpr Outputs outputs{"parameter-study"};
+// The summaries of Figs. 8 and 9 (report_fig8.cpp, report_fig9.cpp): one family, as the TOML
+// declared it, each figure's own description passed where it is written.
+inline const TableOut out_fig_summary = outputs.table("fig<n>_summary", "");
 
 // Units and ranges: experiments/parameter-study.toml.
 struct ParameterStudySpec {
