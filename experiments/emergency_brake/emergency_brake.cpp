@@ -112,7 +112,9 @@ struct Series {
     LinearSpringDashpot law;
     CoulombShear shear;
     double spacing;
-    std::string tag, what; // name suffix, table description
+    std::string kind;      // its outputs' names end in kind then at (a word of series_kinds)
+    double at;             // v_x^i, or k_N in the scan: "vx0.3", "kN200", "eq2_signed_vx0.3"
+    std::string what;      // table description
     bool scan = false;     // k_N scan: only its maximum is reported
     std::optional<HertzKuwabaraKono> hkk = std::nullopt; // the normal force instead of law (law still sets dt)
 };
@@ -123,22 +125,22 @@ std::vector<Series> all_series(const EmergencyBrakeSpec& s, const LinearSpringDa
     const auto at = [](double vx) { return " at v_x^i = " + number_text(vx) + " m/s"; };
     std::vector<Series> series;
     for (double vx : s.vx_list)
-        series.push_back({vx, law, shear, s.wall_spacing, "vx" + number_text(vx), "mean over start positions" + at(vx)});
+        series.push_back({vx, law, shear, s.wall_spacing, "vx", vx, "mean over start positions" + at(vx)});
     for (double k : s.kN_scan)
         series.push_back({s.vx_list.front(), LinearSpringDashpot::from_restitution(k, e_N, s.m_free), shear, s.wall_spacing,
-                          "kN" + number_text(k), "k_N scan at the first v_x^i, e_N held fixed", true});
+                          "kN", k, "k_N scan at the first v_x^i, e_N held fixed", true});
     if (s.pipe_wall_spacing != s.wall_spacing)
         for (double vx : s.vx_list)
-            series.push_back({vx, law, shear, s.pipe_wall_spacing, "pipe_vx" + number_text(vx), "on the pipe's wall spacing" + at(vx)});
+            series.push_back({vx, law, shear, s.pipe_wall_spacing, "pipe_vx", vx, "on the pipe's wall spacing" + at(vx)});
     for (auto reading : kFrictionNormals)
         if (reading != shear.reading)
             for (double vx : s.vx_list)
                 series.push_back({vx, law, CoulombShear{shear.mu, reading}, s.wall_spacing,
-                                  std::string("eq2_") + to_string(reading) + "_vx" + number_text(vx),
+                                  std::string("eq2_") + to_string(reading) + "_vx", vx,
                                   std::string("reading ") + to_string(reading) + " of Eq. (2)" + at(vx)});
     const auto hkk = HertzKuwabaraKono::matched_at(law.k_N, law.gamma_N, s.hkk_xi_ref);
     for (double vx : s.vx_list)
-        series.push_back({vx, law, shear, s.wall_spacing, "hkk_vx" + number_text(vx),
+        series.push_back({vx, law, shear, s.wall_spacing, "hkk_vx", vx,
                           "Hertz-Kuwabara-Kono normal force" + at(vx), false, hkk});
     return series;
 }
@@ -169,12 +171,42 @@ Point mean_impact(const EmergencyBrakeSpec& s, const Series& se, double vy) {
     return out;
 }
 
+// What a series' names say before its v_x^i (or k_N): the kinds of all_series. Every reading of
+// Eq. (2) is one, since which is the experiment's own (friction_normal) is chosen at run time; the
+// k_N scan (kN) reports only its first maximum.
+Words series_kinds(bool scan) {
+    Words w{"vx"};
+    if (scan) w.push_back("kN");
+    w.push_back("pipe_vx");
+    for (FrictionNormal f : kFrictionNormals) w.push_back(std::string("eq2_") + to_string(f) + "_vx");
+    w.push_back("hkk_vx");
+    return w;
+}
+
+// A table's description is its series' what, given where it is written.
+const TableOut out_impacts = outputs.table("impacts_<w><n>", "", series_kinds(true));
+const ScalarOut out_v_crit = outputs.scalar("v_crit_<w><n>", "m/s", "v_y^i at the first maximum of mean Δv_y", series_kinds(true));
+const ScalarOut out_dvy_peak = outputs.scalar("dvy_peak_<w><n>", "m/s", "height of the first maximum", series_kinds(true));
+const ScalarOut out_v_min = outputs.scalar("v_min_<w><n>", "m/s",
+    "v_y^i where Δv_y is smallest after the first maximum (rise begins)", series_kinds(false));
+const ScalarOut out_rise_ratio = outputs.scalar("rise_ratio_<w><n>", "1", "Δv_y at vy_max over its minimum after the peak",
+    series_kinds(false));
+const ScalarOut out_rise_z = outputs.scalar("rise_z_<w><n>", "1",
+    "rise of Δv_y from its minimum after the peak to vy_max in units of its standard error", series_kinds(false));
+const ScalarOut out_v_multi_onset = outputs.scalar("v_multi_onset_<w><n>", "m/s",
+    "v_y^i at which the mean number of wall grains touched reaches 2", series_kinds(false));
+const ScalarOut out_onset_over_vmin = outputs.scalar("onset_over_vmin_<w><n>", "1",
+    "multi-contact onset over the start of the Δv_y rise", series_kinds(false));
+const ScalarOut out_contacts_at_vmax = outputs.scalar("contacts_at_vmax_<w><n>", "1", "mean wall grains touched at vy_max",
+    series_kinds(false));
+const ScalarOut out_vx_return_at_vmax = outputs.scalar("vx_return_at_vmax_<w><n>", "1",
+    "mean v_x^f / v_x^i at vy_max (the wall's return of the speed towards it)", series_kinds(false));
+
 // Figs. 4 and 5 for one series: its table, the first maximum of Δv_y (brake failure sets in),
 // the minimum after it and the rise to vy_max, and where multiple contacts set in.
 void report_series(Result& r, const std::vector<double>& vy, const Series& se, const std::vector<Point>& pts) {
     const std::size_t n = vy.size();
-    const std::string& tag = se.tag;
-    Table& t = r.table("impacts_" + tag, se.what);
+    Table& t = r.table(out_impacts, {se.kind, se.at}, se.what);
     const auto dvy = column(pts, &Point::dvy), cont = column(pts, &Point::contacts);
     const auto back = column(pts, &Point::vx_return), sem = column(pts, &Point::dvy_sem);
     t.add({{"vy_i", "m/s", vy}, {"dvy", "m/s", dvy}, {"dvy_sem", "m/s", sem}, {"contacts", "1", cont},
@@ -184,22 +216,21 @@ void report_series(Result& r, const std::vector<double>& vy, const Series& se, c
     std::size_t imin = std::size_t(std::max(pk.index, 0));
     for (std::size_t i = imin; i < n; ++i)
         if (dvy[i] < dvy[imin]) imin = i;
-    r.scalar("v_crit_" + tag, pk.x, "m/s", "v_y^i at the first maximum of mean Δv_y");
-    r.scalar("dvy_peak_" + tag, pk.y, "m/s", "height of the first maximum");
+    r.put(out_v_crit, pk.x, {se.kind, se.at});
+    r.put(out_dvy_peak, pk.y, {se.kind, se.at});
     if (se.scan) return;
-    r.scalar("v_min_" + tag, vy[imin], "m/s", "v_y^i where Δv_y is smallest after the first maximum (rise begins)");
-    r.scalar("rise_ratio_" + tag, dvy.back() / dvy[imin], "1", "Δv_y at vy_max over its minimum after the peak");
+    r.put(out_v_min, vy[imin], {se.kind, se.at});
+    r.put(out_rise_ratio, dvy.back() / dvy[imin], {se.kind, se.at});
     // The paper says only that Δv_y "must ultimately increase again" (text before Fig. 4), so a
     // rise is judged against the sampling error of the 10-position mean at both ends: each point's
     // standard error over the start positions, independent between the two v_y^i.
-    r.scalar("rise_z_" + tag, (dvy.back() - dvy[imin]) / std::hypot(sem.back(), sem[imin]), "1",
-             "rise of Δv_y from its minimum after the peak to vy_max in units of its standard error");
+    r.put(out_rise_z, (dvy.back() - dvy[imin]) / std::hypot(sem.back(), sem[imin]), {se.kind, se.at});
     // Fig. 5 plots the mean number of contacts; the multiple-contact regime starts where it reaches 2.
     const double onset = first_upward_crossing(vy, cont, 2.0);
-    r.scalar("v_multi_onset_" + tag, onset, "m/s", "v_y^i at which the mean number of wall grains touched reaches 2");
-    r.scalar("onset_over_vmin_" + tag, onset / vy[imin], "1", "multi-contact onset over the start of the Δv_y rise");
-    r.scalar("contacts_at_vmax_" + tag, cont.back(), "1", "mean wall grains touched at vy_max");
-    r.scalar("vx_return_at_vmax_" + tag, back.back(), "1", "mean v_x^f / v_x^i at vy_max (the wall's return of the speed towards it)");
+    r.put(out_v_multi_onset, onset, {se.kind, se.at});
+    r.put(out_onset_over_vmin, onset / vy[imin], {se.kind, se.at});
+    r.put(out_contacts_at_vmax, cont.back(), {se.kind, se.at});
+    r.put(out_vx_return_at_vmax, back.back(), {se.kind, se.at});
 }
 
 // v_crit and the peak height must grow with k_N (text below Fig. 5): 1 if they do over the

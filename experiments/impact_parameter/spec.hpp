@@ -77,6 +77,9 @@ inline std::string label(const char* prefix, double x, const char* fmt) {
 
 // The label of cooling run k: r and its restitution.
 inline std::string r_label(const ImpactSpec& s, std::size_t k) { return label("r", s.restitutions[k], "%.2f"); }
+// Its number as the outputs' names write it ("0.80", not number_text's "0.8"): the part for <n>
+// in "..._r<n>".
+inline std::string r_text(const ImpactSpec& s, std::size_t k) { return label("", s.restitutions[k], "%.2f"); }
 
 // The outcome of run k of seed `seed`.
 inline const PointResult& at(const ImpactSpec& s, const std::vector<PointResult>& pts, std::size_t seed, std::size_t k) {
