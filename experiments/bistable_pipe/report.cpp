@@ -36,8 +36,13 @@ struct KColumns { std::vector<double> col[2][kColumns]; double link_top = NAN; }
 // Over all runs: the worst Eq. (9) balance, the smallest impact-curve slope, steady states.
 struct Totals { double worst_balance = 0, min_slope = INFINITY; int steady = 0; };
 
+const TableOut out_steady = outputs.table("steady_k<n>", "steady-state mean velocity against e_N (NaN: no steady state)");
+const ScalarOut out_fast_branch_fraction_eq5 = outputs.scalar("fast_branch_fraction_eq5_k<n>", "1",
+    "fraction of e_N values whose fast start at Eq. (5)'s step (t_col / steps_per_contact throughout) reached a "
+    "steady state above v_crit (NaN under time_step = eq5: the fast column itself is at that step)");
+
 // One k_N of Fig. 6: both starts against e_N, with outcomes, Eq. (9) and the construction.
-KColumns table_k(Result& r, const BistablePipeSpec& b, const PipeSpec& base, std::size_t ki, const std::string& kt,
+KColumns table_k(Result& r, const BistablePipeSpec& b, const PipeSpec& base, std::size_t ki,
                  const std::vector<RunResult>& results, Totals& tot) {
     const auto& es = b.eN_list;
     KColumns c;
@@ -63,7 +68,7 @@ KColumns table_k(Result& r, const BistablePipeSpec& b, const PipeSpec& base, std
                 if (std::isfinite(cons.slope)) tot.min_slope = std::min(tot.min_slope, cons.slope);
             }
         }
-    Table& t = r.table("steady_" + kt, "steady-state mean velocity against e_N (NaN: no steady state)");
+    Table& t = r.table(out_steady, {b.kN_list[ki]});
     t.add("e_N", "1").values = es;
     const char* names[kColumns] = {"v", "v_last", "outcome", "t_end", "eq9_balance", "sigma_vx", "ndot", "dvy",
                                    "v_construction", "impact_slope", "impact_contacts", "vy_impact",
@@ -97,15 +102,31 @@ KColumns table_k(Result& r, const BistablePipeSpec& b, const PipeSpec& base, std
     for (std::size_t ei = 0; ei < es.size(); ++ei) eq5_states += ev[ei] >= v_crit(b, b.kN_list[ki]); // NaN: false
     // Under time_step = eq5 no comparison run exists (the fast column is itself at Eq. (5)'s step):
     // NaN, not a fraction of zero.
-    r.scalar("fast_branch_fraction_eq5_" + kt, b.time_step == "eq5" ? NAN : double(eq5_states) / double(es.size()), "1",
-             "fraction of e_N values whose fast start at Eq. (5)'s step (t_col / steps_per_contact throughout) reached a "
-             "steady state above v_crit (NaN under time_step = eq5: the fast column itself is at that step)");
+    r.put(out_fast_branch_fraction_eq5, b.time_step == "eq5" ? NAN : double(eq5_states) / double(es.size()), {b.kN_list[ki]});
     return c;
 }
 
+const ScalarOut out_impact_link_top = outputs.scalar("impact_link_top_k<n>", "1",
+    "slow start at the largest e_N: Δv_y of the wall's impact curve at the measured mean impact velocities "
+    "over the measured Δv_y per wall impact");
+const ScalarOut out_slow_branch_lowest_eN = outputs.scalar("slow_branch_lowest_eN_k<n>", "1",
+    "smallest e_N whose slow start reached a steady state in the normal regime (below v_crit)");
+const ScalarOut out_fast_branch_fraction = outputs.scalar("fast_branch_fraction_k<n>", "1",
+    "fraction of e_N values whose fast start reached a steady state above v_crit (the fast branch)");
+const ScalarOut out_v_slow_top = outputs.scalar("v_slow_top_k<n>", "m/s", "steady speed of the slow start at the largest e_N");
+const ScalarOut out_v_fast_top = outputs.scalar("v_fast_top_k<n>", "m/s", "steady speed of the fast start at the largest e_N");
+const ScalarOut out_bistable_fraction = outputs.scalar("bistable_fraction_k<n>", "1",
+    "fraction of the e_N > 0.85 of the grid where a slow (below v_crit) and a fast (above) steady state coexist");
+const ScalarOut out_bistable_sigma_vx_ratio = outputs.scalar("bistable_sigma_vx_ratio_k<n>", "1",
+    "σ_vx of the fast over the slow state at the largest bistable e_N");
+const ScalarOut out_normal_branch_top = outputs.scalar("normal_branch_top_k<n>", "1",
+    "1 if the slow start at the largest e_N reaches a steady state below v_crit = v_crit_2000 sqrt(k_N/2000 N/m)");
+const ScalarOut out_bistable_eN_count = outputs.scalar("bistable_eN_count_k<n>", "1",
+    "e_N > 0.85 of the grid at which a slow (below v_crit) and a fast (above) steady state coexist");
+
 // The steady states of one k_N against v_crit(k_N): the slow branch (normal regime, below v_crit),
 // the fast one, and where both coexist (bistability).
-void report_states_k(Result& r, const std::vector<double>& es, const std::string& kt, const KColumns& c, double v_crit) {
+void report_states_k(Result& r, const std::vector<double>& es, double k, const KColumns& c, double v_crit) {
     const auto &slow = c.col[0], &fast = c.col[1];
     // A slow start that settles above v_crit has joined the fast branch and does not count.
     double e_lowest_slow = NAN;
@@ -115,15 +136,11 @@ void report_states_k(Result& r, const std::vector<double>& es, const std::string
         // A fast start that falls back to the slow branch is not a state of the fast branch.
         fast_steady += fast[kOutcome][ei] == double(kSteady) && fast[kV][ei] >= v_crit;
     }
-    r.scalar("impact_link_top_" + kt, c.link_top, "1",
-             "slow start at the largest e_N: Δv_y of the wall's impact curve at the measured mean impact velocities "
-             "over the measured Δv_y per wall impact");
-    r.scalar("slow_branch_lowest_eN_" + kt, e_lowest_slow, "1",
-             "smallest e_N whose slow start reached a steady state in the normal regime (below v_crit)");
-    r.scalar("fast_branch_fraction_" + kt, double(fast_steady) / double(es.size()), "1",
-             "fraction of e_N values whose fast start reached a steady state above v_crit (the fast branch)");
-    r.scalar("v_slow_top_" + kt, slow[kV].back(), "m/s", "steady speed of the slow start at the largest e_N");
-    r.scalar("v_fast_top_" + kt, fast[kV].back(), "m/s", "steady speed of the fast start at the largest e_N");
+    r.put(out_impact_link_top, c.link_top, {k});
+    r.put(out_slow_branch_lowest_eN, e_lowest_slow, {k});
+    r.put(out_fast_branch_fraction, double(fast_steady) / double(es.size()), {k});
+    r.put(out_v_slow_top, slow[kV].back(), {k});
+    r.put(out_v_fast_top, fast[kV].back(), {k});
     // Bistability: at the e_N > 0.85 of the grid, the slow start reaches a steady state in the
     // normal regime (below v_crit) and the fast start one above it: two coexisting steady states.
     int bistable = 0, above_085 = 0;
@@ -135,20 +152,36 @@ void report_states_k(Result& r, const std::vector<double>& es, const std::string
         ++bistable;
         sx_ratio = fast[kSigmaVx][ei] / slow[kSigmaVx][ei];
     }
-    r.scalar("bistable_fraction_" + kt, above_085 ? double(bistable) / above_085 : NAN, "1",
-             "fraction of the e_N > 0.85 of the grid where a slow (below v_crit) and a fast (above) steady state coexist");
-    r.scalar("bistable_sigma_vx_ratio_" + kt, sx_ratio, "1", "σ_vx of the fast over the slow state at the largest bistable e_N");
-    r.scalar("normal_branch_top_" + kt, slow[kV].back() < v_crit ? 1.0 : 0.0, "1",
-             "1 if the slow start at the largest e_N reaches a steady state below v_crit = v_crit_2000 sqrt(k_N/2000 N/m)");
-    r.scalar("bistable_eN_count_" + kt, bistable, "1",
-             "e_N > 0.85 of the grid at which a slow (below v_crit) and a fast (above) steady state coexist");
+    r.put(out_bistable_fraction, above_085 ? double(bistable) / above_085 : NAN, {k});
+    r.put(out_bistable_sigma_vx_ratio, sx_ratio, {k});
+    r.put(out_normal_branch_top, slow[kV].back() < v_crit ? 1.0 : 0.0, {k});
+    r.put(out_bistable_eN_count, bistable, {k});
 }
+
+const ScalarOut out_fast_branch_v_ln_eN = outputs.scalar("fast_branch_v_ln_eN_k<n>", "m/s",
+    "mean of v |ln e_N| over the fast branch's states (constant if v ∝ 1/gamma_N)");
+const ScalarOut out_fast_branch_v_ln_eN_cv = outputs.scalar("fast_branch_v_ln_eN_cv_k<n>", "1",
+    "its coefficient of variation over the states");
+// Per branch (<w>: slow or fast); the branch is named inside the description too, so that is
+// written whole at run time.
+const Words branches = {"slow", "fast"};
+const ScalarOut out_branch_states = outputs.scalar("<w>_branch_states_k<n>", "1", "", branches);
+const ScalarOut out_branch_contacts = outputs.scalar("<w>_branch_contacts_k<n>", "1",
+    "mean wall grains touched per impact at the measured impact velocities, ", branches);
+const ScalarOut out_branch_construction_ratio = outputs.scalar("<w>_branch_construction_ratio_k<n>", "1",
+    "geometric mean of the construction's speed (v_x^i = σ_vx) over the measured one, ", branches);
+const ScalarOut out_branch_construction_found = outputs.scalar("<w>_branch_construction_found_k<n>", "1", "", branches);
+const ScalarOut out_branch_construction_ratio_vxin = outputs.scalar("<w>_branch_construction_ratio_vxin_k<n>", "1",
+    "the same with v_x^i = the measured mean |v_x| of the wall impacts, ", branches);
+const ScalarOut out_branch_construction_reach = outputs.scalar("<w>_branch_construction_reach_k<n>", "1",
+    "geometric mean over the states of max Δv_y(v_y^i; v_x^i = σ_vx) / (g/ṅ): below 1 the paper's "
+    "association gives no intersection, ", branches);
 
 // One regime of a k_N: states faster than v_crit(k_N) (Fig. 3's maximum, scaled with sqrt(k_N) by
 // Eq. 8) are the fast branch whichever start reached them. Fig. 5 says the fast branch is the
 // emergency brake (>= 2 wall grains per impact), the slow one the normal regime. And the paper's
 // construction against the measured speed.
-void report_branch_k(Result& r, const std::vector<double>& es, const std::string& kt, const KColumns& c, double v_crit,
+void report_branch_k(Result& r, const std::vector<double>& es, double k, const KColumns& c, double v_crit,
                      bool fast_branch) {
     double contacts = 0, ratio = 0, ratio_in = 0, reach = 0;
     int nc = 0, nr = 0, nr_in = 0, nreach = 0;
@@ -168,32 +201,32 @@ void report_branch_k(Result& r, const std::vector<double>& es, const std::string
         // The fast branch's speed against 1/|ln e_N| ∝ 1/gamma_N: how much of its braking is the
         // dashpot's speed-independent friction impulse (brake-failure's high_v_plateau).
         const MeanSd vl = mean_sd(v_ln_e);
-        r.scalar("fast_branch_v_ln_eN_" + kt, vl.mean, "m/s",
-                 "mean of v |ln e_N| over the fast branch's states (constant if v ∝ 1/gamma_N)");
-        r.scalar("fast_branch_v_ln_eN_cv_" + kt, vl.sd / vl.mean, "1",
-                 "its coefficient of variation over the states");
+        r.put(out_fast_branch_v_ln_eN, vl.mean, {k});
+        r.put(out_fast_branch_v_ln_eN_cv, vl.sd / vl.mean, {k});
     }
-    r.scalar(name + "_branch_states_" + kt, nc, "1", "steady states on the " + name + " branch (either start)");
-    r.scalar(name + "_branch_contacts_" + kt, nc ? contacts / nc : NAN, "1",
-             "mean wall grains touched per impact at the measured impact velocities, " + name + " branch");
-    r.scalar(name + "_branch_construction_ratio_" + kt, nr ? std::exp(ratio / nr) : NAN, "1",
-             "geometric mean of the construction's speed (v_x^i = σ_vx) over the measured one, " + name +
-                 " branch; NaN if no state has a stable intersection");
-    r.scalar(name + "_branch_construction_found_" + kt, nc ? double(nr) / nc : NAN, "1",
-             "fraction of the " + name + " branch's states for which the construction (v_x^i = σ_vx) finds a "
-             "stable intersection within 0.1-3 times the measured speed");
-    r.scalar(name + "_branch_construction_ratio_vxin_" + kt, nr_in ? std::exp(ratio_in / nr_in) : NAN, "1",
-             "the same with v_x^i = the measured mean |v_x| of the wall impacts, " + name + " branch");
-    r.scalar(name + "_branch_construction_reach_" + kt, nreach ? std::exp(reach / nreach) : NAN, "1",
-             "geometric mean over the states of max Δv_y(v_y^i; v_x^i = σ_vx) / (g/ṅ): below 1 the paper's "
-             "association gives no intersection, " + name + " branch");
+    r.put(out_branch_states, nc, {name, k}, "steady states on the " + name + " branch (either start)");
+    r.put(out_branch_contacts, nc ? contacts / nc : NAN, {name, k}, name + " branch");
+    r.put(out_branch_construction_ratio, nr ? std::exp(ratio / nr) : NAN, {name, k},
+          name + " branch; NaN if no state has a stable intersection");
+    r.put(out_branch_construction_found, nc ? double(nr) / nc : NAN, {name, k},
+          "fraction of the " + name + " branch's states for which the construction (v_x^i = σ_vx) finds a "
+          "stable intersection within 0.1-3 times the measured speed");
+    r.put(out_branch_construction_ratio_vxin, nr_in ? std::exp(ratio_in / nr_in) : NAN, {name, k}, name + " branch");
+    r.put(out_branch_construction_reach, nreach ? std::exp(reach / nreach) : NAN, {name, k}, name + " branch");
 }
+
+const ScalarOut out_vcrit_crossings = outputs.scalar("vcrit_crossings_k<n>", "1",
+    "runs that started below v_crit and whose mean speed exceeded it at some sample");
+const ScalarOut out_vcrit_crossings_end_fast = outputs.scalar("vcrit_crossings_end_fast_k<n>", "1",
+    "fraction of those runs that ended above v_crit (fast steady state, or faster than v_crit at the end)");
+const ScalarOut out_vcrit_crossings_settled_fast = outputs.scalar("vcrit_crossings_settled_fast_k<n>", "1",
+    "fraction of those runs that ended in a steady state above v_crit (the emergency brake of the Summary)");
 
 // Fig. 6 over every k_N, and what the paper says across them.
 // "If the flow ... becomes higher than v_crit, the system will accelerate to the emergency-brake
 // steady state" (Summary): of the runs of one k_N whose mean speed ever exceeded v_crit, the
 // fraction that ended above it (a fast steady state, or still faster than v_crit at the end).
-void report_vcrit_crossings_k(Result& r, const std::string& kt, const std::vector<const RunResult*>& runs, double v_crit) {
+void report_vcrit_crossings_k(Result& r, double k, const std::vector<const RunResult*>& runs, double v_crit) {
     int crossed = 0, ended_fast = 0, settled_fast = 0;
     for (const RunResult* run : runs) {
         const RunResult& rr = *run;
@@ -203,11 +236,9 @@ void report_vcrit_crossings_k(Result& r, const std::string& kt, const std::vecto
         ended_fast += (rr.outcome == kSteady ? -rr.v_mean : -rr.v_final) > v_crit;
         settled_fast += rr.outcome == kSteady && -rr.v_mean > v_crit;
     }
-    r.scalar("vcrit_crossings_" + kt, crossed, "1", "runs that started below v_crit and whose mean speed exceeded it at some sample");
-    r.scalar("vcrit_crossings_end_fast_" + kt, crossed ? double(ended_fast) / crossed : NAN, "1",
-             "fraction of those runs that ended above v_crit (fast steady state, or faster than v_crit at the end)");
-    r.scalar("vcrit_crossings_settled_fast_" + kt, crossed ? double(settled_fast) / crossed : NAN, "1",
-             "fraction of those runs that ended in a steady state above v_crit (the emergency brake of the Summary)");
+    r.put(out_vcrit_crossings, crossed, {k});
+    r.put(out_vcrit_crossings_end_fast, crossed ? double(ended_fast) / crossed : NAN, {k});
+    r.put(out_vcrit_crossings_settled_fast, crossed ? double(settled_fast) / crossed : NAN, {k});
 }
 
 const ScalarOut out_near_wall_phi_mean = outputs.scalar("near_wall_phi_mean", "1",
@@ -262,28 +293,31 @@ const ScalarOut out_impact_slope_min = outputs.scalar("impact_slope_min", "s",
     "smallest slope dΔv_y/dv of the impact curve at a steady state's speed (Eq. 9 argument: > 0)");
 const ScalarOut out_length_check_ratio = outputs.scalar("length_check_ratio", "1",
     "steady speed at length_check over that at length (same k_N, e_N, slow start)");
+const ScalarOut out_xi_max_over_d = outputs.scalar("xi_max_over_d_k<n>", "1",
+    "largest overlap of any contact over all runs at this k_N, over the smaller diameter (Eq. 4's xi_max)");
+const ScalarOut out_xi_max_steady_over_d = outputs.scalar("xi_max_steady_over_d_k<n>", "1",
+    "the same over the steady states only (NaN: none)");
 
 void report_fig6(Result& r, const BistablePipeSpec& b, const PipeSpec& base, const std::vector<RunResult>& results) {
     const auto &ks = b.kN_list, &es = b.eN_list;
     Totals tot;
     for (std::size_t ki = 0; ki < ks.size(); ++ki) { // one row of the figure
-        const std::string kt = "k" + number_text(ks[ki]);
-        const KColumns c = table_k(r, b, base, ki, kt, results, tot);
-        const double vc = v_crit(b, ks[ki]);
-        report_states_k(r, es, kt, c, vc);
-        for (bool fast : {false, true}) report_branch_k(r, es, kt, c, vc, fast);
+        const double k = ks[ki]; // fills the <n> of the per-k_N names ("steady_k2000")
+        const KColumns c = table_k(r, b, base, ki, results, tot);
+        const double vc = v_crit(b, k);
+        report_states_k(r, es, k, c, vc);
+        for (bool fast : {false, true}) report_branch_k(r, es, k, c, vc, fast);
         std::vector<const RunResult*> runs; // Fig. 6's runs at this k_N, by e_N, slow start first
         for (double e : es)
             for (bool fast : {false, true}) runs.push_back(&run_at(results, kFig6, ks[ki], e, fast));
-        report_vcrit_crossings_k(r, kt, runs, vc);
+        report_vcrit_crossings_k(r, k, runs, vc);
         double xi = 0;
         for (const RunResult* rr : runs) xi = std::max(xi, rr->xi_max);
-        r.scalar("xi_max_over_d_" + kt, xi, "1",
-                 "largest overlap of any contact over all runs at this k_N, over the smaller diameter (Eq. 4's xi_max)");
+        r.put(out_xi_max_over_d, xi, {k});
         double xs = NAN;
         for (const RunResult* rr : runs)
             if (const double x = rr->xi_steady; std::isfinite(x)) xs = std::isnan(xs) ? x : std::max(xs, x);
-        r.scalar("xi_max_steady_over_d_" + kt, xs, "1", "the same over the steady states only (NaN: none)");
+        r.put(out_xi_max_steady_over_d, xs, {k});
     }
     report_near_wall_phi(r, results);
     report_dt_check(r, results);
@@ -323,6 +357,8 @@ const ScalarOut out_ndot_dvy_vs_dvy_exponent = outputs.scalar("ndot_dvy_vs_dvy_e
     "exponent of ṅ Δv_y ∝ Δv_y^b over all windows");
 const ScalarOut out_sigma_vx_vs_dvy_exponent = outputs.scalar("sigma_vx_vs_dvy_exponent", "1",
     "exponent of σ_vx ∝ Δv_y^c over all windows");
+// A scalar named like the table above (out_eq9_windows): the count of windows in the fits.
+const ScalarOut out_eq9_windows_count = outputs.scalar("eq9_windows", "1", "windows in those fits");
 
 // The crude estimates below Eq. (9), over windows of every run: ṅ ∝ σ_vx, and ṅ Δv_y grows
 // about quadratically with Δv_y.
@@ -352,12 +388,16 @@ void report_eq9_windows(Result& r, const std::vector<RunResult>& results) {
     r.put(out_ndot_vs_sigma_vx_exponent, a.exponent);
     r.put(out_ndot_dvy_vs_dvy_exponent, c.exponent);
     r.put(out_sigma_vx_vs_dvy_exponent, sd.exponent);
-    r.scalar("eq9_windows", double(lx.size()), "1", "windows in those fits");
+    r.put(out_eq9_windows_count, double(lx.size()));
 }
+
+// One table per run: series_k<k_N>_e<e_N>_<start and role> (series_word).
+const TableOut out_series = outputs.table("series_k<n>_e<n>_<w>", "mean velocity and rms v_x against time",
+                                          {"slow", "fast", "slow_length_check", "fast_eq5", "fast_dt_check"});
 
 void report_series(Result& r, const std::vector<RunResult>& results) {
     for (const RunResult& rr : results) {
-        Table& ts = r.table(series_name(rr.k_N, rr.e_N, rr.fast, rr.role), "mean velocity and rms v_x against time");
+        Table& ts = r.table(out_series, {rr.k_N, rr.e_N, series_word(rr.fast, rr.role)});
         ts.add("t", "s").values = rr.t;
         ts.add({{"v_down", "m/s", column(rr.v, std::negate<>())}, {"sigma_vx", "m/s", rr.sx}});
     }

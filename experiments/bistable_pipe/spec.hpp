@@ -109,8 +109,8 @@ long find_task(const std::vector<Task>& tasks, int role, double k, double e, boo
 // an error if there must be one (run_at). report.cpp.
 const RunResult* find_run(const std::vector<RunResult>& results, int role, double k, double e, bool fast);
 const RunResult& run_at(const std::vector<RunResult>& results, int role, double k, double e, bool fast);
-// The series table of a run (its role named at the end).
-std::string series_name(double k, double e, bool fast, int role);
+// What ends the name of a run's series table: its start and role ("fast_eq5"), report.cpp's <w>.
+std::string series_word(bool fast, int role);
 
 // compute.cpp: one start of the pipe until steady, free fall, v_abort or the end of its budget.
 RunResult run_pipe(const PipeSpec& s, double t_budget, double eq9_window, double hold_distance);

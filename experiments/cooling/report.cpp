@@ -32,11 +32,11 @@ double min_over(const std::vector<double>& v, const std::vector<double>& x, doub
     return std::accumulate(in.begin(), in.end(), HUGE_VAL, [](double a, double b) { return std::min(a, b); });
 }
 
-// The mean over seeds of v as `name`, and its seed standard deviation as name_sd.
-void add_mean_sd(Result& res, const std::string& name, const std::vector<double>& v, const std::string& what) {
+// The mean over seeds of v through `mean`, and its seed standard deviation through `sd`.
+void add_mean_sd(Result& res, const ScalarOut& mean, const ScalarOut& sd, const std::vector<double>& v) {
     const MeanSd ms = mean_sd(v, NonFinite::censored);
-    res.scalar(name, ms.mean, "1", what);
-    res.scalar(name + "_sd", ms.sd, "1", "its seed standard deviation");
+    res.put(mean, ms.mean);
+    res.put(sd, ms.sd);
 }
 
 namespace {
@@ -47,28 +47,32 @@ double wall_seconds(const std::vector<Trace>& trs) {
     return std::accumulate(wall.begin(), wall.end(), 0.0);
 }
 
+// <w>: the method, ed or dsmc; <n>: the seed index, as std::to_string writes it.
+const TableOut out_sk_seed = outputs.table("sk_<w>_seed<n>", "S(k) at the snapshot times, seed index ", {"ed", "dsmc"});
+const TableOut out_energy_seed = outputs.table("energy_<w>_seed<n>", "K/K0 against t, seed index ", {"ed", "dsmc"});
+
 // Per-seed S(k) at every snapshot and K/K0 of one method, for studies that compare runs made
 // separately (scripts/studies/dsmc_variants.sh).
 void add_seed_tables(Result& res, const std::vector<Trace>& trs, const std::vector<double>& snaps, const char* name) {
     for (std::size_t k = 0; k < trs.size(); ++k) {
         const Trace& tr = trs[k];
         {
-            Table& t = res.table(std::string("sk_") + name + "_seed" + std::to_string(k), std::string("S(k) at the snapshot times, seed index ") + std::to_string(k) + ", " + name);
+            Table& t = res.table(out_sk_seed, {name, std::to_string(k)}, std::to_string(k) + ", " + name);
             t.add("k", "1").values = tr.S_k;
             for (std::size_t i = 0; i < tr.snaps.size(); ++i) t.add("S_t" + number_text(snaps[i]), "1").values = tr.snaps[i].S;
         }
-        Table& e = res.table(std::string("energy_") + name + "_seed" + std::to_string(k), std::string("K/K0 against t, seed index ") + std::to_string(k) + ", " + name);
+        Table& e = res.table(out_energy_seed, {name, std::to_string(k)}, std::to_string(k) + ", " + name);
         e.add({{"t", "s", tr.t}, {"K_over_K0", "1", k_ratio(tr)}, {"C_over_N", "1", tr.cn}});
     }
 }
 
 const ScalarOut out_N = outputs.scalar("N", "1", "number of disks");
-const ScalarOut out_seeds = outputs.scalar("seeds", "1",
-    "independent initial states (equilibration, ED and DSMC each)");
+// seeds and wall_time_dsmc are written by report_dsmc_only too, which describes them its own way:
+// each writer appends the rest of the description.
+const ScalarOut out_seeds = outputs.scalar("seeds", "1", "independent initial states");
 const ScalarOut out_wall_time_ed = outputs.scalar("wall_time_ed", "s",
     "wall time of the ED runs from t = 0 with their observables, summed over seeds and resumed parts");
-const ScalarOut out_wall_time_dsmc = outputs.scalar("wall_time_dsmc", "s",
-    "wall time of the DSMC runs from t = 0 with their observables, summed over seeds and resumed parts");
+const ScalarOut out_wall_time_dsmc = outputs.scalar("wall_time_dsmc", "s", "wall time of the DSMC runs");
 const ScalarOut out_box = outputs.scalar("box", "m", "side of the periodic box");
 const ScalarOut out_t0_inv_eq19_printed = outputs.scalar("t0_inv_eq19_printed", "1/s",
     "1/t0 from Eq. (19) as printed (sqrt(pi))");
@@ -89,10 +93,10 @@ void add_setup(Result& res, const CoolingSpec& c, const Setup& s, const std::vec
     const double t0_printed = std::sqrt(M_PI) * c.d * s_star / (2 * (1 - r * r) * c.rho * c.vbar);
     const double t0_measured_rate = 4 / ((1 - r * r) * s.collision_rate);
     res.put(out_N, double(s.pos.size()));
-    res.put(out_seeds, double(c.seeds));
+    res.put(out_seeds, double(c.seeds), {}, " (equilibration, ED and DSMC each)");
     res.put(out_wall_time_ed, wall_seconds(eds));
     if (c.run_dsmc)
-        res.put(out_wall_time_dsmc, wall_seconds(dss));
+        res.put(out_wall_time_dsmc, wall_seconds(dss), {}, " from t = 0 with their observables, summed over seeds and resumed parts");
     res.put(out_box, s.L);
     res.put(out_t0_inv_eq19_printed, 1 / t0_printed);
     res.put(out_t0_inv_kinetic_theory, 1 / c.t0());
@@ -167,8 +171,8 @@ void add_dsmc(Result& res, const CoolingSpec& c, const std::vector<Trace>& eds, 
 // run_ed = false: DSMC alone (for variant studies; the claims that compare with ED are then missing).
 Result report_dsmc_only(const CoolingSpec& c, const std::vector<Trace>& dss) {
     Result res;
-    res.scalar("seeds", double(c.seeds), "1", "independent initial states");
-    res.scalar("wall_time_dsmc", wall_seconds(dss), "s", "wall time of the DSMC runs, summed over seeds");
+    res.put(out_seeds, double(c.seeds));
+    res.put(out_wall_time_dsmc, wall_seconds(dss), {}, ", summed over seeds");
     add_seed_tables(res, dss, c.snapshots(), "dsmc");
     add_dsmc_kinetics(res, dss, c);
     return res;

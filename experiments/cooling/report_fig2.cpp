@@ -73,6 +73,15 @@ double rate_over_enskog(const Trace& tr, double t0, double omega) {
     return tr.cn[best] / theory::haff_collisions_per_particle(tr.t[best], t0, omega);
 }
 
+// <w>: the method, ed or dsmc.
+const ScalarOut out_a2_hcs = outputs.scalar("a2_hcs_<w>", "1",
+    "Sonine a2 in the a2 window, weighted mean over samples and seeds, ", {"ed", "dsmc"});
+const ScalarOut out_a2_hcs_err = outputs.scalar("a2_hcs_err_<w>", "1", "its standard error (samples taken as independent)",
+                                                {"ed", "dsmc"});
+const ScalarOut out_a2_hcs_samples = outputs.scalar("a2_hcs_samples_<w>", "1", "samples in the window", {"ed", "dsmc"});
+const ScalarOut out_a2_hcs_z = outputs.scalar("a2_hcs_z_<w>", "1", "(a2 - van Noije-Ernst) in standard errors",
+                                              {"ed", "dsmc"});
+
 // HCS Sonine coefficient before clustering (van Noije & Ernst 1998): samples in the a2 window
 // (units of t0), weighted mean over samples and seeds taken as independent measurements (samples
 // ~1 collision per particle apart).
@@ -91,10 +100,10 @@ void hcs_a2(Result& res, const std::vector<Trace>& trs, const CoolingSpec& c, co
                 ++cnt;
             }
     const double a2 = swa / sw, err = 1 / std::sqrt(sw);
-    res.scalar(std::string("a2_hcs_") + name, a2, "1", std::string("Sonine a2 in the a2 window, weighted mean over samples and seeds, ") + name);
-    res.scalar(std::string("a2_hcs_err_") + name, err, "1", "its standard error (samples taken as independent)");
-    res.scalar(std::string("a2_hcs_samples_") + name, double(cnt), "1", "samples in the window");
-    res.scalar(std::string("a2_hcs_z_") + name, (a2 - a2_vne) / err, "1", "(a2 - van Noije-Ernst) in standard errors");
+    res.put(out_a2_hcs, a2, {name}, name);
+    res.put(out_a2_hcs_err, err, {name});
+    res.put(out_a2_hcs_samples, double(cnt), {name});
+    res.put(out_a2_hcs_z, (a2 - a2_vne) / err, {name});
 }
 
 } // namespace
@@ -115,9 +124,11 @@ void add_dsmc_kinetics(Result& res, const std::vector<Trace>& dss, const Cooling
     hcs_a2(res, dss, c, "dsmc");
 }
 
+const TableOut out_energy = outputs.table("energy_<w>", "K/K0 and a2 against t/t0, ", {"ed", "dsmc"});
+
 // Fig. 2: K/K0, its parts, Eq. (18), C/N and a2 against t/t0 of one method.
 void add_energy_table(Result& res, const Trace& tr, double t0, const char* name) {
-    Table& t = res.table(std::string("energy_") + name, std::string("K/K0 and a2 against t/t0, ") + name);
+    Table& t = res.table(out_energy, {name}, name);
     const double k0 = tr.kx.front() + tr.ky.front() + tr.krot.front();
     const auto over_by = [](const std::vector<double>& v, double by) {
         return column(v, [by](double x) { return x / by; });
@@ -143,6 +154,12 @@ const ScalarOut out_ed_elastic_fraction_end = outputs.scalar("ed_elastic_fractio
     "TC-elastic share of collisions, ED");
 const ScalarOut out_a2_van_noije_ernst = outputs.scalar("a2_van_noije_ernst", "1",
     "van Noije-Ernst a2 of the 2D HCS at this r (first Sonine approximation)");
+const ScalarOut out_ed_departure_t_over_t0 = outputs.scalar("ed_departure_t_over_t0", "1",
+    "first t/t0 with |K_ED/K_18 - 1| > departure_level, mean over seeds");
+const ScalarOut out_ed_departure_t_over_t0_sd = outputs.scalar("ed_departure_t_over_t0_sd", "1", "its seed standard deviation");
+const ScalarOut out_ed_departure_from_fit_t_over_t0 = outputs.scalar("ed_departure_from_fit_t_over_t0", "1",
+    "first t/t0 with |K_ED/K_18(t; fitted t0) - 1| > departure_level, 1/t0 fitted per seed over t <= t0, mean over seeds");
+const ScalarOut out_ed_departure_from_fit_t_over_t0_sd = outputs.scalar("ed_departure_from_fit_t_over_t0_sd", "1", "its seed standard deviation");
 
 // Fig. 2, ED against kinetic theory: early cooling (Eq. 18, the Enskog rate), where K(t) departs
 // from Eq. (18), and the HCS a2.
@@ -163,7 +180,7 @@ void add_ed_cooling(Result& res, const CoolingSpec& c, const std::vector<Trace>&
     std::vector<double> dep;
     for (const Trace& tr : eds)
         dep.push_back(first_departure(tr.t, k_ratio(tr), eq18_curve(tr, t0), t0, c.departure_level));
-    add_mean_sd(res, "ed_departure_t_over_t0", dep, "first t/t0 with |K_ED/K_18 - 1| > departure_level, mean over seeds");
+    add_mean_sd(res, out_ed_departure_t_over_t0, out_ed_departure_t_over_t0_sd, dep);
     // The same against each seed's own early law: Eq. (18) with 1/t0 fitted to that seed's K(t)
     // over t <= t0 (issue 43 §3). ED cools 5 % slower than kinetic theory's t0 from the start
     // (early_cooling_eq18: dense-gas velocity correlations), which alone puts K 7 % above Eq. (18)
@@ -174,8 +191,7 @@ void add_ed_cooling(Result& res, const CoolingSpec& c, const std::vector<Trace>&
         const double t0_fit = 1 / fit_haff_inv_t0(tr.t, k_ratio(tr), t0);
         dep_fit.push_back(first_departure(tr.t, k_ratio(tr), eq18_curve(tr, t0_fit), t0, c.departure_level));
     }
-    add_mean_sd(res, "ed_departure_from_fit_t_over_t0", dep_fit,
-                "first t/t0 with |K_ED/K_18(t; fitted t0) - 1| > departure_level, 1/t0 fitted per seed over t <= t0, mean over seeds");
+    add_mean_sd(res, out_ed_departure_from_fit_t_over_t0, out_ed_departure_from_fit_t_over_t0_sd, dep_fit);
     res.put(out_a2_van_noije_ernst, theory::van_noije_ernst_a2(c.r, 2));
     hcs_a2(res, eds, c, "ed");
 }
@@ -187,6 +203,9 @@ const ScalarOut out_dsmc_over_ed_max_late = outputs.scalar("dsmc_over_ed_max_lat
 const ScalarOut out_dsmc_over_ed_end = outputs.scalar("dsmc_over_ed_end", "1", "K_DSMC/K_ED at t_end");
 const ScalarOut out_dsmc_over_ed_t0 = outputs.scalar("dsmc_over_ed_t0", "1", "K_DSMC/K_ED at t = t0");
 const ScalarOut out_dsmc_over_ed_5t0 = outputs.scalar("dsmc_over_ed_5t0", "1", "K_DSMC/K_ED at t = 5 t0");
+const ScalarOut out_dsmc_ed_split_t_over_t0 = outputs.scalar("dsmc_ed_split_t_over_t0", "1",
+    "first t/t0 with |K_DSMC/K_ED - 1| > departure_level, mean over seeds");
+const ScalarOut out_dsmc_ed_split_t_over_t0_sd = outputs.scalar("dsmc_ed_split_t_over_t0_sd", "1", "its seed standard deviation");
 
 // Fig. 2, DSMC against ED: where their K(t) agree, and where they split (Sec. 3.1: "only at
 // t/t0 ≈ 10 a difference"): the first t/t0 with |K_DSMC/K_ED - 1| > level, per seed.
@@ -206,7 +225,7 @@ void add_ed_dsmc_energy(Result& res, const std::vector<Trace>& eds, const std::v
     std::vector<double> split;
     for (std::size_t k = 0; k < eds.size(); ++k)
         split.push_back(first_departure(eds[k].t, k_ratio(dss[k]), k_ratio(eds[k]), t0, level));
-    add_mean_sd(res, "dsmc_ed_split_t_over_t0", split, "first t/t0 with |K_DSMC/K_ED - 1| > departure_level, mean over seeds");
+    add_mean_sd(res, out_dsmc_ed_split_t_over_t0, out_dsmc_ed_split_t_over_t0_sd, split);
 }
 
 const TableOut out_loss_per_collision = outputs.table("loss_per_collision",

@@ -70,18 +70,38 @@ std::array<double, 2> early_g_chi2(const Trace& ed, double r_lo) {
 // Mean S(1 <= k <= k_max) of one snapshot of a trace.
 double small_k_S(const Trace& tr, const Snapshot& at, double k_max) { return mean_over(at.S, tr.S_k, 1, k_max); }
 
+// <w>: the method, ed or dsmc.
+const TableOut out_gr = outputs.table("gr_<w>", "g(r/d) at the snapshot times, ", {"ed", "dsmc"});
+const TableOut out_sk = outputs.table("sk_<w>", "S(k), k = l/lambda, at the snapshot times, ", {"ed", "dsmc"});
+
 // Figs. 6 and 7: g(r/d) and S(k) of one method at the snapshot times.
 void add_structure_tables(Result& res, const Trace& tr, const std::vector<double>& snaps, double rho, const char* name) {
     {
-        Table& g = res.table(std::string("gr_") + name, std::string("g(r/d) at the snapshot times, ") + name);
+        Table& g = res.table(out_gr, {name}, name);
         g.add("r_over_d", "1").values = tr.g_r;
         for (std::size_t i = 0; i < tr.snaps.size(); ++i) g.add("g_t" + number_text(snaps[i]), "1").values = tr.snaps[i].g;
     }
-    Table& sk = res.table(std::string("sk_") + name, std::string("S(k), k = l/lambda, at the snapshot times, ") + name);
+    Table& sk = res.table(out_sk, {name}, name);
     sk.add("k", "1").values = tr.S_k;
     for (std::size_t i = 0; i < tr.snaps.size(); ++i) sk.add("S_t" + number_text(snaps[i]), "1").values = tr.snaps[i].S;
     sk.add("S_equilibrium", "1").values = std::vector<double>(tr.S_k.size(), theory::hard_disk_structure_factor_zero(rho));
 }
+
+// <w>: the method, ed or dsmc; <n>: the snapshot time.
+const TableOut out_vcorr = outputs.table("vcorr_<w>",
+    "pair velocity correlations C_n, C_t (mean over seeds) at the snapshot times, ", {"ed", "dsmc"});
+const ScalarOut out_vcorr_n_contact = outputs.scalar("<w>_vcorr_n_contact_t<n>", "1",
+    "C_n of pairs at d <= r < 1.1 d, mean over seeds (molecular chaos: 0)", {"ed", "dsmc"});
+const ScalarOut out_vcorr_n_contact_err = outputs.scalar("<w>_vcorr_n_contact_err_t<n>", "1",
+    "its standard error over seeds", {"ed", "dsmc"});
+const ScalarOut out_vcorr_t_contact = outputs.scalar("<w>_vcorr_t_contact_t<n>", "1",
+    "C_t of pairs at d <= r < 1.1 d, mean over seeds", {"ed", "dsmc"});
+const ScalarOut out_vcorr_t_contact_err = outputs.scalar("<w>_vcorr_t_contact_err_t<n>", "1",
+    "its standard error over seeds", {"ed", "dsmc"});
+const ScalarOut out_vcorr_approach_contact = outputs.scalar("<w>_vcorr_approach_contact_t<n>", "1",
+    "<g_n^2 | approaching> / (2 T1) of pairs at d <= r < 1.1 d, mean over seeds (molecular chaos: 1)", {"ed", "dsmc"});
+const ScalarOut out_vcorr_approach_contact_err = outputs.scalar("<w>_vcorr_approach_contact_err_t<n>", "1",
+    "its standard error over seeds", {"ed", "dsmc"});
 
 // The pair velocity correlations of one method at the snapshot times, seed means (issue 27 §3:
 // does the gas keep molecular chaos at t = 0, and how fast do correlations build up?): a table over
@@ -91,8 +111,7 @@ void add_structure_tables(Result& res, const Trace& tr, const std::vector<double
 void add_velocity_correlation(Result& res, const CoolingSpec& c, const std::vector<Trace>& trs, const char* name) {
     const std::vector<double> snaps = c.snapshots();
     const VelocityCorrelation grid = velocity_correlation(c.box(), c.d);
-    Table& t = res.table(std::string("vcorr_") + name,
-                         std::string("pair velocity correlations C_n, C_t (mean over seeds) at the snapshot times, ") + name);
+    Table& t = res.table(out_vcorr, {name}, name);
     const std::vector<double> r = column(grid.centres(), [&](double x) { return x / c.d; });
     t.add("r_over_d", "1").values = r;
     for (std::size_t i = 0; i < snaps.size(); ++i)
@@ -103,29 +122,23 @@ void add_velocity_correlation(Result& res, const CoolingSpec& c, const std::vect
                 for (std::size_t b = 0; b < r.size(); ++b) mean[b] += (tr.snaps[i].*member)[b] / double(trs.size());
             t.add(col + number_text(snaps[i]), "1").values = mean;
         }
-    for (std::size_t i = 0; i < snaps.size(); ++i) {
-        const std::string at = "_t" + number_text(snaps[i]);
-        for (const auto& [what, member, desc] :
-             {std::tuple{"n", &Snapshot::vc_n, "C_n of pairs at d <= r < 1.1 d, mean over seeds (molecular chaos: 0)"},
-              std::tuple{"t", &Snapshot::vc_t, "C_t of pairs at d <= r < 1.1 d, mean over seeds"},
-              std::tuple{"approach", &Snapshot::vc_a, "<g_n^2 | approaching> / (2 T1) of pairs at d <= r < 1.1 d, "
-                                                      "mean over seeds (molecular chaos: 1)"}}) {
+    for (std::size_t i = 0; i < snaps.size(); ++i)
+        for (const auto& [mean, sem, member] :
+             {std::tuple{&out_vcorr_n_contact, &out_vcorr_n_contact_err, &Snapshot::vc_n},
+              std::tuple{&out_vcorr_t_contact, &out_vcorr_t_contact_err, &Snapshot::vc_t},
+              std::tuple{&out_vcorr_approach_contact, &out_vcorr_approach_contact_err, &Snapshot::vc_a}}) {
             const MeanSd m = mean_sd(column(trs, [&](const Trace& tr) { return (tr.snaps[i].*member).front(); }));
-            const std::string q = std::string(name) + "_vcorr_" + what + "_contact";
-            res.scalar(q + at, m.mean, "1", desc);
-            res.scalar(q + "_err" + at, m.sem, "1", "its standard error over seeds");
+            res.put(*mean, m.mean, {name, snaps[i]});
+            res.put(*sem, m.sem, {name, snaps[i]});
         }
-    }
 }
 
 const ScalarOut out_ed_g_inside_contact_max = outputs.scalar("ed_g_inside_contact_max", "1",
     "largest g(r/d) for r/d < 0.98, last snapshot, ED");
 const ScalarOut out_ed_g_peak_sqrt3_contrast = outputs.scalar("ed_g_peak_sqrt3_contrast", "1",
     "max g near sqrt(3) over min g in [1.4, 1.6], last snapshot, ED");
-const ScalarOut out_ed_g_peak_2_contrast = outputs.scalar("ed_g_peak_2_contrast", "1",
-    "max g near 2 over min g in [1.8, 1.9], last snapshot, ED");
-const ScalarOut out_ed_g_peak_3_contrast = outputs.scalar("ed_g_peak_3_contrast", "1",
-    "max g near 3 over min g in [2.75, 2.9], last snapshot, ED");
+// The peaks at 2 and 3 d (<n>); each write completes the description with its own ranges.
+const ScalarOut out_ed_g_peak_contrast = outputs.scalar("ed_g_peak_<n>_contrast", "1", "max g near ");
 const ScalarOut out_ed_g_contact = outputs.scalar("ed_g_contact", "1", "g at contact, last snapshot, ED");
 const ScalarOut out_ed_g_early_vs_elastic_chi2 = outputs.scalar("ed_g_early_vs_elastic_chi2", "1",
     "chi^2 per bin of g(r/d) at the first snapshot after t = 0 against t = 0 (elastic), 0.98 <= r/d <= 5, ED");
@@ -137,6 +150,9 @@ const ScalarOut out_ed_g_early_time_over_t0 = outputs.scalar("ed_g_early_time_ov
     "time of that snapshot in t0");
 const ScalarOut out_ed_g_contact_early_over_elastic = outputs.scalar("ed_g_contact_early_over_elastic", "1",
     "contact value of g at the first snapshot after t = 0 over that at t = 0, ED");
+const ScalarOut out_ed_g_early_vs_elastic_chi2_beyond_contact_mean = outputs.scalar("ed_g_early_vs_elastic_chi2_beyond_contact_mean", "1",
+    "chi^2 per bin of g(r/d) at the first snapshot after t = 0 against t = 0 over 1.1 <= r/d <= 5, ED, mean over seeds");
+const ScalarOut out_ed_g_early_vs_elastic_chi2_beyond_contact_mean_sd = outputs.scalar("ed_g_early_vs_elastic_chi2_beyond_contact_mean_sd", "1", "its seed standard deviation");
 
 // Fig. 6, ED: the clustered g at the last snapshot (exclusion hole, the peaks of packed disks at
 // sqrt(3), 2 and 3 d, contact value), and early g as elastic.
@@ -145,8 +161,10 @@ void add_ed_g(Result& res, const std::vector<Trace>& eds, const std::vector<doub
     const auto& g_last = ed.snaps.back().g;
     res.put(out_ed_g_inside_contact_max, max_over(g_last, ed.g_r, 0.0, 0.98));
     res.put(out_ed_g_peak_sqrt3_contrast, max_over(g_last, ed.g_r, 1.68, 1.78) / min_over(g_last, ed.g_r, 1.4, 1.6));
-    res.put(out_ed_g_peak_2_contrast, max_over(g_last, ed.g_r, 1.95, 2.05) / min_over(g_last, ed.g_r, 1.8, 1.9));
-    res.put(out_ed_g_peak_3_contrast, max_over(g_last, ed.g_r, 2.95, 3.05) / min_over(g_last, ed.g_r, 2.75, 2.9));
+    res.put(out_ed_g_peak_contrast, max_over(g_last, ed.g_r, 1.95, 2.05) / min_over(g_last, ed.g_r, 1.8, 1.9), {2},
+            "2 over min g in [1.8, 1.9], last snapshot, ED");
+    res.put(out_ed_g_peak_contrast, max_over(g_last, ed.g_r, 2.95, 3.05) / min_over(g_last, ed.g_r, 2.75, 2.9), {3},
+            "3 over min g in [2.75, 2.9], last snapshot, ED");
     res.put(out_ed_g_contact, max_over(g_last, ed.g_r, 1.0, 1.04));
     // Early g equals the elastic one (Sec. 3.3: "for short times one observes g as for an elastic
     // hard sphere gas"): the first snapshot after t = 0 against t = 0 (the end of the elastic
@@ -161,8 +179,7 @@ void add_ed_g(Result& res, const std::vector<Trace>& eds, const std::vector<doub
     std::vector<double> per_seed;
     for (const Trace& tr : eds)
         if (tr.snaps.size() >= 2) per_seed.push_back(early_g_chi2(tr, 1.1)[0]);
-    add_mean_sd(res, "ed_g_early_vs_elastic_chi2_beyond_contact_mean", per_seed,
-                "chi^2 per bin of g(r/d) at the first snapshot after t = 0 against t = 0 over 1.1 <= r/d <= 5, ED, mean over seeds");
+    add_mean_sd(res, out_ed_g_early_vs_elastic_chi2_beyond_contact_mean, out_ed_g_early_vs_elastic_chi2_beyond_contact_mean_sd, per_seed);
     res.put(out_ed_g_early_time_over_t0, snaps[1] / t0);
     res.put(out_ed_g_contact_early_over_elastic, max_over(ed.snaps[1].g, ed.g_r, 1.0, 1.04) / max_over(ed.snaps[0].g, ed.g_r, 1.0, 1.04));
 }
@@ -177,6 +194,9 @@ const ScalarOut out_ed_Sk_small_k_growth = outputs.scalar("ed_Sk_small_k_growth"
     "mean S(k <= sk_k_max) at the last snapshot over that at t = 0 (lattice leftover), ED, first seed");
 const ScalarOut out_ed_Sk_log_seed_sd = outputs.scalar("ed_Sk_log_seed_sd", "1",
     "seed standard deviation of ln(mean S_ED(k <= sk_k_max)) at the last snapshot: the run-to-run scatter of one run");
+const ScalarOut out_ed_Sk_change_after_20s = outputs.scalar("ed_Sk_change_after_20s", "1",
+    "relative change of mean S(k <= sk_k_max) from t = 20 s to the last snapshot, ED, mean over seeds");
+const ScalarOut out_ed_Sk_change_after_20s_sd = outputs.scalar("ed_Sk_change_after_20s_sd", "1", "its seed standard deviation");
 
 // Fig. 7, ED: growth of S(k) at small k, measured from equilibrium: against the elastic hard-disk
 // S(0) (Henderson's equation of state; what an equilibrated elastic gas has at k <= 25), not
@@ -196,8 +216,7 @@ void add_ed_sk(Result& res, const std::vector<Trace>& eds, const std::vector<dou
     res.put(out_ed_Sk_growth_over_equilibrium, mean_sd(growth, NonFinite::censored).mean);
     res.put(out_ed_Sk_t0_over_equilibrium, mean_sd(lattice, NonFinite::censored).mean);
     res.put(out_ed_Sk_small_k_growth, small_k_S(ed, ed.snaps.back(), k_small) / small_k_S(ed, ed.snaps.front(), k_small));
-    add_mean_sd(res, "ed_Sk_change_after_20s", change,
-                "relative change of mean S(k <= sk_k_max) from t = 20 s to the last snapshot, ED, mean over seeds");
+    add_mean_sd(res, out_ed_Sk_change_after_20s, out_ed_Sk_change_after_20s_sd, change);
     res.put(out_ed_Sk_log_seed_sd, mean_sd(lns, NonFinite::censored).sd);
 }
 
@@ -243,6 +262,15 @@ const ScalarOut out_Sk_dsmc_over_ed_factor = outputs.scalar("Sk_dsmc_over_ed_fac
     "exp of Sk_dsmc_over_ed_log: DSMC's S(k <= sk_k_max) in units of ED's");
 const ScalarOut out_Sk_ed_dsmc_mean_abs_log_ratio = outputs.scalar("Sk_ed_dsmc_mean_abs_log_ratio", "1",
     "mean |ln(S_ED/S_DSMC)| over 1 <= k <= sk_k_max at the last snapshot, mean over seeds");
+const ScalarOut out_Sk_dsmc_over_ed_log = outputs.scalar("Sk_dsmc_over_ed_log", "1",
+    "ln(S_DSMC/S_ED) averaged over 1 <= k <= sk_k_max at the last snapshot, mean over seeds");
+const ScalarOut out_Sk_dsmc_over_ed_log_sd = outputs.scalar("Sk_dsmc_over_ed_log_sd", "1", "its seed standard deviation");
+const ScalarOut out_Sk_dsmc_over_ed_log_20s = outputs.scalar("Sk_dsmc_over_ed_log_20s", "1",
+    "the same at t = 20 s");
+const ScalarOut out_Sk_dsmc_over_ed_log_20s_sd = outputs.scalar("Sk_dsmc_over_ed_log_20s_sd", "1", "its seed standard deviation");
+const ScalarOut out_dsmc_Sk_change_after_20s = outputs.scalar("dsmc_Sk_change_after_20s", "1",
+    "relative change of mean S(k <= sk_k_max) from t = 20 s to the last snapshot, DSMC, mean over seeds");
+const ScalarOut out_dsmc_Sk_change_after_20s_sd = outputs.scalar("dsmc_Sk_change_after_20s_sd", "1", "its seed standard deviation");
 
 // Fig. 7, DSMC against ED: agreement of S(k) at small k. Per seed: m = mean over
 // 1 <= k <= sk_k_max of ln(S_DSMC/S_ED) at the last snapshot (and at 20 s); then mean and
@@ -265,12 +293,11 @@ void add_sk_agreement(Result& res, const std::vector<Trace>& eds, const std::vec
     Table& t = res.table(out_sk_seeds);
     t.add({{"seed_index", "1", idx}, {"S_ed_20s", "1", e20}, {"S_ed_last", "1", elast}, {"S_dsmc_20s", "1", d20},
            {"S_dsmc_last", "1", dlast}, {"mean_ln_ratio_last", "1", m_last}});
-    add_mean_sd(res, "Sk_dsmc_over_ed_log", m_last, "ln(S_DSMC/S_ED) averaged over 1 <= k <= sk_k_max at the last snapshot, mean over seeds");
+    add_mean_sd(res, out_Sk_dsmc_over_ed_log, out_Sk_dsmc_over_ed_log_sd, m_last);
     res.put(out_Sk_dsmc_over_ed_factor, std::exp(mean_sd(m_last, NonFinite::censored).mean));
-    if (!m_20.empty()) add_mean_sd(res, "Sk_dsmc_over_ed_log_20s", m_20, "the same at t = 20 s");
+    if (!m_20.empty()) add_mean_sd(res, out_Sk_dsmc_over_ed_log_20s, out_Sk_dsmc_over_ed_log_20s_sd, m_20);
     res.put(out_Sk_ed_dsmc_mean_abs_log_ratio, mean_sd(abs_last, NonFinite::censored).mean);
-    add_mean_sd(res, "dsmc_Sk_change_after_20s", d_change,
-                "relative change of mean S(k <= sk_k_max) from t = 20 s to the last snapshot, DSMC, mean over seeds");
+    add_mean_sd(res, out_dsmc_Sk_change_after_20s, out_dsmc_Sk_change_after_20s_sd, d_change);
 }
 
 const ScalarOut out_dsmc_cells_per_side = outputs.scalar("dsmc_cells_per_side", "1", "DSMC cells per box side");

@@ -165,7 +165,7 @@ Result report_dsmc_only(const CoolingSpec& c, const std::vector<Trace>& dss);
 double mean_over(const std::vector<double>& v, const std::vector<double>& x, double lo, double hi);
 double max_over(const std::vector<double>& v, const std::vector<double>& x, double lo, double hi);
 double min_over(const std::vector<double>& v, const std::vector<double>& x, double lo, double hi);
-void add_mean_sd(Result& res, const std::string& name, const std::vector<double>& v, const std::string& what);
+void add_mean_sd(Result& res, const ScalarOut& mean, const ScalarOut& sd, const std::vector<double>& v);
 
 // report_fig2.cpp: K(t) against Eq. (18), a2, DSMC against ED.
 std::vector<double> k_ratio(const Trace& tr);

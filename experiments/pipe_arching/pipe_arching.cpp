@@ -22,6 +22,7 @@
 // Momentum balance of the falling column (exact for hard disks: pair impulses cancel):
 //   P_y(t) - P_y(0) = -M g t + J_y,  J_y = sum of the side walls' impulses (friction) since t = 0.
 #include <cmath>
+#include <stdexcept>
 #include <string>
 #include <utility>
 
@@ -37,6 +38,29 @@ using namespace pipe_arching_detail;
 
 const ScalarOut out_n_seeds = outputs.scalar("n_seeds", "1", "independent runs");
 const ScalarOut out_layers = outputs.scalar("layers", "1", "rows of the initial lattice");
+
+// Run 0's tables (compute_figures.cpp) arrive named and described through the sweep's JSON
+// (FigureTable, the checkpoint format): each is written through the handle its name matches,
+// with its own description, and the <n> (a time, as tlabel writes it) taken back from the name.
+const TableOut out_relaxation = outputs.table("relaxation", "");
+const TableOut out_marks = outputs.table("marks", "");
+const TableOut out_timeline = outputs.table("timeline", "");
+const TableOut out_snapshot = outputs.table("snapshot_t<n>", "");
+const TableOut out_crack = outputs.table("crack_t<n>", "");
+const TableOut out_pnc = outputs.table("pnc_t<n>", "");
+
+void put_figure_table(Result& res, const FigureTable& f) {
+    for (const TableOut* h : {&out_relaxation, &out_marks, &out_timeline, &out_snapshot, &out_crack, &out_pnc}) {
+        if (!matches_output_pattern(h->pattern, f.name)) continue;
+        const std::size_t at = h->pattern.find("<n>");
+        Table& t = at == std::string::npos
+                       ? res.table(*h, {}, f.description)
+                       : res.table(*h, {f.name.substr(at, f.name.size() - (h->pattern.size() - 3))}, f.description);
+        for (std::size_t c = 0; c < f.columns.size(); ++c) t.add(f.columns[c], f.units[c]).values = f.values[c];
+        return;
+    }
+    throw std::logic_error("pipe-arching: run 0's table " + f.name + " matches no handle");
+}
 
 // Sec. 5 and Figs. 13-14 as a protocol (harness/protocol.hpp): one sweep point per seed run.
 struct PipeArching {
@@ -90,10 +114,7 @@ struct PipeArching {
         Result res;
         res.put(out_n_seeds, double(s.n_seeds));
         res.put(out_layers, std::ceil(double(s.n_particles) / (std::floor((s.L - s.d) / s.a + 1e-9) + 0.5)));
-        for (const FigureTable& f : runs.front().figure) {
-            Table& t = res.table(f.name, f.description);
-            for (std::size_t c = 0; c < f.columns.size(); ++c) t.add(f.columns[c], f.units[c]).values = f.values[c];
-        }
+        for (const FigureTable& f : runs.front().figure) put_figure_table(res, f);
         report_seeds(res, s, runs);
         return res;
     }

@@ -41,6 +41,11 @@ void report_relaxation(Result& res, const std::vector<SeedRun>& runs) {
 
 const TableOut out_fits_per_time = outputs.table("fits_per_time",
     "Eq. (21) A (Fig. 14(a) times) or Eq. (22) B (Fig. 14(b) times) fitted at each time alone: run 0 with its standard error, and the median over seeds");
+// Per time (<n>, three decimals) of A (Fig. 14(a)) or B (14(b)) (<w>); the description names the
+// equation, so it is written at run time.
+const ScalarOut out_fit_at = outputs.scalar("<w>_t<n>", "1/s", "", {"A", "B"});
+const ScalarOut out_fit_err_at = outputs.scalar("<w>_err_t<n>", "1/s", "its standard error", {"A", "B"});
+const ScalarOut out_fit_at_median_seeds = outputs.scalar("<w>_t<n>_median_seeds", "1/s", "", {"A", "B"});
 
 // Fig. 14 per time: the fits at each time alone (run 0 with its error, median over seeds).
 void report_fig14_times(Result& res, const PipeArchingSpec& s, const std::vector<SeedRun>& runs) {
@@ -54,10 +59,10 @@ void report_fig14_times(Result& res, const PipeArchingSpec& s, const std::vector
         v0.push_back(f0.per_time[k].value);
         e0.push_back(f0.per_time[k].error);
         med.push_back(median(column(runs, [&](const SeedRun& r) { return r.per_time.at(k).value; })));
-        const std::string what = k < n_before ? "A_" : "B_", eq = k < n_before ? "Eq. (21)" : "Eq. (22)";
-        res.scalar(what + tlabel(t), v0.back(), "1/s", eq + " fit at this time alone, run 0");
-        res.scalar(what + "err_" + tlabel(t), e0.back(), "1/s", "its standard error");
-        res.scalar(what + tlabel(t) + "_median_seeds", med.back(), "1/s", eq + " fit at this time alone, median over seeds");
+        const std::string what = k < n_before ? "A" : "B", eq = k < n_before ? "Eq. (21)" : "Eq. (22)";
+        res.put(out_fit_at, v0.back(), {what, ttext(t)}, eq + " fit at this time alone, run 0");
+        res.put(out_fit_err_at, e0.back(), {what, ttext(t)});
+        res.put(out_fit_at_median_seeds, med.back(), {what, ttext(t)}, eq + " fit at this time alone, median over seeds");
     }
     pt.add({{"t", "s", tt}, {"run0", "1/s", v0}, {"run0_err", "1/s", e0}, {"median_seeds", "1/s", med}});
 }
@@ -216,6 +221,10 @@ const ScalarOut out_y_arch_run0 = outputs.scalar("y_arch_run0", "d", "its lab he
 const ScalarOut out_t_precursor_run0 = outputs.scalar("t_precursor_run0", "s", "its first hot wall disk, run 0");
 const ScalarOut out_t_crack_run0 = outputs.scalar("t_crack_run0", "s", "first crack, run 0");
 const ScalarOut out_y_crack_run0 = outputs.scalar("y_crack_run0", "d", "its lab height, run 0");
+// The quartiles over seeds of each time (<w>), described at run time by what it is the time of.
+const Words seed_times = {"t_arch", "t_precursor", "t_hot_wall", "t_crack"};
+const ScalarOut out_time_q = outputs.scalar("<w>_q<n>", "s", "", seed_times);
+const ScalarOut out_time_median = outputs.scalar("<w>_median", "s", "", seed_times);
 
 // First arch, its first hot wall disk and first crack over seeds: when (censored at t_end),
 // where, and where the paper's single run falls in that distribution.
@@ -233,9 +242,9 @@ void report_arch_times(Result& res, const std::vector<SeedRun>& runs) {
     Table& cd = res.table(out_arch_time_cdf);
     cd.add({{"t_arch", "s", tt}, {"fraction", "1", fr}});
     auto quartiles = [&](const std::string& name, const std::vector<double>& v, const std::string& what) {
-        res.scalar(name + "_q25", quantile(v, 0.25, NonFinite::censored), "s", what + ", lower quartile over seeds (none = +inf)");
-        res.scalar(name + "_median", quantile(v, 0.5, NonFinite::censored), "s", what + ", median over seeds");
-        res.scalar(name + "_q75", quantile(v, 0.75, NonFinite::censored), "s", what + ", upper quartile over seeds");
+        res.put(out_time_q, quantile(v, 0.25, NonFinite::censored), {name, 25}, what + ", lower quartile over seeds (none = +inf)");
+        res.put(out_time_median, quantile(v, 0.5, NonFinite::censored), {name}, what + ", median over seeds");
+        res.put(out_time_q, quantile(v, 0.75, NonFinite::censored), {name, 75}, what + ", upper quartile over seeds");
     };
     quartiles("t_arch", ta, "first arch");
     quartiles("t_precursor", tp, "first hot wall disk of the first arch");
@@ -324,6 +333,10 @@ const ScalarOut out_wall_slowdown_gain_z = outputs.scalar("wall_slowdown_gain_z"
     "that mean over its standard error (seed scatter)");
 const ScalarOut out_wall_load_peak_median = outputs.scalar("wall_load_peak_median", "1",
     "largest 5-frame mean of the walls' share of the weight, median over seeds");
+// The distribution over seeds of the widest gap (<w>: over all frames, or after the arch).
+const Words widest_gaps = {"opening_max_all", "opening_max_after"};
+const ScalarOut out_opening_q = outputs.scalar("<w>_q<n>", "d", "its ", widest_gaps);
+const ScalarOut out_opening_max = outputs.scalar("<w>_max", "d", "its largest value over seeds", widest_gaps);
 
 // The section's other statements (Sec. 5), per seed, then over seeds.
 void report_section(Result& res, const PipeArchingSpec& s, const std::vector<SeedRun>& runs) {
@@ -368,9 +381,9 @@ void report_section(Result& res, const PipeArchingSpec& s, const std::vector<See
     for (const auto& [name, f] : {std::pair{"opening_max_all", &SeedRun::opening_max_all}, std::pair{"opening_max_after", &SeedRun::opening_max_after}}) {
         std::vector<double> v = column(runs, f);
         std::erase_if(v, [](double x) { return !std::isfinite(x); });
-        res.scalar(std::string(name) + "_q25", v.empty() ? NAN : quantile(v, 0.25, NonFinite::censored), "d", "its lower quartile over seeds");
-        res.scalar(std::string(name) + "_q75", v.empty() ? NAN : quantile(v, 0.75, NonFinite::censored), "d", "its upper quartile over seeds");
-        res.scalar(std::string(name) + "_max", v.empty() ? NAN : *std::max_element(v.begin(), v.end()), "d", "its largest value over seeds");
+        res.put(out_opening_q, v.empty() ? NAN : quantile(v, 0.25, NonFinite::censored), {name, 25}, "lower quartile over seeds");
+        res.put(out_opening_q, v.empty() ? NAN : quantile(v, 0.75, NonFinite::censored), {name, 75}, "upper quartile over seeds");
+        res.put(out_opening_max, v.empty() ? NAN : *std::max_element(v.begin(), v.end()), {name});
     }
     // Successive waves (arch_aftermath): the share of steps that rise, pooled over seeds, and the
     // seeds in which a later wave is stronger than the first arch, among the seeds with an arch.

@@ -80,11 +80,14 @@ struct Pipe : PipeArchingSpec {
     }
 };
 
-inline std::string tlabel(double t) {
+// A time as names write it, with three decimals ("0.050": the <n> of "A_t<n>"); tlabel puts the t
+// in front ("t0.050").
+inline std::string ttext(double t) {
     char buf[32];
-    std::snprintf(buf, sizeof buf, "t%.3f", t);
+    std::snprintf(buf, sizeof buf, "%.3f", t);
     return buf;
 }
+inline std::string tlabel(double t) { return "t" + ttext(t); }
 
 // Eq. (21) (a Fig. 14(a) time) or Eq. (22) (a (b) time) fitted at one time alone (NaN: no fit).
 struct TimeFit {
