@@ -75,9 +75,9 @@ void fig10_slopes(Result& res, const std::vector<double>& ts, const std::vector<
 }
 
 // The TC-elastic shares of the main run carry no suffix, those of the run with the other pair
-// rule "_both" (the TOML declared only that one: with tc_both = true the comparison run's
-// "_either" names were refused before and are still).
-const Words rule_words{"", "_both"};
+// rule its name: "_both", or "_either" when the main run uses tc_both = true (the TOML's list
+// lacked these, so such a run stopped before it wrote its results).
+const Words rule_words{"", "_both", "_either"};
 const ScalarOut out_elastic_fraction_early_max = outputs.scalar("elastic_fraction_early_max<w>", "1",
     "largest TC-elastic share of all pair collisions, cumulative, for t <= elastic_until", rule_words);
 const ScalarOut out_elastic_fraction_max = outputs.scalar("elastic_fraction_max<w>", "1",
