@@ -307,11 +307,11 @@ ParameterSet ParameterSet::load(const std::filesystem::path& file, Scale scale) 
     if (!root.is_table()) throw InputError(where + ": not a table of keys");
     for (const auto& [key, v] : root.as_table())
         if (key != "name" && key != "paper" && key != "paper_key" && key != "paper_short" && key != "paper_citation" &&
-            key != "description" && key != "figure" && key != "parameters" && key != "outputs" && key != "readings" &&
+            key != "description" && key != "figure" && key != "parameters" && key != "readings" &&
             key != "smoke")
             throw InputError(toml_place(where, v) + ": unknown key '" + key +
                              "'; allowed: name, paper, paper_key, paper_short, paper_citation, description, [[figure]], "
-                             "[parameters.<name>], [outputs], [readings.<name>], [smoke]");
+                             "[parameters.<name>], [readings.<name>], [smoke]");
     if (!root.contains("parameters") || !root.at("parameters").is_table())
         throw InputError(where + ": missing [parameters] table");
     std::vector<std::pair<std::uint_least32_t, Parameter>> ordered;

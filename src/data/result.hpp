@@ -46,25 +46,27 @@ struct Result {
     std::vector<Table> tables;
     std::vector<Scalar> scalars;
 
-    // A name given twice is a bug in the experiment; it is refused here, before anything is
-    // written, rather than by HDF5 half-way through data.h5.
-    Table& table(std::string name, std::string description) {
+    // By name, for the harness and tests; experiments write through handles (put and table(handle)
+    // below; tests/unit/declared_outputs_test.cpp finds any experiment that calls these). A name
+    // given twice is a bug in the experiment; it is refused here, before anything is written,
+    // rather than by HDF5 half-way through data.h5.
+    Table& add_table(std::string name, std::string description) {
         for (const auto& t : tables)
             if (t.name == name) throw std::logic_error("result table '" + name + "' added twice");
         tables.push_back({std::move(name), std::move(description), {}});
         return tables.back();
     }
-    void scalar(std::string name, double value, std::string unit, std::string description) {
+    void add_scalar(std::string name, double value, std::string unit, std::string description) {
         if (find_scalar(name)) throw std::logic_error("result scalar '" + name + "' added twice");
         scalars.push_back({std::move(name), value, std::move(unit), std::move(description)});
     }
     // Through a handle (data/outputs.hpp), the way experiments write: n fills the pattern's <n> and <w>,
     // more is appended to the declared description.
     void put(const ScalarOut& h, double value, std::initializer_list<NamePart> n = {}, std::string_view more = {}) {
-        scalar(fill_pattern(h.pattern, h.words, n), value, h.unit, h.description + std::string(more));
+        add_scalar(fill_pattern(h.pattern, h.words, n), value, h.unit, h.description + std::string(more));
     }
     Table& table(const TableOut& h, std::initializer_list<NamePart> n = {}, std::string_view more = {}) {
-        return table(fill_pattern(h.pattern, h.words, n), h.description + std::string(more));
+        return add_table(fill_pattern(h.pattern, h.words, n), h.description + std::string(more));
     }
     const Scalar* find_scalar(const std::string& name) const {
         for (const auto& s : scalars)

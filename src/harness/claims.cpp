@@ -380,7 +380,7 @@ Claim read_claim(const toml::value& c, const std::string& where, const std::stri
                          "' is not a scalar name (non-empty, no spaces)");
     if (outputs && outputs->declared() && !outputs->declares_scalar(k.measured))
         throw InputError(r.where + line_of(c.at("measured")) + ": measured '" + k.measured + "' is not an output of " +
-                         experiment + " (experiments/" + experiment + ".toml [outputs] declares no such scalar)");
+                         experiment + " (no output handle of it makes such a scalar; `granrepro list --json` lists them)");
     for (const auto& s : k.scales) r.check_scale(s, "scales");
     if (c.contains("figure")) {
         k.figure = toml::find<std::string>(c, "figure");

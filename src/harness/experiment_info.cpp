@@ -64,15 +64,8 @@ ExperimentInfo ExperimentInfo::load(const std::filesystem::path& file) {
                 info.smoke.push_back(assignment);
             }
         }
-        // Outputs are declared by the handles the experiment's reports write through (data/outputs.hpp).
+        // Outputs are declared by the handles its reports write through (data/outputs.hpp).
         info.outputs = declared_outputs(info.name);
-        if (root.contains("outputs")) { // TRANSITION: experiments not yet converted to handles
-            const toml::value& o = root.at("outputs");
-            for (auto [key, list] : {std::pair{"scalars", &info.outputs.scalars}, std::pair{"tables", &info.outputs.tables}}) {
-                if (!o.contains(key)) continue;
-                for (const auto& v : toml::find<toml::array>(o, key)) list->push_back(toml::get<std::string>(v));
-            }
-        }
         return info;
     } catch (const InputError&) {
         throw;

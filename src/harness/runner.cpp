@@ -347,10 +347,10 @@ std::optional<Result> run_part(const Experiment& exp, const RunContext& ctx, con
     }
 }
 
-// experiments/<name>.toml [outputs] must cover what the run wrote, since claims and plot scripts
-// are checked against it when they load: a code change that writes a name it does not declare
-// fails here (in CI's quick runs), before anything is written; the checkpoint stays, so the rerun
-// after declaring it resumes.
+// The experiment's output handles (data/outputs.hpp) must cover what the run wrote, since claims
+// and plot scripts are checked against them when they load. Experiments write only through
+// handles, so this holds by construction; it guards a Result made by other means (tests'
+// protocols declare nothing and are not checked). Fails before anything is written.
 void refuse_undeclared(const ExperimentInfo& info, const Result& result, const std::string& name) {
     if (!info.outputs.declared()) return;
     std::string undeclared;
@@ -359,8 +359,7 @@ void refuse_undeclared(const ExperimentInfo& info, const Result& result, const s
     for (const auto& t : result.tables)
         if (!info.outputs.declares_table(t.name)) undeclared += " table " + t.name;
     if (!undeclared.empty())
-        throw std::runtime_error(name + " wrote outputs that " + info.file.string() +
-                                 " [outputs] does not declare (declare them, <n> for a number):" + undeclared);
+        throw std::runtime_error(name + " wrote outputs that no output handle of it declares:" + undeclared);
 }
 
 // What one run has made, for writing its results.

@@ -55,8 +55,8 @@ struct Toy {
         Result r;
         double sum = 0;
         for (const Outcome& o : swept.outcomes) sum += o.x;
-        r.scalar("sum", sum, "1", "sum of x");
-        r.scalar("n", double(s.n), "1", "points");
+        r.add_scalar("sum", sum, "1", "sum of x");
+        r.add_scalar("n", double(s.n), "1", "points");
         return r;
     }
 };

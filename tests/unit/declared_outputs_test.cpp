@@ -1,9 +1,11 @@
-// Declared outputs (issue 28): the pattern matcher, and the contract between experiments/*.toml
-// [outputs], the claims of expected/*.toml and the tables the plot scripts name literally.
+// Declared outputs (issues 28, 44): the pattern matcher, the handles every output is written
+// through (data/outputs.hpp), and the contract between those handles, the claims of
+// expected/*.toml and the tables the plot scripts name literally.
 #include <gtest/gtest.h>
 
 #include <filesystem>
 #include <fstream>
+#include <regex>
 #include <sstream>
 
 #include "core/input_error.hpp"
@@ -37,6 +39,64 @@ TEST(DeclaredOutputs, MalformedPatternsAreNamed) {
     EXPECT_NE(output_pattern_error("v_<n"), "");
     EXPECT_NE(output_pattern_error("a b"), "");
     EXPECT_NE(output_pattern_error("tables/x"), "");
+}
+
+// A handle's placeholders take numbers (number_text's, or already written) and, for <w>, its words
+// only; a report that gets them wrong stops at the first quick run.
+TEST(OutputHandles, FillTheirPlaceholdersWithNumbersAndTheirWords) {
+    const Words readings{"magnitude", "elastic"};
+    EXPECT_EQ(fill_pattern("v_crit_kN<n>", {}, {2000.0}), "v_crit_kN2000");
+    EXPECT_EQ(fill_pattern("series_k<n>_e<n>", {}, {200, "0.90"}), "series_k200_e0.90");
+    EXPECT_EQ(fill_pattern("eq2_<w>_v_crit", readings, {"elastic"}), "eq2_elastic_v_crit");
+    EXPECT_EQ(fill_pattern("t_col", {}, {}), "t_col");
+    EXPECT_THROW(fill_pattern("eq2_<w>_v_crit", readings, {"signed"}), std::logic_error); // not a word of it
+    EXPECT_THROW(fill_pattern("v_kN<n>", {}, {"abc"}), std::logic_error);                 // not a number
+    EXPECT_THROW(fill_pattern("v_kN<n>", {}, {}), std::logic_error);                      // too few parts
+    EXPECT_THROW(fill_pattern("t_col", {}, {1.0}), std::logic_error);                     // too many
+    Result r;
+    r.put(ScalarOut{"x_k<n>", "m/s", "a speed", {}}, 1.5, {200}, " at k_N");
+    ASSERT_EQ(r.scalars.size(), 1u);
+    EXPECT_EQ(r.scalars[0].name, "x_k200");
+    EXPECT_EQ(r.scalars[0].unit, "m/s");
+    EXPECT_EQ(r.scalars[0].description, "a speed at k_N");
+}
+
+// A catalog holds one pattern per word, and names a malformed or repeated declaration instead of
+// failing at start-up.
+TEST(OutputHandles, ACatalogExpandsWordsAndNamesItsErrors) {
+    constexpr Outputs cat{"declared-outputs-test"};
+    cat.scalar("eq2_<w>_v", "m/s", "v", {"a", "b"});
+    cat.scalar("v_k<n>", "m/s", "v");
+    cat.scalar("v_k<n>", "m/s", "again");
+    cat.table("bad name", "t");
+    cat.scalar("no_word", "1", "words but no <w>", {"a"});
+    const DeclaredOutputs& d = declared_outputs("declared-outputs-test");
+    EXPECT_EQ(d.scalars, (std::vector<std::string>{"eq2_a_v", "eq2_b_v", "v_k<n>", "v_k<n>", "no_word"}));
+    ASSERT_EQ(d.errors.size(), 3u);
+    EXPECT_NE(d.errors[0].find("declared twice"), std::string::npos) << d.errors[0];
+    EXPECT_NE(d.errors[1].find("' '"), std::string::npos) << d.errors[1];
+    EXPECT_NE(d.errors[2].find("<w>"), std::string::npos) << d.errors[2];
+}
+
+// Every experiment's catalog is well formed, and no experiment writes a name by hand: Result's
+// add_scalar/add_table are for the harness and tests, so a name cannot bypass its handle.
+TEST(OutputHandles, ExperimentsWriteOnlyThroughWellFormedHandles) {
+    for (const auto& e : experiment_registry()) {
+        const DeclaredOutputs& d = declared_outputs(e.name);
+        EXPECT_TRUE(d.declared()) << e.name << " declares no output handle";
+        for (const auto& why : d.errors) ADD_FAILURE() << e.name << ": " << why;
+    }
+    const std::regex by_name(R"(\badd_(scalar|table)\s*\()");
+    int files = 0;
+    for (const auto& f : fs::recursive_directory_iterator(project_root() / "experiments")) {
+        if (f.path().extension() != ".cpp" && f.path().extension() != ".hpp") continue;
+        std::ifstream in(f.path());
+        std::stringstream text;
+        text << in.rdbuf();
+        EXPECT_FALSE(std::regex_search(text.str(), by_name)) << f.path() << " writes an output by name, not through a handle";
+        ++files;
+    }
+    EXPECT_GT(files, 20);
 }
 
 // Every experiment declares its outputs, and every claim of expected/ names a declared scalar:

@@ -584,13 +584,13 @@ TEST(ResultExport, CompactCopyKeepsScalarsAndCurvesAndNamesWhatItLeavesOut) {
     const test::TempDir dir;
     const ParameterSet params = ParameterSet::load(write(dir.path / "demo.toml", kExperiment), Scale::Paper);
     Result result;
-    Table& curve = result.table("curve", "a small curve");
+    Table& curve = result.add_table("curve", "a small curve");
     curve.add("t", "s").values = {0.0, 0.5, 1.0};
     curve.add("K", "J").values = {1.0, 0.25, 1.0 / 3.0};
-    Table& snap = result.table("snapshot_0", "positions");
+    Table& snap = result.add_table("snapshot_0", "positions");
     snap.add("x", "m").values = std::vector<double>(600, 0.1);
     snap.add("y", "m").values = std::vector<double>(600, 0.2);
-    result.scalar("slope", -0.9731, "1", "fitted slope");
+    result.add_scalar("slope", -0.9731, "1", "fitted slope");
     Provenance prov{"demo", "p", "file text", Scale::Paper, 7, 12.5, 2, "granrepro demo", "expected text", {}};
     write_result_h5(dir.path / "data.h5", prov, params, result, "fnv1a64:0123456789abcdef");
     const auto omitted = write_compact_result_h5(dir.path / "data.h5", dir.path / "small.h5", 1000);
@@ -642,10 +642,10 @@ TEST(StagedDirectory, LeavesNothingBehindUnlessCommitted) {
 // through data.h5 (the bistable-pipe merge of 2026-12 did exactly that).
 TEST(Result, RefusesANameGivenTwice) {
     granrepro::Result r;
-    r.scalar("a", 1.0, "1", "first");
-    EXPECT_THROW(r.scalar("a", 2.0, "1", "again"), std::logic_error);
-    r.table("t", "first");
-    EXPECT_THROW(r.table("t", "again"), std::logic_error);
+    r.add_scalar("a", 1.0, "1", "first");
+    EXPECT_THROW(r.add_scalar("a", 2.0, "1", "again"), std::logic_error);
+    r.add_table("t", "first");
+    EXPECT_THROW(r.add_table("t", "again"), std::logic_error);
     EXPECT_EQ(r.scalars.size(), 1u);
     EXPECT_EQ(r.tables.size(), 1u);
 }

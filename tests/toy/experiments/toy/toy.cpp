@@ -28,8 +28,13 @@ struct Shot { // one point: the e_N asked for and the one measured
     GRANREPRO_FIELDS(e_N, e_N_measured)
 };
 
+// Its outputs, each named once, by the handle the report writes through (data/outputs.hpp).
+constexpr Outputs outputs{"toy"};
+const TableOut out_toy = outputs.table("toy", "measured restitution against Eq. (4)'s");
+const ScalarOut out_e_N_max_rel_error = outputs.scalar("e_N_max_rel_error", "1", "largest |e_N measured / e_N - 1| over the points");
+
 struct Toy {
-    static constexpr const char* name = "toy";
+    static constexpr const char* name = outputs.experiment();
     using Spec = ToySpec;
     using Outcome = Shot;
     static void validate(const ParameterSet&) {}
@@ -46,12 +51,12 @@ struct Toy {
     }
     static Result report(const Spec&, const Swept<Shot>& swept, const RunContext&) {
         Result r;
-        Table& t = r.table("toy", "measured restitution against Eq. (4)'s");
+        Table& t = r.table(out_toy);
         t.add({{"e_N", "1", column(swept.outcomes, &Shot::e_N)},
                {"e_N_measured", "1", column(swept.outcomes, &Shot::e_N_measured)}});
         double worst = 0;
         for (const Shot& o : swept.outcomes) worst = std::max(worst, std::abs(o.e_N_measured / o.e_N - 1));
-        r.scalar("e_N_max_rel_error", worst, "1", "largest |e_N measured / e_N - 1| over the points");
+        r.put(out_e_N_max_rel_error, worst);
         return r;
     }
 };
