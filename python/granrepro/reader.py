@@ -250,22 +250,134 @@ def fnv1a64(data: bytes) -> str:
 # summary_json_hash (docs/schema.md): FNV-1a 64 of summary.json as nlohmann::json's dump() writes
 # it compactly: keys in byte order, no spaces, strings as json.dumps(ensure_ascii=False) writes
 # them (the same escapes). Numbers are written twice over: as the file spells them (exact for
-# a file the writer wrote, whose tokens are dump()'s), and in dump()'s format from Python's
-# shortest digits (for a file reformatted without changing a value; nlohmann's Grisu2 digits are
-# one longer for ~0.03 % of doubles, 225 of 662684 in paper_figures' /points). Either must match.
+# a file the writer wrote, whose tokens are dump()'s), and as dump() writes their values (for a
+# file reformatted without changing a value): _dump_float is nlohmann's to_chars (Grisu2, then
+# format_buffer) ported, equal to dump() on 1.1 million doubles. Grisu2's digits are not always the
+# shortest that read back (repr's): for ~0.03 % of doubles (225 of 662684 in paper_figures' /points)
+# they are a digit longer or end in another digit, and a short decimal may come out long (5.66283e+20
+# as 5.6628300000000003e+20). Either spelling must match.
 
 
 class _Token(str):
     """A number as the file spells it."""
 
 
+# (f, e, k) with f * 2^e ~= 10^k: nlohmann/detail/conversions/to_chars.hpp, kCachedPowers.
+_CACHED_POWERS = (
+    (0xAB70FE17C79AC6CA, -1060, -300), (0xFF77B1FCBEBCDC4F, -1034, -292), (0xBE5691EF416BD60C, -1007, -284),
+    (0x8DD01FAD907FFC3C, -980, -276), (0xD3515C2831559A83, -954, -268), (0x9D71AC8FADA6C9B5, -927, -260),
+    (0xEA9C227723EE8BCB, -901, -252), (0xAECC49914078536D, -874, -244), (0x823C12795DB6CE57, -847, -236),
+    (0xC21094364DFB5637, -821, -228), (0x9096EA6F3848984F, -794, -220), (0xD77485CB25823AC7, -768, -212),
+    (0xA086CFCD97BF97F4, -741, -204), (0xEF340A98172AACE5, -715, -196), (0xB23867FB2A35B28E, -688, -188),
+    (0x84C8D4DFD2C63F3B, -661, -180), (0xC5DD44271AD3CDBA, -635, -172), (0x936B9FCEBB25C996, -608, -164),
+    (0xDBAC6C247D62A584, -582, -156), (0xA3AB66580D5FDAF6, -555, -148), (0xF3E2F893DEC3F126, -529, -140),
+    (0xB5B5ADA8AAFF80B8, -502, -132), (0x87625F056C7C4A8B, -475, -124), (0xC9BCFF6034C13053, -449, -116),
+    (0x964E858C91BA2655, -422, -108), (0xDFF9772470297EBD, -396, -100), (0xA6DFBD9FB8E5B88F, -369, -92),
+    (0xF8A95FCF88747D94, -343, -84), (0xB94470938FA89BCF, -316, -76), (0x8A08F0F8BF0F156B, -289, -68),
+    (0xCDB02555653131B6, -263, -60), (0x993FE2C6D07B7FAC, -236, -52), (0xE45C10C42A2B3B06, -210, -44),
+    (0xAA242499697392D3, -183, -36), (0xFD87B5F28300CA0E, -157, -28), (0xBCE5086492111AEB, -130, -20),
+    (0x8CBCCC096F5088CC, -103, -12), (0xD1B71758E219652C, -77, -4), (0x9C40000000000000, -50, 4),
+    (0xE8D4A51000000000, -24, 12), (0xAD78EBC5AC620000, 3, 20), (0x813F3978F8940984, 30, 28),
+    (0xC097CE7BC90715B3, 56, 36), (0x8F7E32CE7BEA5C70, 83, 44), (0xD5D238A4ABE98068, 109, 52),
+    (0x9F4F2726179A2245, 136, 60), (0xED63A231D4C4FB27, 162, 68), (0xB0DE65388CC8ADA8, 189, 76),
+    (0x83C7088E1AAB65DB, 216, 84), (0xC45D1DF942711D9A, 242, 92), (0x924D692CA61BE758, 269, 100),
+    (0xDA01EE641A708DEA, 295, 108), (0xA26DA3999AEF774A, 322, 116), (0xF209787BB47D6B85, 348, 124),
+    (0xB454E4A179DD1877, 375, 132), (0x865B86925B9BC5C2, 402, 140), (0xC83553C5C8965D3D, 428, 148),
+    (0x952AB45CFA97A0B3, 455, 156), (0xDE469FBD99A05FE3, 481, 164), (0xA59BC234DB398C25, 508, 172),
+    (0xF6C69A72A3989F5C, 534, 180), (0xB7DCBF5354E9BECE, 561, 188), (0x88FCF317F22241E2, 588, 196),
+    (0xCC20CE9BD35C78A5, 614, 204), (0x98165AF37B2153DF, 641, 212), (0xE2A0B5DC971F303A, 667, 220),
+    (0xA8D9D1535CE3B396, 694, 228), (0xFB9B7CD9A4A7443C, 720, 236), (0xBB764C4CA7A44410, 747, 244),
+    (0x8BAB8EEFB6409C1A, 774, 252), (0xD01FEF10A657842C, 800, 260), (0x9B10A4E5E9913129, 827, 268),
+    (0xE7109BFBA19C0C9D, 853, 276), (0xAC2820D9623BF429, 880, 284), (0x80444B5E7AA7CF85, 907, 292),
+    (0xBF21E44003ACDD2D, 933, 300), (0x8E679C2F5E44FF8F, 960, 308), (0xD433179D9C8CB841, 986, 316),
+    (0x9E19DB92B4E31BA9, 1013, 324),
+)
+_POW10 = tuple(10 ** i for i in range(10))
+
+
+def _grisu2(x: float) -> tuple[str, int]:
+    """nlohmann's dtoa_impl::grisu2 for a finite x > 0: (digits, decimal_exponent), x ~= digits * 10^exponent.
+
+    Python ints do not wrap, and nothing here needs them to: diyfp::mul (four 32-bit partial products,
+    the low half of the lowest dropped, + 2^31 to round ties up) is ((x*y >> 32) + 2^31) >> 32 on the
+    exact 128-bit product, always below 2^64; every other uint64 operation of to_chars.hpp stays in
+    range (its asserts say so), so no mask is needed.
+    """
+    # compute_boundaries
+    bits = struct.unpack("<Q", struct.pack("<d", x))[0]
+    E, F = bits >> 52, bits & 0xFFFFFFFFFFFFF
+    if E == 0:
+        vf, ve = F, -1074
+    else:
+        vf, ve = F | 0x10000000000000, E - 1075
+    mp_f, mp_e = 2 * vf + 1, ve - 1
+    if F == 0 and E > 1:  # the lower boundary is closer
+        mm_f, mm_e = 4 * vf - 1, ve - 2
+    else:
+        mm_f, mm_e = 2 * vf - 1, ve - 1
+    s = 64 - mp_f.bit_length()              # diyfp::normalize(m_plus)
+    mp_f <<= s
+    e = mp_e - s
+    mm_f <<= mm_e - e                       # diyfp::normalize_to(m_minus, e)
+    vf <<= 64 - vf.bit_length()             # diyfp::normalize(v): exponent e too (one bit fewer than m_plus)
+    # get_cached_power_for_binary_exponent(e)
+    f = -61 - e                             # kAlpha - e - 1
+    k = (f * 78913) // 262144 if f >= 0 else -((-f * 78913) // 262144)  # C++ division truncates toward zero
+    k += f > 0
+    c_f, c_e, c_k = _CACHED_POWERS[(300 + k + 7) // 8]
+    # diyfp::mul: the upper 64 bits of the product, rounded (ties up); exponent e + c_e + 64
+    w_f = (((vf * c_f) >> 32) + 0x80000000) >> 32
+    M_minus = ((((mm_f * c_f) >> 32) + 0x80000000) >> 32) + 1
+    M_plus = ((((mp_f * c_f) >> 32) + 0x80000000) >> 32) - 1
+    decimal_exponent = -c_k
+    # grisu2_digit_gen
+    one_e = -(e + c_e + 64)                 # -M_plus.e, in 32..60
+    one_f = 1 << one_e
+    delta = M_plus - M_minus
+    dist = M_plus - w_f
+    p1 = M_plus >> one_e
+    p2 = M_plus & (one_f - 1)
+    n = len(str(p1))                        # find_largest_pow10 (p1 > 0)
+    pow10 = _POW10[n - 1]
+    digits = []
+    while n > 0:
+        d, p1 = divmod(p1, pow10)
+        digits.append(d)
+        n -= 1
+        rest = (p1 << one_e) + p2
+        if rest <= delta:
+            decimal_exponent += n
+            ten_k = pow10 << one_e
+            break
+        pow10 //= 10
+    else:
+        m = 0
+        while True:
+            p2 *= 10
+            digits.append(p2 >> one_e)
+            p2 &= one_f - 1
+            m += 1
+            delta *= 10
+            dist *= 10
+            if p2 <= delta:
+                break
+        decimal_exponent -= m
+        rest, ten_k = p2, one_f
+    # grisu2_round
+    while rest < dist and delta - rest >= ten_k and (rest + ten_k < dist or dist - rest > rest + ten_k - dist):
+        digits[-1] -= 1
+        rest += ten_k
+    return "".join(map(str, digits)), decimal_exponent
+
+
 def _dump_float(x: float) -> str:
-    """dump()'s text of a double (nlohmann/detail/conversions/to_chars.hpp, exponents -4..15)."""
+    """dump()'s text of a double: nlohmann/detail/conversions/to_chars.hpp (Grisu2, then format_buffer
+    with exponents -4..15), "null" for what is not finite (serializer::dump_float)."""
     if not math.isfinite(x):
         return "null"
     if x == 0:
         return "-0.0" if math.copysign(1, x) < 0 else "0.0"
-    digits, exponent = _shortest_digits(abs(x))
+    digits, exponent = _grisu2(abs(x))
     k, n = len(digits), len(digits) + exponent
     if k <= n <= 15:
         text = digits + "0" * (n - k) + ".0"
@@ -277,16 +389,6 @@ def _dump_float(x: float) -> str:
         e = n - 1
         text = (digits if k == 1 else digits[0] + "." + digits[1:]) + f"e{'-' if e < 0 else '+'}{abs(e):02d}"
     return ("-" if x < 0 else "") + text
-
-
-def _shortest_digits(x: float) -> tuple[str, int]:
-    """The shortest decimal digits that read back as x, and their exponent: x = digits * 10^exponent."""
-    from decimal import Decimal
-    t = Decimal(repr(x)).as_tuple()
-    digits = "".join(map(str, t.digits))
-    stripped = digits.rstrip("0")
-    exponent = t.exponent + len(digits) - len(stripped)
-    return stripped.lstrip("0") or "0", exponent
 
 
 def _dump(v) -> str:

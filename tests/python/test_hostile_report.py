@@ -16,7 +16,7 @@ import numpy as np
 import pytest
 
 import granrepro
-from granrepro.reader import ResultsMismatch
+from granrepro.reader import ResultsMismatch, _dump_float, fnv1a64, summary_content_hashes
 from granrepro.untrusted import MAX_JSON_DEPTH, json_depth
 
 EXP = "brake-failure"
@@ -245,6 +245,80 @@ def test_a_reformatted_summary_is_the_same_content(crafted):
     assert "e+03" in text
     crafted.summary.write_text(text)
     granrepro.load(str(crafted.dir))
+
+
+# A double (as repr() spells it) and the text nlohmann::json(x).dump() writes for it (nlohmann 3's Grisu2,
+# checked with a C++ program). From "not the shortest" on the two differ: dump() has one more digit, another
+# last digit, or a short decimal written long; a _dump_float from repr()'s digits fails each of those.
+DUMPED = [
+    (0.0, '0.0'),
+    (-0.0, '-0.0'),
+    (1.0, '1.0'),
+    (-1.0, '-1.0'),
+    (0.1, '0.1'),
+    (0.5, '0.5'),
+    (-2.5, '-2.5'),
+    (100.0, '100.0'),
+    (2000.0, '2000.0'),
+    (0.3333333333333333, '0.3333333333333333'),
+    (3.141592653589793, '3.141592653589793'),
+    (123456789012345.0, '123456789012345.0'),
+    (999999999999999.0, '999999999999999.0'),
+    (1000000000000000.0, '1e+15'),
+    (1234567890123456.0, '1.234567890123456e+15'),
+    (1e+16, '1e+16'),
+    (9007199254740992.0, '9.007199254740992e+15'),
+    (1e+21, '1e+21'),
+    (1e+100, '1e+100'),
+    (0.001, '0.001'),
+    (0.0001, '0.0001'),
+    (1e-05, '1e-05'),
+    (1.5e-05, '1.5e-05'),
+    (1e-100, '1e-100'),
+    (5e-324, '5e-324'),
+    (2.2250738585072014e-308, '2.2250738585072014e-308'),
+    (1.7976931348623157e+308, '1.7976931348623157e+308'),
+    (-1.7976931348623157e+308, '-1.7976931348623157e+308'),
+    (float("nan"), 'null'),
+    (float("inf"), 'null'),
+    (float("-inf"), 'null'),
+    # not the shortest
+    (127517.56889265165, '127517.56889265164'),
+    (571457382358860.2, '571457382358860.3'),
+    (1861860846372673.2, '1.8618608463726733e+15'),
+    (1.8878486927890702e+60, '1.8878486927890703e+60'),
+    (40172.44795702591, '40172.447957025906'),
+    (0.521064938508844, '0.5210649385088441'),
+    (0.004813756000227615, '0.0048137560002276154'),
+    (3108854.610733554, '3108854.6107335538'),
+    (11935227.33656877, '11935227.336568771'),
+    (3.549141373534213e-247, '3.5491413735342133e-247'),
+    (8.463492815240205e-196, '8.4634928152402045e-196'),
+    (3.290699758849283e+16, '3.2906997588492832e+16'),
+    (1.865717948373117e+16, '1.8657179483731168e+16'),
+    (8.6189352642079e+16, '8.618935264207901e+16'),
+    (5.78959828081931e+16, '5.7895982808193104e+16'),
+    (5.66283e+20, '5.6628300000000003e+20'),
+    (3.55194207e+19, '3.5519420700000002e+19'),
+    (4.73711e+20, '4.7371100000000003e+20'),
+    (2.947612506e-06, '2.9476125059999998e-06'),
+    (7.4382777e-06, '7.4382776999999996e-06'),
+    (1.894975842637912e-308, '1.8949758426379118e-308'),
+    (6.98234620640639e-309, '6.982346206406388e-309'),
+]
+
+
+@pytest.mark.parametrize("x, text", DUMPED, ids=[t for _, t in DUMPED])
+def test_a_double_is_written_as_nlohmanns_dump_writes_it(x, text):
+    assert _dump_float(x) == text
+
+
+def test_a_reformatted_summary_of_grisu2_doubles_is_the_same_content():
+    # the same as test_a_reformatted_summary_is_the_same_content, for every double above
+    finite = [(x, t) for x, t in DUMPED if t != "null"]
+    dumped = '{"a":[' + ",".join(t for _, t in finite) + '],"b":"\u00e9"}'
+    text = respelled({"b": "\u00e9", "a": [x for x, _ in finite]})
+    assert fnv1a64(dumped.encode()) in summary_content_hashes(json.loads(text), text)
 
 
 def test_an_edited_table_or_scalar_differs_from_its_hash(crafted):
