@@ -56,7 +56,7 @@ std::string shown(const json& j) {
     return s.size() > 48 ? s.substr(0, 45) + "..." : s;
 }
 
-// Value by value; numbers bit for bit (their shortest round-trip text, as stored).
+// Value by value; numbers bit for bit (their round-trip text as dump() writes it, as stored).
 void compare(const json& a, const json& b, const std::string& path, Comparison& c) {
     if (a.is_number() && b.is_number()) {
         ++c.compared;

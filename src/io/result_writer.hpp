@@ -91,7 +91,8 @@ nlohmann::json data_content_hash(const Result& result);
 // the file cannot be read whole.
 nlohmann::json data_content_hash(const std::filesystem::path& h5);
 // "fnv1a64:<hex>" of summary.dump(): the whole summary object as compact JSON, keys sorted
-// (nlohmann::json orders them), numbers in their shortest round-trip form; independent of how
+// (nlohmann::json orders them), numbers as dump() writes them (Grisu2: round-trip, not always the
+// shortest digits; python/granrepro/reader.py ports it); independent of how
 // summary.json is indented.
 std::string summary_content_hash(const nlohmann::json& summary);
 // summary.json's text: indented, invalid UTF-8 replaced by U+FFFD as in summary_content_hash.
