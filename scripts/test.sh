@@ -40,8 +40,8 @@ echo "test.sh: [4/5] build (Debug, ASan + UBSan) into build-asan/"
 build build-asan Debug "unit_tests integration_tests hostile_results_tests" -DGRANREPRO_SANITIZE=ON
 require_tests build-asan unit integration hostile_results
 # The input fuzz tests (about 2,500 refused inputs, and InputFuzzRun: ~250 short runs of the engines at
-# extreme accepted inputs; both in the Release pass above) take 12 min and more under
-# the sanitizers on 2 cores; the sanitizer pass runs every other unit and integration test.
+# extreme accepted inputs; both in the Release pass above) took 12 min and more under
+# the sanitizers on 2 cores (at -O0); the sanitizer pass runs every other unit and integration test.
 asan_selection=(-L '^(unit|integration|hostile_results)$' -E '^Experiments/InputFuzz')
 echo "test.sh: [5/5] ctest in build-asan/: $(selected build-asan "${asan_selection[@]}") tests under ASan/UBSan (the input fuzz tests excluded; log: build-asan/Testing/Temporary/LastTest.log)"
 (cd build-asan && ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
