@@ -26,14 +26,13 @@ void add_snapshot(std::vector<FigureTable>& F, const Pipe& s, const Frame& fr) {
     const double d = s.d;
     const auto &arch = fr.arch.members, &side = fr.crack.side;
     const std::vector<long> disks = index_order(fr.pos.size());
-    FigureTable& t = F.emplace_back(FigureTable{"snapshot_" + tlabel(fr.t),
-        "disk centres (x, y above the removed floor), N_c over the last frame_dt, member of the frame's arch, side of the crack (-1 below, +1 above, 0 loose), run 0"});
+    FigureTable& t = F.emplace_back(FigureTable{fill_pattern(out_snapshot.pattern, {}, {ttext(fr.t)}), out_snapshot.description});
     t.add("x", "d", column(fr.pos, [&](const Vec2& r) { return r.x / d; }));
     t.add("y", "d", column(fr.pos, [&](const Vec2& r) { return (r.y - s.y_floor) / d; }));
     t.add("Nc", "1/s", fr.rate);
     t.add("arch", "1", column(disks, [&](long i) { return std::ranges::find(arch, int(i)) != arch.end() ? 1 : 0; }));
     t.add("crack_side", "1", column(disks, [&](long i) { return side.empty() ? 0 : side[std::size_t(i)]; }));
-    FigureTable& c = F.emplace_back(FigureTable{"crack_" + tlabel(fr.t), "course of the widest wall-to-wall crack (mid-height per slice of one diameter), run 0"});
+    FigureTable& c = F.emplace_back(FigureTable{fill_pattern(out_crack.pattern, {}, {ttext(fr.t)}), out_crack.description});
     c.add("x", "d", column(fr.crack.course_x, [&](double x) { return x / d; }));
     c.add("y", "d", column(fr.crack.course_y, [&](double y) { return (y - s.y_floor) / d; }));
 }
@@ -111,7 +110,7 @@ std::vector<RateHistogram> fit_fig14(SeedRun& out, const PipeArchingSpec& s, con
 // frame's arch, the crack), the timeline per frame, the Fig. 14 histograms.
 std::vector<FigureTable> figure_tables(const Pipe& s, const Fall& fl, const Relaxation& rel,
                                        const std::vector<RateHistogram>& hs, int i_prec) {
-    std::vector<FigureTable> F{{"relaxation", "v̄ = sqrt(<v^2>) during the elastic relaxation, run 0"}};
+    std::vector<FigureTable> F{{out_relaxation.pattern, out_relaxation.description}};
     F[0].add("t", "s", rel.t);
     F[0].add("vbar", "m/s", rel.vbar);
     std::vector<std::reference_wrapper<const Frame>> snaps;
@@ -121,14 +120,14 @@ std::vector<FigureTable> figure_tables(const Pipe& s, const Fall& fl, const Rela
     auto arch_y = [](const Frame& fr) { return fr.arch.found ? fr.arch.y : NAN; };
     auto opening = [&](const Frame& fr) { return fr.crack.course_x.empty() ? NAN : fr.crack.opening / s.d; };
     auto initiator = [&](const Frame& fr) { return i_prec >= 0 ? fr.pos[std::size_t(i_prec)] : Vec2{NAN, NAN}; };
-    FigureTable& mk = F.emplace_back(FigureTable{"marks", "run 0 per Fig. 13 snapshot: initiating disk (x, y), arch height, crack opening"});
+    FigureTable& mk = F.emplace_back(FigureTable{out_marks.pattern, out_marks.description});
     mk.add("t", "s", per_snap([](const Frame& fr) { return fr.t; }));
     mk.add("initiator_x", "d", per_snap([&](const Frame& fr) { return initiator(fr).x / s.d; }));
     mk.add("initiator_y", "d", per_snap([&](const Frame& fr) { return (initiator(fr).y - s.y_floor) / s.d; }));
     mk.add("arch_y", "d", per_snap(arch_y));
     mk.add("crack_opening", "d", per_snap(opening));
     mk.add("crack_visible", "1", per_snap([&](const Frame& fr) { return opening(fr) >= s.crack_opening ? 1.0 : 0.0; }));
-    FigureTable& tl = F.emplace_back(FigureTable{"timeline", "run 0 per frame: hot disks, mean N_c, widest wall-to-wall crack, mean v_y, wall collisions, share of the weight carried by the walls, arch height"});
+    FigureTable& tl = F.emplace_back(FigureTable{out_timeline.pattern, out_timeline.description});
     tl.add("t", "s", fl.per_frame(&Frame::t));
     tl.add("hot", "1", fl.per_frame([](const Frame& fr) { return double(fr.hot.size()); }));
     tl.add("hot_wall", "1", fl.per_frame([](const Frame& fr) { return double(fr.hot_wall.size()); }));
@@ -141,7 +140,7 @@ std::vector<FigureTable> figure_tables(const Pipe& s, const Fall& fl, const Rela
     tl.add("wall_load", "1", fl.per_frame(&Frame::wall_load));
     tl.add("arch_y", "d", fl.per_frame(arch_y));
     for (std::size_t k = 0; k < hs.size(); ++k) {
-        FigureTable& h = F.emplace_back(FigureTable{"pnc_" + tlabel(fl.dist_t[k]), "P(N_c) over the last dist_dt, run 0"});
+        FigureTable& h = F.emplace_back(FigureTable{fill_pattern(out_pnc.pattern, {}, {ttext(fl.dist_t[k])}), out_pnc.description});
         h.add("Nc", "1/s", hs[k].centres);
         h.add("P", "s", hs[k].density);
         h.add("err", "s", hs[k].error);

@@ -39,27 +39,16 @@ using namespace pipe_arching_detail;
 const ScalarOut out_n_seeds = outputs.scalar("n_seeds", "1", "independent runs");
 const ScalarOut out_layers = outputs.scalar("layers", "1", "rows of the initial lattice");
 
-// Run 0's tables (compute_figures.cpp) arrive named and described through the sweep's JSON
-// (FigureTable, the checkpoint format): each is written through the handle its name matches,
-// with its own description, and the <n> (a time, as tlabel writes it) taken back from the name.
-const TableOut out_relaxation = outputs.table("relaxation", "");
-const TableOut out_marks = outputs.table("marks", "");
-const TableOut out_timeline = outputs.table("timeline", "");
-const TableOut out_snapshot = outputs.table("snapshot_t<n>", "");
-const TableOut out_crack = outputs.table("crack_t<n>", "");
-const TableOut out_pnc = outputs.table("pnc_t<n>", "");
-
+// Run 0's tables arrive named through the sweep point (spec.hpp: out_relaxation ... out_pnc); each
+// is written through the handle that makes its name, which refuses any other.
 void put_figure_table(Result& res, const FigureTable& f) {
     for (const TableOut* h : {&out_relaxation, &out_marks, &out_timeline, &out_snapshot, &out_crack, &out_pnc}) {
-        if (!matches_output_pattern(h->pattern, f.name)) continue;
-        const std::size_t at = h->pattern.find("<n>");
-        Table& t = at == std::string::npos
-                       ? res.table(*h, {}, f.description)
-                       : res.table(*h, {f.name.substr(at, f.name.size() - (h->pattern.size() - 3))}, f.description);
+        if (!makes_name(h->pattern, h->words, f.name)) continue;
+        Table& t = res.table_named(*h, f.name);
         for (std::size_t c = 0; c < f.columns.size(); ++c) t.add(f.columns[c], f.units[c]).values = f.values[c];
         return;
     }
-    throw std::logic_error("pipe-arching: run 0's table " + f.name + " matches no handle");
+    throw std::logic_error("pipe-arching: run 0's table " + f.name + " is made by no handle");
 }
 
 // Sec. 5 and Figs. 13-14 as a protocol (harness/protocol.hpp): one sweep point per seed run.

@@ -89,6 +89,20 @@ inline std::string ttext(double t) {
 }
 inline std::string tlabel(double t) { return "t" + ttext(t); }
 
+// Run 0's figure tables, named in compute (compute_figures.cpp: fill_pattern with the frame's
+// time) and carried by name through the sweep point (FigureTable) to the report, which writes
+// each through the handle that makes its name (Result::table_named).
+inline const TableOut out_relaxation = outputs.table("relaxation", "v̄ = sqrt(<v^2>) during the elastic relaxation, run 0");
+inline const TableOut out_marks =
+    outputs.table("marks", "run 0 per Fig. 13 snapshot: initiating disk (x, y), arch height, crack opening");
+inline const TableOut out_timeline = outputs.table("timeline",
+    "run 0 per frame: hot disks, mean N_c, widest wall-to-wall crack, mean v_y, wall collisions, share of the weight carried by the walls, arch height");
+inline const TableOut out_snapshot = outputs.table("snapshot_t<n>",
+    "disk centres (x, y above the removed floor), N_c over the last frame_dt, member of the frame's arch, side of the crack (-1 below, +1 above, 0 loose), run 0");
+inline const TableOut out_crack =
+    outputs.table("crack_t<n>", "course of the widest wall-to-wall crack (mid-height per slice of one diameter), run 0");
+inline const TableOut out_pnc = outputs.table("pnc_t<n>", "P(N_c) over the last dist_dt, run 0");
+
 // Eq. (21) (a Fig. 14(a) time) or Eq. (22) (a (b) time) fitted at one time alone (NaN: no fit).
 struct TimeFit {
     double t = NAN, value = NAN, error = NAN; // [s], [1/s], [1/s]

@@ -73,6 +73,14 @@ TableOut Outputs::table(std::string pattern, std::string description, Words word
     return {std::move(pattern), std::move(description), std::move(words)};
 }
 
+bool makes_name(std::string_view pattern, const Words& words, std::string_view name) {
+    const std::size_t w = pattern.find(kWord);
+    if (w == std::string_view::npos) return matches_output_pattern(pattern, name);
+    return std::any_of(words.begin(), words.end(), [&](const std::string& word) {
+        return matches_output_pattern(std::string(pattern).replace(w, kWord.size(), word), name);
+    });
+}
+
 const DeclaredOutputs& declared_outputs(std::string_view experiment) {
     static const DeclaredOutputs none;
     const auto it = registry().find(experiment);

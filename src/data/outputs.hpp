@@ -51,6 +51,10 @@ struct TableOut {
 // bug in the report, caught by every quick run).
 std::string fill_pattern(std::string_view pattern, const Words& words, std::initializer_list<NamePart> parts);
 
+// True if name is one the handle's pattern (and words) can make: for a name made where the
+// handle's parts are not at hand, e.g. carried in a sweep point (Result::table_named).
+bool makes_name(std::string_view pattern, const Words& words, std::string_view name);
+
 // One experiment's catalog. Constant-initialized, so handles in any translation unit may register
 // with it during static initialization.
 class Outputs {

@@ -68,6 +68,13 @@ struct Result {
     Table& table(const TableOut& h, std::initializer_list<NamePart> n = {}, std::string_view more = {}) {
         return add_table(fill_pattern(h.pattern, h.words, n), h.description + std::string(more));
     }
+    // A table whose name was made from the same handle elsewhere (fill_pattern in compute, carried
+    // by a sweep point); refused unless the handle makes that name.
+    Table& table_named(const TableOut& h, std::string name, std::string_view more = {}) {
+        if (!makes_name(h.pattern, h.words, name))
+            throw std::logic_error("table '" + name + "' is not one handle '" + h.pattern + "' makes");
+        return add_table(std::move(name), h.description + std::string(more));
+    }
     const Scalar* find_scalar(const std::string& name) const {
         for (const auto& s : scalars)
             if (s.name == name) return &s;

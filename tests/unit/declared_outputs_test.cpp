@@ -59,6 +59,13 @@ TEST(OutputHandles, FillTheirPlaceholdersWithNumbersAndTheirWords) {
     EXPECT_EQ(r.scalars[0].name, "x_k200");
     EXPECT_EQ(r.scalars[0].unit, "m/s");
     EXPECT_EQ(r.scalars[0].description, "a speed at k_N");
+    // A name made elsewhere (carried by a sweep point) is written only by a handle that makes it.
+    const TableOut snap{"snapshot_t<n>", "disks", {}}, per{"eq2_<w>_t", "a reading", readings};
+    EXPECT_TRUE(makes_name(per.pattern, per.words, "eq2_elastic_t"));
+    EXPECT_FALSE(makes_name(per.pattern, per.words, "eq2_signed_t"));
+    EXPECT_EQ(r.table_named(snap, "snapshot_t0.050").description, "disks");
+    EXPECT_THROW(r.table_named(snap, "crack_t0.050"), std::logic_error);
+    EXPECT_THROW(r.table_named(snap, "snapshot_tx"), std::logic_error);
 }
 
 // A catalog holds one pattern per word, and names a malformed or repeated declaration instead of
